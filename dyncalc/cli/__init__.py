@@ -1,0 +1,95 @@
+"""The ``dyncalc`` command line: a click group whose ``main`` maps every error to exit 2 and
+one ``Error:`` line on stderr (a traceback only with ``--debug``).
+
+Importing this package imports click and nothing heavy: pint, numpy and rich load only when a
+command computes or draws, so ``--help`` and shell completion stay fast.
+"""
+from __future__ import annotations
+
+import sys
+
+import click
+
+from .._version import __version__
+from ..errors import EXIT_BAD_INPUT, InputError
+
+__all__ = ["cli", "main"]
+
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+class DyncalcGroup(click.Group):
+    """A click group that turns every failure into the contract's exit status and message."""
+
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True,
+             **extra):
+        args = list(sys.argv[1:] if args is None else args)
+        debug = "--debug" in args
+        try:
+            rv = super().main(args=args, prog_name=prog_name or "dyncalc",
+                              complete_var=complete_var, standalone_mode=False, **extra)
+            code = rv if isinstance(rv, int) else 0
+        except click.exceptions.Exit as exc:
+            code = exc.exit_code
+        except click.ClickException as exc:
+            command = _command_name(args)
+            hint = f"; see 'dyncalc {command} --help'" if command else "; see 'dyncalc --help'"
+            click.echo(f"Error: {_one_line(exc.format_message()).rstrip('.')}{hint}", err=True)
+            code = EXIT_BAD_INPUT
+        except InputError as exc:
+            click.echo(f"Error: {_one_line(exc)}", err=True)
+            code = EXIT_BAD_INPUT
+        except click.Abort:
+            click.echo("Error: interrupted", err=True)
+            code = 130
+        except BrokenPipeError:
+            code = 0
+        except Exception as exc:  # a bug: never a traceback unless asked for
+            if debug:
+                raise
+            click.echo(f"Error: internal error ({type(exc).__name__}: {_one_line(exc)[:200]}); "
+                       "please report it, with --debug for the traceback", err=True)
+            code = EXIT_BAD_INPUT
+        if standalone_mode:
+            sys.exit(code)
+        return code
+
+
+def _command_name(args: list[str]) -> str | None:
+    for arg in args:
+        if not arg.startswith("-"):
+            return arg if arg in cli.commands else None
+    return None
+
+
+@click.group(cls=DyncalcGroup, context_settings={"help_option_names": ["-h", "--help"],
+                                                 "max_content_width": 100})
+@click.version_option(__version__, "--version", prog_name="dyncalc",
+                      message="%(prog)s %(version)s")
+def cli():
+    """A units-aware calculator for vibration and dynamics.
+
+    Quantities take any units pint knows ("2 kN/m", 4kg, "30 deg", "1500 rpm"); a bare number
+    is read in SI. Every command prints a table, or --json, or --value NAME for scripts;
+    exit status 0 ok, 1 a --check failed, 2 bad input.
+
+    \b
+    Examples:
+      dyncalc spring-series "200 N/m" "300 N/m"
+      dyncalc spring-parallel 2kN/m "12 lbf/in" --unit k_eq=N/mm
+      dyncalc scenes
+    """
+
+
+def main(argv=None):
+    """Console-script entry point."""
+    return cli.main(args=argv, prog_name="dyncalc")
+
+
+from . import pending, scenes, springs  # noqa: E402  (register the commands)
+
+for _module in (springs, pending, scenes):
+    for _command in _module.COMMANDS:
+        cli.add_command(_command)

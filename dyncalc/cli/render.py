@@ -1,0 +1,182 @@
+"""Results -> text: a rich table on a terminal, plain aligned text when piped, JSON, a bare value.
+
+Nothing here computes physics; it converts units for display (``--unit``) and formats numbers.
+rich is imported only when a table is drawn on a terminal.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+from ..checks import Check
+from ..errors import InputError
+from ..result import Entry, Result
+
+__all__ = ["to_json", "bare_value", "plain_text", "rich_text", "format_number"]
+
+
+def format_number(value, digits: int) -> str:
+    """``value`` to ``digits`` significant figures (vectors as ``(x, y, z)``)."""
+    if isinstance(value, str):
+        return value
+    if hasattr(value, "__len__"):
+        return "(" + ", ".join(format_number(float(v), digits) for v in value) + ")"
+    value = float(value)
+    if math.isinf(value):
+        return "inf" if value > 0 else "-inf"
+    return f"{value:.{digits}g}"
+
+
+def _shown(entry: Entry, units: dict[str, str]):
+    """(value, unit) of an entry as displayed, honouring ``--unit NAME=UNIT``."""
+    unit = units.get(entry.name)
+    if unit is None:
+        return entry.value_in(), entry.unit
+    return entry.value_in(unit), unit
+
+
+def _json_value(value):
+    if isinstance(value, str):
+        return value
+    if hasattr(value, "__len__"):
+        return [_json_value(float(v)) for v in value]
+    value = float(value)
+    return None if not math.isfinite(value) else value
+
+
+def _json_entries(entries: dict[str, Entry], units: dict[str, str]) -> dict:
+    out = {}
+    for name, entry in entries.items():
+        value, unit = _shown(entry, units)
+        item = {"value": _json_value(value), "unit": unit}
+        if entry.assumed_si:
+            item["assumed_si"] = True
+        out[name] = item
+    return out
+
+
+def to_json(result: Result, units: dict[str, str], checks: list[Check],
+            explain: bool) -> str:
+    """The JSON object of SPEC.md (extra keys: ``checks``, ``explanation``, ``extra``)."""
+    data = {
+        "command": result.command,
+        "scene": result.scene,
+        "model": result.model,
+        "method": result.method,
+        "inputs": _json_entries(result.inputs, {}),
+        "results": _json_entries(result.results, units),
+        "warnings": list(result.warnings),
+    }
+    data.update(result.extra)
+    if checks:
+        data["checks"] = [c.as_dict() for c in checks]
+    if explain and result.explanation is not None:
+        data["explanation"] = result.explanation.as_dict()
+    return json.dumps(data, indent=2, allow_nan=False)
+
+
+def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
+    """``--value NAME``: the full-precision number (``repr``), vectors comma-separated."""
+    entry = result.results.get(name)
+    if entry is None:
+        raise InputError(f"--value {name}: there is no result named {name!r}; the results are "
+                         f"{', '.join(result.results)}")
+    value, _unit = _shown(entry, units)
+    if isinstance(value, str):
+        return value
+    if hasattr(value, "__len__"):
+        return ",".join(repr(float(v)) for v in value)
+    return repr(float(value))
+
+
+def _header(result: Result) -> str:
+    parts = [result.command]
+    if result.scene:
+        parts.append(f"scene: {result.scene}")
+    if result.model:
+        parts.append(f"model: {result.model}")
+    if result.method:
+        parts.append(f"method: {result.method}")
+    return "   ".join(parts)
+
+
+def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str, ...]]:
+    rows = []
+    for entry in result.results.values():
+        value, unit = _shown(entry, units)
+        rows.append((entry.name, entry.symbol or entry.name, format_number(value, digits), unit))
+    return rows
+
+
+def _inputs_line(result: Result, digits: int) -> str:
+    parts = []
+    for entry in result.inputs.values():
+        value, unit = _shown(entry, {})
+        text = f"{entry.name} = {format_number(value, digits)}{' ' + unit if unit else ''}"
+        if entry.assumed_si:
+            text += " (assumed SI)"
+        parts.append(text)
+    return "inputs: " + ", ".join(parts) if parts else ""
+
+
+def _check_line(check: Check, digits: int) -> str:
+    verdict = "pass" if check.passed else "FAIL"
+    unit = f" {check.unit}" if check.unit else ""
+    return (f"check {check.name}: expected {format_number(check.expected, digits)}{unit}, "
+            f"given {format_number(check.given, digits)}{unit}, relative difference "
+            f"{check.rel_diff:.2g} (tolerance {check.rtol:g}): {verdict}")
+
+
+def _explanation_lines(result: Result) -> list[str]:
+    ex = result.explanation
+    if ex is None:
+        return ["(no explanation for this result)"]
+    lines = ["formula:"] + [f"  {f}" for f in ex.formula]
+    if ex.substituted:
+        lines += ["values:"] + [f"  {s}" for s in ex.substituted]
+    if ex.assumptions:
+        lines += ["assumptions:"] + [f"  - {a}" for a in ex.assumptions]
+    if ex.reference:
+        lines.append(f"reference: {ex.reference}")
+    return lines
+
+
+def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[Check],
+               explain: bool) -> str:
+    """Human output without colour or box drawing (stdout is not a terminal)."""
+    rows = [("result", "symbol", "value", "unit")] + _rows(result, units, digits)
+    widths = [max(len(r[i]) for r in rows) for i in range(4)]
+    lines = [_header(result)]
+    for row in rows:
+        lines.append("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
+    if (inputs := _inputs_line(result, digits)):
+        lines.append(inputs)
+    lines += [f"warning: {w}" for w in result.warnings]
+    lines += [_check_line(c, digits) for c in checks]
+    if explain:
+        lines += _explanation_lines(result)
+    return "\n".join(lines)
+
+
+def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[Check],
+              explain: bool, console) -> None:
+    """Human output on a terminal: a rich table; user text is never read as markup."""
+    from rich.table import Table
+    from rich.text import Text
+
+    table = Table(title=Text(_header(result)), title_justify="left")
+    for column, justify in (("result", "left"), ("symbol", "left"), ("value", "right"),
+                            ("unit", "left")):
+        table.add_column(column, justify=justify)
+    for row in _rows(result, units, digits):
+        table.add_row(*(Text(cell) for cell in row))
+    console.print(table)
+    if (inputs := _inputs_line(result, digits)):
+        console.print(Text(inputs, style="dim"))
+    for w in result.warnings:
+        console.print(Text(f"warning: {w}", style="yellow"))
+    for c in checks:
+        console.print(Text(_check_line(c, digits), style="green" if c.passed else "bold red"))
+    if explain:
+        for line in _explanation_lines(result):
+            console.print(Text(line))

@@ -1,0 +1,424 @@
+"""Spring networks written on the command line, and their equivalent stiffness.
+
+The grammar (one element per command-line word; the command combines its words in series or
+in parallel)::
+
+    element := STIFFNESS                      200N/m, "3 kN*m/rad", inf (a rigid link)
+             | series(element, element, ...)
+             | parallel(element, element, ...)
+             | cantilever(l=..., EI=... | E=..., I=...)            3 EI / l^3
+             | simply-supported(l=..., EI=... | E=..., I=...)      48 EI / l^3 (midspan)
+             | beam(c=..., l=..., EI=... | E=..., I=...)           c EI / l^3 (any beam table)
+             | axial(l=..., EA=... | E=..., A=...)                 EA / l
+             | torsion-bar(l=..., GJ_t=... | G=..., J_t=...)       G J_t / l  (torsional)
+             | coil(G=..., d=..., D=..., n=...)                    G d^4 / (8 D^3 n)
+    shared  := NAME=QUANTITY                  a value every element that needs NAME and does
+                                              not give it takes (E=200GPa, EI=..., l=...)
+
+Leaves are numbered k1, k2, ... depth first; each element function's stiffness is reported as
+a result of that name. Linear ``[force]/[length]`` and torsional ``[force]*[length]/[angle]``
+elements cannot be mixed. The result is shown in the unit the elements were typed in when they
+all share one, otherwise in SI.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from .errors import InputError, PhysicsError
+from .result import Entry, Explanation, Result, entry_from_parsed
+from .units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, SECOND_MOMENT, STIFFNESS,
+                    TORSIONAL_STIFFNESS, Dim, parse_quantity)
+
+__all__ = ["ELEMENTS", "network_stiffness", "parse_network"]
+
+MAX_NETWORK_DEPTH = 16
+MAX_ELEMENTS = 1000
+
+RIGIDITY = Dim("bending stiffness", "[force]*[length]^2", "[force]*[length]**2", "N*m^2")
+TORSIONAL_RIGIDITY = Dim("torsional rigidity", "[force]*[length]^2", "[force]*[length]**2",
+                         "N*m^2")
+
+
+@dataclass(frozen=True)
+class ElementKind:
+    """A standard elastic element: its parameters and the physics function that gives k."""
+
+    name: str
+    formula: str
+    params: dict[str, Dim]
+    alternatives: tuple[tuple[str, ...], ...]  # one group must be given: ("EI",) or ("E", "I")
+    required: tuple[str, ...]
+    function: str
+    torsional: bool = False
+
+    def usage(self) -> str:
+        groups = " | ".join(", ".join(f"{p}=..." for p in g) for g in self.alternatives)
+        need = ", ".join(f"{p}=..." for p in self.required)
+        return f"{self.name}({need}{', ' if groups and need else ''}{groups})"
+
+
+_BEAM = {"EI": RIGIDITY, "E": MODULUS, "I": SECOND_MOMENT, "l": LENGTH}
+ELEMENTS = {
+    "cantilever": ElementKind("cantilever", "3 EI / l^3", _BEAM, (("EI",), ("E", "I")), ("l",),
+                              "cantilever_stiffness"),
+    "simply-supported": ElementKind("simply-supported", "48 EI / l^3", _BEAM,
+                                    (("EI",), ("E", "I")), ("l",), "midspan_stiffness"),
+    "beam": ElementKind("beam", "c EI / l^3", {**_BEAM, "c": DIMENSIONLESS},
+                        (("EI",), ("E", "I")), ("c", "l"), "beam_stiffness"),
+    "axial": ElementKind("axial", "EA / l", {"EA": FORCE, "E": MODULUS, "A": AREA, "l": LENGTH},
+                         (("EA",), ("E", "A")), ("l",), "axial_stiffness"),
+    "torsion-bar": ElementKind("torsion-bar", "G J_t / l",
+                               {"GJ_t": TORSIONAL_RIGIDITY, "G": MODULUS, "J_t": SECOND_MOMENT,
+                                "l": LENGTH},
+                               (("GJ_t",), ("G", "J_t")), ("l",), "torsion_bar_stiffness",
+                               torsional=True),
+    "coil": ElementKind("coil", "G d^4 / (8 D^3 n)",
+                        {"G": MODULUS, "d": LENGTH, "D": LENGTH, "n": DIMENSIONLESS},
+                        (), ("G", "d", "D", "n"), "coil_spring_stiffness"),
+}
+GROUPS = ("series", "parallel")
+
+
+@dataclass
+class Leaf:
+    """A stiffness typed directly."""
+
+    name: str
+    parsed: object
+    dim: Dim
+
+
+@dataclass
+class Element:
+    """A standard element with its parameter texts (shared values filled in later)."""
+
+    name: str
+    kind: ElementKind
+    texts: dict[str, str]
+    parsed: dict = field(default_factory=dict)
+
+
+@dataclass
+class Group:
+    how: str  # "series" or "parallel"
+    children: list
+
+
+_CALL_RE = re.compile(r"^\s*([A-Za-z][A-Za-z_-]*)\s*\((.*)\)\s*$", re.S)
+_OPEN_RE = re.compile(r"^\s*([A-Za-z][A-Za-z_-]*)\s*\(")
+_SHARED_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
+
+
+def _split_args(text: str, where: str) -> list[str]:
+    """Split at the commas that are not inside parentheses or brackets."""
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(text):
+        if ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+            if depth < 0:
+                raise InputError(f"{where}: a ')' has no matching '('")
+        elif ch == "," and depth == 0:
+            parts.append(text[start:i])
+            start = i + 1
+    if depth != 0:
+        raise InputError(f"{where}: a '(' is not closed")
+    parts.append(text[start:])
+    return parts
+
+
+class _Reader:
+    def __init__(self, strict: bool):
+        self.strict = strict
+        self.count = 0
+
+    def next_name(self) -> str:
+        self.count += 1
+        if self.count > MAX_ELEMENTS:
+            raise InputError(f"the network has more than {MAX_ELEMENTS} elements")
+        return f"k{self.count}"
+
+    def read(self, text: str, depth: int):
+        if depth > MAX_NETWORK_DEPTH:
+            raise InputError(f"the network is nested more than {MAX_NETWORK_DEPTH} levels deep")
+        call = _CALL_RE.match(text)
+        opened = _OPEN_RE.match(text)
+        if not call and opened and (opened.group(1) in GROUPS or opened.group(1) in ELEMENTS):
+            raise InputError(f"{opened.group(1)}(...): a '(' is not closed")
+        if call and (call.group(1) in GROUPS or call.group(1) in ELEMENTS):
+            fname, body = call.group(1), call.group(2)
+            where = f"{fname}(...)"
+            args = _split_args(body, where)
+            if fname in GROUPS:
+                if not any(a.strip() for a in args):
+                    raise InputError(f"{fname}() needs at least one element")
+                for a in args:
+                    if not a.strip():
+                        raise InputError(f"{fname}(...): an element is empty (two commas in "
+                                         f"a row?)")
+                return Group(fname, [self.read(a, depth + 1) for a in args])
+            return self.element(ELEMENTS[fname], args)
+        if call and not re.match(r"^\s*(inf|infinity)\s*\(", text, re.I):
+            known = ", ".join((*GROUPS, *ELEMENTS))
+            raise InputError(f"unknown element {call.group(1)!r}; the elements are {known}")
+        return self.leaf(text)
+
+    def leaf(self, text: str) -> Leaf:
+        name = self.next_name()
+        label = f"element {name} ({text.strip()[:40]})"
+        try:
+            parsed = parse_quantity(text, STIFFNESS, label=label, strict=self.strict,
+                                    allow_inf=True, constraint="positive")
+            return Leaf(name, parsed, STIFFNESS)
+        except InputError as linear_error:
+            try:
+                parsed = parse_quantity(text, TORSIONAL_STIFFNESS, label=label,
+                                        strict=self.strict, allow_inf=True,
+                                        constraint="positive")
+                return Leaf(name, parsed, TORSIONAL_STIFFNESS)
+            except InputError:
+                pass
+            message = str(linear_error)
+            if " must be a stiffness " in message:
+                message = message.replace(
+                    "must be a stiffness [force]/[length];",
+                    "must be a stiffness [force]/[length] or [force]*[length]/[angle];")
+            raise InputError(message) from None
+
+    def element(self, kind: ElementKind, args: list[str]) -> Element:
+        name = self.next_name()
+        texts: dict[str, str] = {}
+        for arg in args:
+            if not arg.strip():
+                if len(args) == 1:
+                    continue
+                raise InputError(f"{kind.name}(...): a parameter is empty (two commas in a row?)")
+            m = _SHARED_RE.match(arg)
+            if not m:
+                raise InputError(f"{kind.name}(...): write parameters as NAME=QUANTITY; got "
+                                 f"{arg.strip()[:40]!r}; usage: {kind.usage()}")
+            pname, ptext = m.group(1), m.group(2)
+            if pname not in kind.params:
+                raise InputError(f"{kind.name}() has no parameter {pname!r}; usage: "
+                                 f"{kind.usage()}")
+            if pname in texts:
+                raise InputError(f"{kind.name}(): {pname} is given twice")
+            texts[pname] = ptext
+        return Element(name, kind, texts)
+
+
+def _leaves(node):
+    if isinstance(node, Group):
+        for child in node.children:
+            yield from _leaves(child)
+    else:
+        yield node
+
+
+def parse_network(how: str, words: list[str], strict: bool = False):
+    """Read the command line's words into a network tree and the shared ``NAME=QUANTITY``.
+
+    Returns ``(root, shared)`` where ``root`` is a :class:`Group` of kind ``how``.
+    """
+    reader = _Reader(strict)
+    children, shared = [], {}
+    for word in words:
+        m = _SHARED_RE.match(word)
+        if m and not _CALL_RE.match(word):
+            pname = m.group(1)
+            if pname in shared:
+                raise InputError(f"{pname} is given twice")
+            shared[pname] = m.group(2)
+        else:
+            if not word.strip():
+                raise InputError("an element is empty")
+            children.append(reader.read(word, 1))
+    if not children:
+        raise InputError(f"spring-{how} needs at least one stiffness, e.g. "
+                         f"dyncalc spring-{how} 200N/m 300N/m")
+    root = Group(how, children)
+    _resolve_shared(root, shared, strict)
+    return root, shared
+
+
+def _resolve_shared(root, shared: dict[str, str], strict: bool) -> None:
+    used = set()
+    for leaf in _leaves(root):
+        if not isinstance(leaf, Element):
+            continue
+        kind = leaf.kind
+        for pname in kind.required:
+            if pname not in leaf.texts:
+                if pname not in shared:
+                    raise InputError(f"{kind.name}() ({leaf.name}) needs {pname}: give it inside "
+                                     f"the parentheses or as {pname}=... after the elements; "
+                                     f"usage: {kind.usage()}")
+                leaf.texts[pname] = shared[pname]
+                used.add(pname)
+        if kind.alternatives:
+            given = [g for g in kind.alternatives if any(p in leaf.texts for p in g)]
+            if len(given) > 1:
+                raise InputError(f"{kind.name}() ({leaf.name}): give "
+                                 f"{' or '.join('+'.join(g) for g in kind.alternatives)}, "
+                                 "not both")
+            if not given:
+                usable = [g for g in kind.alternatives if all(p in shared for p in g)]
+                if not usable:
+                    need = " or ".join(" and ".join(g) for g in kind.alternatives)
+                    raise InputError(f"{kind.name}() ({leaf.name}) needs {need}; usage: "
+                                     f"{kind.usage()}")
+                group = usable[0]
+            else:
+                group = given[0]
+                missing = [p for p in group if p not in leaf.texts]
+                for p in missing:
+                    if p not in shared:
+                        raise InputError(f"{kind.name}() ({leaf.name}) needs {p} with "
+                                         f"{', '.join(q for q in group if q != p)}")
+            for p in group:
+                if p not in leaf.texts:
+                    leaf.texts[p] = shared[p]
+                    used.add(p)
+        for pname, ptext in leaf.texts.items():
+            dim = kind.params[pname]
+            constraint = "positive"
+            leaf.parsed[pname] = parse_quantity(ptext, dim, label=f"{pname} of {leaf.name}",
+                                                strict=strict, constraint=constraint)
+    unused = sorted(set(shared) - used)
+    if unused:
+        raise InputError(f"{unused[0]}={shared[unused[0]].strip()} is not used by any element; "
+                         "shared values are for the parameters of cantilever(), "
+                         "simply-supported(), beam(), axial(), torsion-bar() and coil()")
+
+
+def _element_stiffness(element: Element):
+    from .physics import springs
+
+    kind = element.kind
+    q = {p: v.quantity for p, v in element.parsed.items()}
+    fn = getattr(springs, kind.function)
+    if kind.name == "coil":
+        return fn(q["G"], q["d"], q["D"], element.parsed["n"].si)
+    if kind.name == "beam":
+        return fn(element.parsed["c"].si, q["l"], **{k: v for k, v in q.items()
+                                                     if k not in ("c", "l")})
+    return fn(q["l"], **{k: v for k, v in q.items() if k != "l"})
+
+
+def network_stiffness(how: str, words: list[str], strict: bool = False) -> Result:
+    """Equivalent stiffness of the network written in ``words``, combined ``how``.
+
+    Parameters
+    ----------
+    how : {"series", "parallel"}
+    words : list of str
+        Elements and shared values as typed (see the module docstring).
+    strict : bool
+        ``--strict-units``: refuse bare numbers.
+
+    Returns
+    -------
+    Result
+        ``k_eq`` first, then each element function's own stiffness ``k1``, ``k2``, ...
+
+    Examples
+    --------
+    >>> network_stiffness("series", ["200 N/m", "300 N/m"]).results["k_eq"].si
+    120.0
+    """
+    from .physics.springs import parallel_stiffness, series_stiffness
+
+    root, shared = parse_network(how, words, strict)
+    stiffness: dict[str, object] = {}
+    inputs: dict[str, Entry] = {}
+    element_results: dict[str, Entry] = {}
+    kinds = set()
+    for leaf in _leaves(root):
+        if isinstance(leaf, Leaf):
+            stiffness[leaf.name] = leaf.parsed.quantity
+            inputs[leaf.name] = entry_from_parsed(leaf.name, leaf.parsed, leaf.dim)
+            kinds.add(leaf.dim)
+        else:
+            k = _element_stiffness(leaf)
+            dim = TORSIONAL_STIFFNESS if leaf.kind.torsional else STIFFNESS
+            kinds.add(dim)
+            if not math.isfinite(k.magnitude):
+                raise PhysicsError(f"the stiffness of {leaf.kind.name}() ({leaf.name}) "
+                                   f"overflows float64 ({k.units:~C})")
+            stiffness[leaf.name] = k
+            for pname, parsed in leaf.parsed.items():
+                inputs[f"{leaf.name}.{pname}"] = entry_from_parsed(
+                    f"{leaf.name}.{pname}", parsed, leaf.kind.params[pname])
+            element_results[leaf.name] = Entry(
+                leaf.name, float(k.magnitude), dim, unit=dim.si, symbol=leaf.name,
+                description=f"{leaf.kind.name}: {leaf.kind.formula}")
+    if len(kinds) > 1:
+        raise InputError("linear [force]/[length] and torsional [force]*[length]/[angle] "
+                         "stiffnesses cannot be combined in one network")
+    dim = kinds.pop()
+
+    def combine(node):
+        if not isinstance(node, Group):
+            return stiffness[node.name]
+        parts = [combine(c) for c in node.children]
+        return series_stiffness(parts) if node.how == "series" else parallel_stiffness(parts)
+
+    si = dim.si.replace("^", "**")
+    combined = combine(root)
+    k_eq = float(combined.to(si).magnitude)
+    all_finite = all(math.isfinite(float(q.to(si).magnitude)) for q in stiffness.values())
+    warnings = []
+    if math.isinf(k_eq):
+        if all_finite:
+            raise PhysicsError(f"k_eq overflows float64 (the largest is 1.8e308 {dim.si})")
+        warnings.append("k_eq is infinite: the network is rigid (a rigid element carries the "
+                        "load alone); JSON gives its value as null")
+    # Shown in the unit the elements were typed in when every element is a stiffness typed in
+    # one unit (then computed in it, exactly); otherwise in SI.
+    leaves = list(_leaves(root))
+    typed = {leaf.parsed.unit_text for leaf in leaves if isinstance(leaf, Leaf)}
+    same_unit = (all(isinstance(leaf, Leaf) and inputs[leaf.name].exact is not None
+                     for leaf in leaves) and len(typed) == 1)
+    shown = typed.pop() if same_unit else dim.si
+    exact = float(combined.to(leaves[0].parsed.quantity.units).magnitude) if same_unit else None
+    results = {"k_eq": Entry("k_eq", k_eq, dim, unit=shown, symbol="k_eq",
+                             description=f"equivalent stiffness ({how})", exact=exact)}
+    results.update(element_results)
+    result = Result(command=f"spring-{how}", results=results, inputs=inputs,
+                    model="network" if _is_nested(root) else how, warnings=warnings,
+                    explanation=_explain(root, stiffness, dim))
+    result.add_underflow_warnings()
+    return result
+
+
+def _is_nested(root: Group) -> bool:
+    return any(isinstance(c, Group) for c in root.children)
+
+
+def _formula(node) -> str:
+    if not isinstance(node, Group):
+        return node.name
+    inner = [_formula(c) for c in node.children]
+    if node.how == "parallel":
+        return " + ".join(inner) if len(inner) > 1 else inner[0]
+    if len(inner) == 1:
+        return inner[0]
+    return "1/(" + " + ".join(f"1/{i}" if "+" not in i else f"1/({i})" for i in inner) + ")"
+
+
+def _explain(root, stiffness, dim: Dim) -> Explanation:
+    si = dim.si.replace("^", "**")
+    formula = ["k_eq = " + _formula(root)]
+    substituted = [f"{name} = {float(q.to(si).magnitude):.6g} {dim.si}"
+                   for name, q in stiffness.items()]
+    for leaf in _leaves(root):
+        if isinstance(leaf, Element):
+            formula.append(f"{leaf.name} = {leaf.kind.formula}  ({leaf.kind.name})")
+    assumptions = ["linear elastic, massless elements",
+                   "series: every element carries the same force; parallel: every element has "
+                   "the same displacement"]
+    return Explanation(formula, substituted, assumptions,
+                       "Gross et al., Engineering Mechanics 3, Examples 5.11, 5.19, 5.26")

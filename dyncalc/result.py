@@ -1,0 +1,97 @@
+"""What a computation hands to the renderer: named values with their dimensions and units.
+
+Values are carried as SI magnitudes (floats, or numpy arrays for vectors) beside their
+:class:`~dyncalc.units.Dim` and the unit they are shown in by default; conversion for display
+(``--unit``) happens in the renderer through :func:`dyncalc.units.convert`.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from .units import Dim, Parsed, convert
+
+__all__ = ["Entry", "Explanation", "Result", "entry_from_parsed"]
+
+
+@dataclass
+class Entry:
+    """One named input or result.
+
+    ``si`` is the magnitude in ``dim.si`` (float, array, or ``str`` for a word such as a
+    regime); ``unit`` is the unit it is shown in unless ``--unit`` says otherwise; ``symbol`` and
+    ``description`` are for the human table; ``assumed_si`` marks a bare number read as SI.
+    """
+
+    name: str
+    si: Any
+    dim: Dim | None
+    unit: str = ""
+    symbol: str = ""
+    description: str = ""
+    assumed_si: bool = False
+    exact: Any = None  # the magnitude in ``unit`` exactly as typed or computed
+
+    def value_in(self, unit: str | None = None):
+        """The magnitude in ``unit`` (default: this entry's display unit)."""
+        if self.dim is None or isinstance(self.si, str):
+            return self.si
+        if self.exact is not None and (unit is None or unit == self.unit):
+            return self.exact
+        target = self.unit if unit is None else unit
+        if target == self.dim.si or (not target and not self.dim.si):
+            return self.si
+        return convert(self.si, self.dim, target, label=f"--unit {self.name}")
+
+
+def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:
+    """An input entry shown in the unit the user typed (SI when a bare number was given)."""
+    typed = bool(parsed.unit_text) and dim.kind not in ("angular-rate", "cycle-rate")
+    return Entry(name, parsed.si, dim, unit=parsed.unit_text or dim.si,
+                 assumed_si=parsed.assumed_si,
+                 exact=float(parsed.quantity.magnitude) if typed else None, **kw)
+
+
+@dataclass
+class Explanation:
+    """The formula, the same with values substituted, the model's assumptions, the reference."""
+
+    formula: list[str]
+    substituted: list[str] = field(default_factory=list)
+    assumptions: list[str] = field(default_factory=list)
+    reference: str = ""
+
+    def as_dict(self) -> dict:
+        return {"formula": self.formula, "substituted": self.substituted,
+                "assumptions": self.assumptions, "reference": self.reference}
+
+
+@dataclass
+class Result:
+    """Everything one command computed, on its way from physics to rendering."""
+
+    command: str
+    results: dict[str, Entry]
+    inputs: dict[str, Entry] = field(default_factory=dict)
+    scene: str | None = None
+    model: str = ""
+    method: str = "closed-form"
+    warnings: list[str] = field(default_factory=list)
+    explanation: Explanation | None = None
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    def add_underflow_warnings(self) -> None:
+        """Warn about a result that underflowed to zero from non-zero inputs (SPEC.md)."""
+        inputs_nonzero = all(
+            not isinstance(e.si, (int, float)) or e.si != 0 for e in self.inputs.values())
+        for entry in self.results.values():
+            if (isinstance(entry.si, float) and entry.si == 0.0 and inputs_nonzero
+                    and self.inputs):
+                self.warnings.append(f"{entry.name} underflows to zero (below 4.9e-324 "
+                                     f"{entry.dim.si if entry.dim else ''}) although no input "
+                                     f"is zero")
+
+    def infinite_results(self) -> list[str]:
+        return [e.name for e in self.results.values()
+                if isinstance(e.si, float) and math.isinf(e.si)]

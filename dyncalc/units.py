@@ -1,0 +1,718 @@
+"""Units: the one pint registry of the program, and the careful reading of quantities.
+
+Everything the user types as a quantity passes through :func:`parse_quantity` or
+:func:`parse_vector`. They implement the input rules of SPEC.md:
+
+* a bare number means the parameter's SI unit (flagged ``assumed_si``; ``strict`` refuses it);
+* the dimension is checked, with the message ``--k must be a stiffness [force]/[length];
+  got 5 kilogram ([mass])``;
+* NaN is refused, infinity only where the caller allows it, a literal or result that overflows
+  float64 is refused rather than read as infinity;
+* text that pint would read silently wrong is refused: a comma in a scalar (``1,5 m`` is 15 m to
+  pint), hexadecimal/octal/binary literals, leading-zero integers (``007``), two numbers side by
+  side (``1 000`` is 0 to pint), a unit with no number (``N/mm``), comments, ``@``, uncertainty
+  signs, control and zero-width characters;
+* nothing runaway is ever computed: the text is limited to :data:`MAX_TEXT` characters, nesting
+  to :data:`MAX_DEPTH`, powers cannot be chained, unit exponents are bounded, and every number
+  is a float (so ``9**9**9`` overflows at once instead of building a huge integer).
+
+Why not ``ureg.Quantity(text)``: pint's own expression parser evaluates integer powers exactly
+(``9**9**9`` runs for hours), recurses without a bound, reads ``1,5`` as 15 and ``007`` as 0,
+and leans on ``assert`` (so ``python -O`` changes it). So dyncalc tokenises and evaluates the
+small quantity grammar itself and asks pint only for what pint does well: the meaning of each
+unit name (prefixes, plurals, aliases), unit algebra and conversion.
+
+Grammar (juxtaposition multiplies, with the precedence of ``*``, as in pint)::
+
+    expr     := term (('+' | '-') term)*
+    term     := unary (('*' | '/' | juxtaposition) unary)*
+    unary    := ('+' | '-') unary | power
+    power    := atom (('**' | '^') exponent)?          # 2**3**2 is refused, not guessed
+    exponent := ('+' | '-')? (NUMBER | '(' expr ')')    # a plain number
+    atom     := NUMBER | UNIT | '(' expr ')'
+
+Angular rates and cycle rates: pint counts the radian as dimensionless, so it converts
+``1 rad/s`` to ``1 Hz`` and ``1 rpm`` to ``0.105 Hz``. dyncalc never relies on that: an
+:data:`ANGULAR_RATE` refuses Hz, a :data:`CYCLE_RATE` refuses radians and degrees and counts a
+revolution (``rpm``, ``rps``, ``turn``) as one cycle. See :func:`convert`.
+"""
+from __future__ import annotations
+
+import math
+import re
+import unicodedata
+from dataclasses import dataclass
+from typing import Any
+
+from .errors import InputError
+
+__all__ = [
+    "Dim", "Parsed", "registry", "Q_", "parse_quantity", "parse_vector", "parse_unit",
+    "convert", "to_si", "format_quantity", "MAX_TEXT", "MAX_DEPTH",
+    "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "TIME", "ANGLE",
+    "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
+    "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION",
+]
+
+MAX_TEXT = 200        #: characters in one quantity
+MAX_DEPTH = 24        #: nesting of parentheses and signs
+MAX_UNIT_POWER = 16   #: largest exponent of a unit after evaluation
+
+# --------------------------------------------------------------------------------------------
+# The registry
+
+
+_REGISTRY = None
+
+
+def registry():
+    """The one :class:`pint.UnitRegistry` of the program, built on first use from pint's cache."""
+    global _REGISTRY
+    if _REGISTRY is None:
+        import pint
+
+        try:
+            _REGISTRY = pint.UnitRegistry(cache_folder=":auto:")
+        except OSError:  # an unwritable cache folder: build it the slow way
+            _REGISTRY = pint.UnitRegistry()
+    return _REGISTRY
+
+
+def Q_(value: Any, unit: Any = ""):
+    """A quantity of the program's registry: ``Q_(2, "kg")``."""
+    return registry().Quantity(value, unit)
+
+
+# --------------------------------------------------------------------------------------------
+# Dimensions
+
+
+@dataclass(frozen=True)
+class Dim:
+    """A physical dimension a parameter or result has.
+
+    ``name`` is the word in messages ("stiffness"), ``display`` the dimension as shown
+    (``[force]/[length]``), ``check`` the pint dimensionality it must have, ``si`` the unit of a
+    bare number and of SI output, ``kind`` one of plain, angle, angular-rate, cycle-rate,
+    dimensionless.
+    """
+
+    name: str
+    display: str
+    check: str
+    si: str
+    kind: str = "plain"
+
+
+STIFFNESS = Dim("stiffness", "[force]/[length]", "[force]/[length]", "N/m")
+TORSIONAL_STIFFNESS = Dim("torsional stiffness", "[force]*[length]/[angle]",
+                          "[force]*[length]", "N*m/rad")
+MASS = Dim("mass", "[mass]", "[mass]", "kg")
+INERTIA = Dim("mass moment of inertia", "[mass]*[length]^2", "[mass]*[length]**2", "kg*m^2")
+LENGTH = Dim("length", "[length]", "[length]", "m")
+AREA = Dim("area", "[length]^2", "[length]**2", "m^2")
+SECOND_MOMENT = Dim("second moment of area", "[length]^4", "[length]**4", "m^4")
+TIME = Dim("time", "[time]", "[time]", "s")
+VELOCITY = Dim("velocity", "[length]/[time]", "[length]/[time]", "m/s")
+ACCELERATION = Dim("acceleration", "[length]/[time]^2", "[length]/[time]**2", "m/s^2")
+FORCE = Dim("force", "[force]", "[force]", "N")
+MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
+DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
+              "N*s/m")
+ANGLE = Dim("angle", "[angle]", "", "rad", "angle")
+ANGULAR_RATE = Dim("angular rate", "[angle]/[time]", "1/[time]", "rad/s", "angular-rate")
+ANGULAR_ACCELERATION = Dim("angular acceleration", "[angle]/[time]^2", "1/[time]**2",
+                           "rad/s^2", "angular-rate")
+CYCLE_RATE = Dim("frequency", "[cycles]/[time]", "1/[time]", "Hz", "cycle-rate")
+DIMENSIONLESS = Dim("pure number", "dimensionless", "", "", "dimensionless")
+
+_TURN_UNITS = {"turn", "revolutions_per_minute", "revolutions_per_second"}
+_CYCLE_ONLY_UNITS = {"hertz"}
+
+
+def _unit_names(unit) -> list[str]:
+    return list(unit._units.keys())
+
+
+def _is_angle_unit(name: str) -> bool:
+    """A unit that carries an angle (radian, degree, ...), other than the full turn."""
+    if name in _TURN_UNITS:
+        return False
+    root = registry().get_root_units(name)[1]
+    return "radian" in root._units
+
+
+# --------------------------------------------------------------------------------------------
+# Reading text
+
+
+@dataclass(frozen=True)
+class Parsed:
+    """A quantity read from the user's text.
+
+    ``quantity`` is the pint quantity (rates already normalised to rad/s or Hz, see
+    :func:`convert`), ``si`` its magnitude in the SI unit of its dimension (a float, or a numpy
+    array for vectors), ``assumed_si`` whether a bare number was given, ``unit_text`` the unit as
+    the user wrote it (``""`` when none), ``text`` the original text.
+    """
+
+    quantity: Any
+    si: Any
+    assumed_si: bool
+    unit_text: str
+    text: str
+
+
+_NUMBER_RE = re.compile(r"(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_IDENT_START = set("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_µμΩΩÅ°")
+_IDENT_REST = _IDENT_START | set("0123456789")
+_SUPERSCRIPTS = {"²": 2.0, "³": 3.0}
+_WORD_NUMBERS = {"inf": math.inf, "infinity": math.inf}
+_WORD_NAN = {"nan"}
+_OPERATORS = ("**", "*", "/", "^", "+", "-", "(", ")")
+
+
+def _show(text: str, limit: int = 60) -> str:
+    """The user's text quoted for a one-line message: escapes for the unprintable, cut short."""
+    out = []
+    for ch in text[:limit]:
+        if ch.isprintable() and unicodedata.category(ch) not in ("Cf", "Zl", "Zp"):
+            out.append(ch)
+        else:
+            out.append(f"\\u{ord(ch):04x}")
+    shown = "".join(out) + ("..." if len(text) > limit else "")
+    return f"'{shown}'"
+
+
+def _refuse(label: str, text: str, why: str) -> InputError:
+    return InputError(f"{label}: cannot read {_show(text)}: {why}")
+
+
+@dataclass
+class _Tok:
+    kind: str       # NUM, NAME, OP
+    value: Any      # float for NUM, str otherwise
+    pos: int
+
+
+def _tokenize(text: str, label: str, allow_comma: bool = False) -> list[_Tok]:
+    toks: list[_Tok] = []
+    i, n = 0, len(text)
+    while i < n:
+        ch = text[i]
+        if ch in " \t":
+            i += 1
+            continue
+        if ch.isdigit() and not ch.isascii():
+            raise _refuse(label, text, f"the digit {ch!r} is not an ASCII digit 0-9")
+        if ch.isascii() and ch.isdigit() or (ch == "." and i + 1 < n and text[i + 1].isdigit()):
+            m = _NUMBER_RE.match(text, i)
+            lit = m.group(0)
+            if re.match(r"0[xXoObB][0-9A-Fa-f]", text[i:i + 3]):
+                raise _refuse(label, text, "hexadecimal, octal and binary literals are not read; "
+                                           "write the number in decimal")
+            if re.match(r"0\d", lit):
+                raise _refuse(label, text, f"the leading zero in {lit!r} is ambiguous; "
+                                           "write it without")
+            end = m.end()
+            if end < n and text[end] == "_":
+                raise _refuse(label, text, "digit separators ('_') are not read; write 1000, "
+                                           "not 1_000")
+            value = float(lit)
+            if math.isinf(value):
+                raise _refuse(label, text, f"{lit} overflows float64 (the largest is 1.8e308)")
+            toks.append(_Tok("NUM", value, i))
+            i = end
+            continue
+        if ch in _IDENT_START:
+            j = i + 1
+            while j < n and text[j] in _IDENT_REST:
+                j += 1
+            word = text[i:j]
+            low = word.lower()
+            if low in _WORD_NAN:
+                raise _refuse(label, text, "NaN is not a number dyncalc accepts")
+            if low in _WORD_NUMBERS:
+                toks.append(_Tok("NUM", _WORD_NUMBERS[low], i))
+            else:
+                toks.append(_Tok("NAME", "degree" if word == "°" else word, i))
+            i = j
+            continue
+        if ch in _SUPERSCRIPTS:
+            toks.append(_Tok("OP", "**", i))
+            toks.append(_Tok("NUM", _SUPERSCRIPTS[ch], i))
+            i += 1
+            continue
+        if ch in "·×":
+            toks.append(_Tok("OP", "*", i))
+            i += 1
+            continue
+        if ch == "%":
+            toks.append(_Tok("NAME", "percent", i))
+            i += 1
+            continue
+        if text.startswith("**", i):
+            toks.append(_Tok("OP", "**", i))
+            i += 2
+            continue
+        if ch == "+" and text.startswith("+/-", i) or ch == "±":
+            raise _refuse(label, text, "uncertainties (+/- or ±) are not supported yet")
+        if ch in "*/^+-()":
+            toks.append(_Tok("OP", ch, i))
+            i += 1
+            continue
+        if ch == "[" or ch == "]":
+            toks.append(_Tok("OP", "(" if ch == "[" else ")", i))
+            i += 1
+            continue
+        if ch == ",":
+            if allow_comma:
+                toks.append(_Tok("OP", ",", i))
+                i += 1
+                continue
+            raise _refuse(label, text, "a comma is neither a decimal point nor a thousands "
+                                       "separator here; write 1.5 or 1500")
+        if ch == "#":
+            raise _refuse(label, text, "comments ('#') are not read")
+        cat = unicodedata.category(ch)
+        if cat.startswith("C") or cat.startswith("Z"):
+            raise _refuse(label, text, f"it holds an invisible or control character "
+                                       f"U+{ord(ch):04X}")
+        raise _refuse(label, text, f"the character {ch!r} is not part of a quantity")
+    return toks
+
+
+class _Parser:
+    """Recursive descent over the tokens; evaluates to pint quantities with float magnitudes."""
+
+    def __init__(self, toks: list[_Tok], text: str, label: str):
+        self.toks, self.text, self.label = toks, text, label
+        self.i = 0
+        self.depth = 0
+        self.ureg = registry()
+
+    # -- helpers
+    def peek(self):
+        return self.toks[self.i] if self.i < len(self.toks) else None
+
+    def take(self):
+        tok = self.toks[self.i]
+        self.i += 1
+        return tok
+
+    def fail(self, why: str) -> InputError:
+        return _refuse(self.label, self.text, why)
+
+    def enter(self):
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise self.fail(f"it is nested more than {MAX_DEPTH} levels deep")
+
+    def is_op(self, tok, *ops):
+        return tok is not None and tok.kind == "OP" and tok.value in ops
+
+    def finite(self, q):
+        mag = q.magnitude
+        if isinstance(mag, complex):
+            raise self.fail("it has no real value")
+        if not math.isfinite(mag):
+            if math.isnan(mag):
+                raise self.fail("it is not a number (NaN)")
+            if not self.had_inf:
+                raise self.fail("its value overflows float64 (the largest is 1.8e308)")
+        return q
+
+    # -- grammar
+    def parse(self):
+        self.had_inf = any(t.kind == "NUM" and math.isinf(t.value) for t in self.toks)
+        if not self.toks:
+            raise self.fail("it is empty")
+        q = self.expr()
+        if self.peek() is not None:
+            tok = self.peek()
+            raise self.fail(f"unexpected {tok.value!r} at position {tok.pos + 1}")
+        return q
+
+    def expr(self):
+        self.enter()
+        q = self.term()
+        while self.is_op(self.peek(), "+", "-"):
+            op = self.take().value
+            rhs = self.term()
+            try:
+                q = q + rhs if op == "+" else q - rhs
+            except Exception as exc:  # pint: DimensionalityError, OffsetUnitCalculusError
+                raise self.fail(f"cannot {'add' if op == '+' else 'subtract'} "
+                                f"{rhs.units} and {q.units}") from exc
+            self.finite(q)
+        self.depth -= 1
+        return q
+
+    def term(self):
+        q = self.unary()
+        while True:
+            tok = self.peek()
+            if self.is_op(tok, "*", "/"):
+                op = self.take().value
+            elif tok is not None and (tok.kind == "NAME" or self.is_op(tok, "(")):
+                op = "*"
+            elif tok is not None and tok.kind == "NUM":
+                raise self.fail("two numbers side by side; write 1000, not 1 000, and use * "
+                                "to multiply")
+            else:
+                return q
+            rhs = self.unary()
+            try:
+                q = q * rhs if op == "*" else q / rhs
+            except ZeroDivisionError as exc:
+                raise self.fail("it divides by zero") from exc
+            except Exception as exc:
+                raise self.fail(str(exc).splitlines()[0]) from exc
+            self.check_units(q)
+            self.finite(q)
+
+    def unary(self):
+        tok = self.peek()
+        if self.is_op(tok, "+", "-"):
+            self.take()
+            self.enter()
+            q = self.unary()
+            self.depth -= 1
+            return -q if tok.value == "-" else q
+        return self.power()
+
+    def power(self):
+        base = self.atom()
+        if not self.is_op(self.peek(), "**", "^"):
+            return base
+        self.take()
+        exponent = self.exponent()
+        if self.is_op(self.peek(), "**", "^"):
+            raise self.fail("chained powers (a**b**c) are not read; use parentheses")
+        try:
+            q = base ** exponent
+        except OverflowError as exc:
+            raise self.fail("its value overflows float64 (the largest is 1.8e308)") from exc
+        except ZeroDivisionError as exc:
+            raise self.fail("it divides by zero") from exc
+        except Exception as exc:
+            raise self.fail(str(exc).splitlines()[0]) from exc
+        self.check_units(q)
+        return self.finite(q)
+
+    def exponent(self) -> float:
+        sign = 1.0
+        while self.is_op(self.peek(), "+", "-"):
+            if self.take().value == "-":
+                sign = -sign
+        tok = self.peek()
+        if tok is not None and tok.kind == "NUM":
+            self.take()
+            value = tok.value
+        elif self.is_op(tok, "("):
+            self.take()
+            self.enter()
+            q = self.expr()
+            self.depth -= 1
+            if not self.is_op(self.peek(), ")"):
+                raise self.fail("a '(' is not closed")
+            self.take()
+            if not q.unitless:
+                raise self.fail("an exponent must be a plain number")
+            value = float(q.magnitude)
+        else:
+            raise self.fail("an exponent must be a plain number")
+        if not math.isfinite(value):
+            raise self.fail("an exponent must be finite")
+        return sign * value
+
+    def atom(self):
+        tok = self.peek()
+        if tok is None:
+            raise self.fail("it ends where a number or unit should follow")
+        self.take()
+        if tok.kind == "NUM":
+            return self.ureg.Quantity(tok.value)
+        if tok.kind == "NAME":
+            try:
+                unit = self.ureg.parse_units(tok.value)
+            except Exception as exc:
+                raise self.fail(f"unknown unit {tok.value!r}") from exc
+            return self.ureg.Quantity(1.0, unit)
+        if tok.value == "(":
+            self.enter()
+            q = self.expr()
+            self.depth -= 1
+            if not self.is_op(self.peek(), ")"):
+                raise self.fail("a '(' is not closed")
+            self.take()
+            return q
+        raise self.fail(f"unexpected {tok.value!r} at position {tok.pos + 1}")
+
+    def check_units(self, q):
+        for name, power in q.unit_items():
+            if abs(power) > MAX_UNIT_POWER:
+                raise self.fail(f"the unit {name} is raised to the power {power:g}; dyncalc "
+                                f"reads powers up to {MAX_UNIT_POWER}")
+
+
+def _evaluate(text: str, label: str):
+    """Text -> (pint quantity with a float magnitude, whether any unit was named, unit text)."""
+    if not isinstance(text, str):
+        raise InputError(f"{label}: expected text, got {type(text).__name__}")
+    if len(text) > MAX_TEXT:
+        raise InputError(f"{label}: the quantity is {len(text)} characters long; dyncalc reads "
+                         f"at most {MAX_TEXT}")
+    toks = _tokenize(text, label)
+    if not toks:
+        raise _refuse(label, text, "it is empty")
+    if not any(t.kind == "NUM" for t in toks):
+        if any(t.kind == "NAME" for t in toks):
+            raise _refuse(label, text, f"it has a unit but no number; write 1 {text.strip()} "
+                                       "if that is what you mean")
+        raise _refuse(label, text, "it holds no number")
+    quantity = _Parser(toks, text, label).parse()
+    named = any(t.kind == "NAME" for t in toks)
+    unit_text = ""
+    if named and toks[0].kind == "NUM" and all(t.kind != "NUM" for t in toks[1:]):
+        unit_text = text[toks[1].pos:].strip() if len(toks) > 1 else ""
+        if unit_text.startswith(("*", "/")):
+            unit_text = ""
+    return quantity, named, unit_text
+
+
+# --------------------------------------------------------------------------------------------
+# Dimensions and conversion
+
+
+def _dimension_message(label: str, dim: Dim, quantity) -> InputError:
+    article = "an" if dim.name[0] in "aeiou" else "a"
+    return InputError(f"{label} must be {article} {dim.name} {dim.display}; got "
+                      f"{format_quantity(quantity)} ({quantity.dimensionality})")
+
+
+def format_quantity(quantity) -> str:
+    """``5 kilogram``: the magnitude to 15 digits and pint's long unit name, for messages."""
+    mag = quantity.magnitude
+    if hasattr(mag, "__len__"):
+        shown = "(" + ", ".join(f"{float(x):.15g}" for x in mag) + ")"
+    else:
+        shown = f"{float(mag):.15g}"
+    unit = str(quantity.units)
+    return f"{shown} {unit}" if unit != "dimensionless" else shown
+
+
+def _normalise(quantity, dim: Dim, label: str):
+    """Check ``quantity`` has dimension ``dim``; return it in the unit the physics works in.
+
+    Angular rates come back in rad/s and cycle rates in Hz, applying the 2 pi where revolutions
+    meet cycles; the other dimensions come back unchanged (pint converts them correctly).
+    """
+    ureg = registry()
+    names = _unit_names(quantity.units)
+    if dim.kind in ("dimensionless", "angle"):
+        if not quantity.dimensionless:
+            raise _dimension_message(label, dim, quantity)
+        return quantity
+    if not quantity.check(dim.check):
+        raise _dimension_message(label, dim, quantity)
+    if dim.kind == "angular-rate":
+        if any(n in _CYCLE_ONLY_UNITS for n in names):
+            raise InputError(f"{label} is an angular rate; give it in rad/s, deg/s, rpm or "
+                             f"rev/s, not Hz (a frequency in cycles)")
+        return quantity.to(dim.si.replace("^", "**"))
+    if dim.kind == "cycle-rate":
+        if any(_is_angle_unit(n) for n in names):
+            raise InputError(f"{label} is a frequency in cycles; give it in Hz, 1/s, 1/min or "
+                             f"rpm, not in radians or degrees per time (that is omega)")
+        if any(n in _TURN_UNITS for n in names):
+            return ureg.Quantity(quantity.to("turn/s").magnitude, "Hz")
+        return quantity.to("Hz")
+    return quantity
+
+
+def to_si(quantity, dim: Dim, label: str = "value"):
+    """The magnitude of ``quantity`` in ``dim.si`` (float or array); refuses an overflow."""
+    q = _normalise(quantity, dim, label)
+    mag = q.to(dim.si.replace("^", "**")).magnitude if dim.si else q.to("").magnitude
+    import numpy as np
+
+    if not np.all(np.isfinite(mag)) and np.all(np.isfinite(q.magnitude)):
+        raise InputError(f"{label}: {format_quantity(quantity)} overflows float64 in {dim.si}")
+    return mag
+
+
+def _check_value(si, dim: Dim, label: str, allow_inf: bool, constraint: str | None, q):
+    import numpy as np
+
+    arr = np.asarray(si, dtype=float)
+    if np.any(np.isnan(arr)):
+        raise InputError(f"{label}: NaN is not a number dyncalc accepts")
+    if np.any(np.isinf(arr)) and not allow_inf:
+        raise InputError(f"{label} must be finite; got {format_quantity(q)}")
+    if constraint == "positive" and np.any(arr <= 0):
+        raise InputError(f"{label} must be positive; got {format_quantity(q)}")
+    if constraint == "nonnegative" and np.any(arr < 0):
+        raise InputError(f"{label} must not be negative; got {format_quantity(q)}")
+    if constraint == "nonzero" and np.any(arr == 0):
+        raise InputError(f"{label} must not be zero")
+
+
+def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = False,
+                   allow_inf: bool = False, constraint: str | None = None) -> Parsed:
+    """Read one scalar quantity of dimension ``dim`` from ``text``.
+
+    Parameters
+    ----------
+    text : str
+        What the user typed: ``"2 kN/m"``, ``"1.5e3 lbf/in"``, ``"30deg"``, ``"4"``.
+    dim : Dim
+        The dimension it must have (``STIFFNESS``, ``MASS``, ...); its ``si`` unit is used for a
+        bare number.
+    label : str
+        How the user named it (``--k``, ``element 2``): every message starts with it.
+    strict : bool
+        Refuse a bare number for a dimensional quantity (``--strict-units``).
+    allow_inf : bool
+        Accept ``inf`` (a rigid spring); otherwise infinities are refused.
+    constraint : {None, "positive", "nonnegative", "nonzero"}
+
+    Returns
+    -------
+    Parsed
+
+    Examples
+    --------
+    >>> p = parse_quantity("2 kN/m", STIFFNESS, label="--k")
+    >>> p.si, p.assumed_si, p.unit_text
+    (2000.0, False, 'kN/m')
+    """
+    quantity, named, unit_text = _evaluate(text, label)
+    assumed = False
+    if not named and dim.kind != "dimensionless":
+        if strict:
+            raise InputError(f"{label}: {_show(text)} has no unit and --strict-units is on; "
+                             f"write it with a unit, e.g. {text.strip()} {dim.si}")
+        quantity = registry().Quantity(quantity.magnitude, dim.si.replace("^", "**"))
+        assumed = True
+    quantity = _normalise(quantity, dim, label)
+    si = to_si(quantity, dim, label)
+    _check_value(si, dim, label, allow_inf, constraint, quantity)
+    return Parsed(quantity, float(si), assumed, unit_text, text)
+
+
+_VECTOR_RE = re.compile(r"^\s*[\(\[]([^\)\]]*)[\)\]]\s*(.*)$")
+
+
+def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
+                 strict: bool = False, allow_scalar: bool = False,
+                 constraint: str | None = None) -> Parsed:
+    """Read a vector of ``size`` components with one unit: ``"0,0,2 rad/s"``,
+    ``"(0, 0, 2) rad/s"``, ``"[1,0,0] m/s"``.
+
+    Each component is a plain decimal number (sign allowed). With ``allow_scalar`` a text with
+    no comma is read by :func:`parse_quantity` and returned as a float (the caller gives it a
+    meaning). ``si`` is then a numpy array of ``size`` floats.
+
+    >>> parse_vector("(0, 0, 2) rad/s", ANGULAR_RATE, label="--omega").si.tolist()
+    [0.0, 0.0, 2.0]
+    """
+    import numpy as np
+
+    if not isinstance(text, str):
+        raise InputError(f"{label}: expected text, got {type(text).__name__}")
+    if len(text) > MAX_TEXT:
+        raise InputError(f"{label}: the quantity is {len(text)} characters long; dyncalc reads "
+                         f"at most {MAX_TEXT}")
+    if "," not in text:
+        if allow_scalar:
+            return parse_quantity(text, dim, label=label, strict=strict, constraint=constraint)
+        raise InputError(f"{label} must be a vector of {size} components, e.g. '0,0,2 {dim.si}';"
+                         f" got {_show(text)}")
+    m = _VECTOR_RE.match(text)
+    if m:
+        parts = m.group(1).split(",")
+        unit_text = m.group(2).strip()
+    else:
+        parts = text.split(",")
+        last = parts[-1].strip()
+        num = re.match(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", last)
+        if num is None:
+            raise _refuse(label, text, f"component {len(parts)} is not a number")
+        parts[-1] = num.group(0)
+        unit_text = last[num.end():].strip()
+    if len(parts) != size:
+        raise InputError(f"{label} must have {size} components; got {len(parts)} in {_show(text)}")
+    values = []
+    for index, part in enumerate(parts, 1):
+        part = part.strip()
+        if not part:
+            raise _refuse(label, text, f"component {index} is empty")
+        toks = _tokenize(part, label)
+        sign = 1.0
+        while toks and toks[0].kind == "OP" and toks[0].value in "+-":
+            sign = -sign if toks[0].value == "-" else sign
+            toks = toks[1:]
+        if len(toks) != 1 or toks[0].kind != "NUM":
+            raise _refuse(label, text, f"component {index} ({part!r}) is not a plain number")
+        values.append(sign * toks[0].value)
+    if unit_text:
+        unit = parse_unit(unit_text, label=label)
+        named = True
+    else:
+        if strict and dim.kind != "dimensionless":
+            raise InputError(f"{label}: {_show(text)} has no unit and --strict-units is on; "
+                             f"write it with a unit, e.g. {text.strip()} {dim.si}")
+        unit = registry().parse_units(dim.si.replace("^", "**")) if dim.si else None
+        named = False
+    quantity = registry().Quantity(np.array(values, dtype=float), unit)
+    quantity = _normalise(quantity, dim, label)
+    si = np.asarray(to_si(quantity, dim, label), dtype=float)
+    if np.any(np.isinf(si)):
+        raise InputError(f"{label} must be finite; got {format_quantity(quantity)}")
+    _check_value(si, dim, label, False, constraint, quantity)
+    return Parsed(quantity, si, not named and dim.kind != "dimensionless", unit_text, text)
+
+
+def parse_unit(text: str, *, label: str = "unit"):
+    """Read a unit (``"kN/m"``, ``"1/s"``, ``"rpm"``) and return the pint unit.
+
+    A quantity with a magnitude other than 1 (``"2 m"``) is refused.
+    """
+    if isinstance(text, str) and text.strip() and not _NUMBER_RE.match(text.strip()):
+        probe = "1 " + text
+    else:
+        probe = text
+    quantity, _named, _ut = _evaluate(probe, label)
+    if quantity.magnitude != 1.0:
+        raise _refuse(label, text, "give a unit, not a quantity")
+    return quantity.units
+
+
+def convert(si_value, dim: Dim, unit_text: str, *, label: str = "unit"):
+    """Express an SI magnitude of ``dim`` in ``unit_text``; returns the converted magnitude.
+
+    The rate rules of SPEC.md apply: an angular rate cannot be shown in Hz, a cycle rate cannot
+    be shown in rad/s or deg/s, and ``rpm`` is one revolution (one cycle) per minute for both.
+    """
+    ureg = registry()
+    unit = parse_unit(unit_text, label=label)
+    names = _unit_names(unit)
+    if dim.kind == "cycle-rate":
+        if any(_is_angle_unit(n) for n in names):
+            raise InputError(f"{label}: a frequency in cycles cannot be shown in {unit_text}; "
+                             f"use omega for rad/s")
+        base = ureg.Quantity(si_value, "turn/s" if any(n in _TURN_UNITS for n in names) else "Hz")
+    elif dim.kind == "angular-rate":
+        if any(n in _CYCLE_ONLY_UNITS for n in names):
+            raise InputError(f"{label}: an angular rate cannot be shown in {unit_text}; "
+                             f"use f for Hz")
+        base = ureg.Quantity(si_value, dim.si.replace("^", "**"))
+    else:
+        base = ureg.Quantity(si_value, dim.si.replace("^", "**") if dim.si else "")
+    try:
+        return base.to(unit).magnitude
+    except Exception as exc:  # pint's DimensionalityError
+        article = "an" if dim.name[0] in "aeiou" else "a"
+        raise InputError(f"{label}: {unit_text} is not a unit of {dim.display}; the result is "
+                         f"{article} {dim.name}") from exc
