@@ -12,7 +12,19 @@ from typing import Any
 
 from .units import Dim, Parsed, convert
 
-__all__ = ["Entry", "Explanation", "Result", "entry_from_parsed"]
+__all__ = ["Entry", "Explanation", "Result", "entry_from_parsed", "format_number"]
+
+
+def format_number(value, digits: int) -> str:
+    """``value`` to ``digits`` significant figures (vectors as ``(x, y, z)``)."""
+    if isinstance(value, str):
+        return value
+    if hasattr(value, "__len__"):
+        return "(" + ", ".join(format_number(float(v), digits) for v in value) + ")"
+    value = float(value)
+    if math.isinf(value):
+        return "inf" if value > 0 else "-inf"
+    return f"{value:.{digits}g}"
 
 
 @dataclass

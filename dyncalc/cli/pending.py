@@ -6,7 +6,6 @@ import click
 from ..errors import InputError
 
 _PENDING = {
-    "natural-frequency": "Natural frequency omega, f and T of a scene (mass-spring, pendulum, ...).",
     "damping-ratio": "Damping ratio, log decrement and damped period from any measurement.",
     "rolling-onset": "When a sliding ball, cylinder or hoop starts to roll without slipping.",
     "coriolis": "Coriolis and relative-motion acceleration in a rotating frame.",
@@ -21,7 +20,8 @@ def _pending_command(name: str, summary: str):
     @click.pass_context
     def command(ctx):
         raise InputError(f"{name} is not built yet in dyncalc {_version()}; the commands that "
-                         "work today are spring-series, spring-parallel and scenes")
+                         "work today are spring-series, spring-parallel, natural-frequency and "
+                         "scenes")
 
     return command
 

@@ -10,21 +10,9 @@ import math
 
 from ..checks import Check
 from ..errors import InputError
-from ..result import Entry, Result
+from ..result import Entry, Result, format_number
 
 __all__ = ["to_json", "bare_value", "plain_text", "rich_text", "format_number"]
-
-
-def format_number(value, digits: int) -> str:
-    """``value`` to ``digits`` significant figures (vectors as ``(x, y, z)``)."""
-    if isinstance(value, str):
-        return value
-    if hasattr(value, "__len__"):
-        return "(" + ", ".join(format_number(float(v), digits) for v in value) + ")"
-    value = float(value)
-    if math.isinf(value):
-        return "inf" if value > 0 else "-inf"
-    return f"{value:.{digits}g}"
 
 
 def _shown(entry: Entry, units: dict[str, str]):

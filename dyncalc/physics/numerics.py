@@ -9,7 +9,8 @@ import math
 
 import numpy as np
 
-__all__ = ["series_sum", "parallel_sum", "monomial", "two_product"]
+__all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm", "half_complement_sin",
+           "pendulum_period_factor", "sqrt_ratio"]
 
 
 def two_product(a: float, b: float) -> tuple[float, float]:
@@ -86,6 +87,27 @@ def series_sum(values) -> float:
     return math.ldexp(_quotient(m, total, low), e)
 
 
+def sqrt_ratio(a: float, b: float) -> float:
+    """``sqrt(a / b)`` for positive finite ``a``, ``b``, with no overflow or underflow midway.
+
+    The binary exponents are split off first (``math.frexp``) and halved exactly, so only the
+    mantissa quotient and its square root are rounded (within about 1 ulp, as
+    ``sqrt(a/b)``), while ``a/b`` itself may lie far outside float64: ``1e300 / 1e-300``.
+
+    >>> sqrt_ratio(100.0, 2.0)
+    7.0710678118654755
+    >>> sqrt_ratio(1e300, 1e-300)
+    1e+300
+    """
+    ma, ea = math.frexp(a)
+    mb, eb = math.frexp(b)
+    shift = ea - eb
+    if shift % 2:
+        ma *= 2.0
+        shift -= 1
+    return math.ldexp(math.sqrt(ma / mb), shift // 2)
+
+
 def parallel_sum(values) -> float:
     """Sum of positive elements, correctly rounded; ``inf`` if it overflows or any is infinite.
 
@@ -137,3 +159,81 @@ def monomial(coefficient: float, factors) -> float:
         return math.ldexp(mantissa, exponent)
     except OverflowError:
         return math.inf
+
+
+# --- large-amplitude pendulum ----------------------------------------------------------------
+
+#: pi as a double-double: PI_HI + PI_LO is pi to about 32 digits.
+PI_HI = math.pi
+PI_LO = 1.2246467991473532e-16
+
+#: Half a turn in angle units whose value for it is exact, so that 180 deg - theta (or
+#: 200 grad - theta) is computed without rounding. Radians use the double-double pi.
+HALF_TURN = {"degree": 180.0, "grade": 200.0, "arcminute": 10800.0, "arcsecond": 648000.0,
+             "turn": 0.5}
+
+
+def agm(a: float, b: float) -> float:
+    """Arithmetic-geometric mean of two non-negative numbers.
+
+    Iterates ``a, b = (a + b)/2, sqrt(a b)`` until the two agree to the last bit; converges
+    quadratically (at most about 6 steps for ``b/a`` down to 1e-300, since the count grows like
+    ``log2(log(a/b))``). Stable: every step is a mean of positive numbers.
+
+    >>> agm(1.0, 1.0)
+    1.0
+    >>> agm(1.0, 2 ** -0.5)  # 1/G with G Gauss's constant, 0.84721308479397908...
+    0.8472130847939792
+    """
+    if a < b:
+        a, b = b, a
+    if b == 0.0:
+        return 0.0
+    for _ in range(64):
+        if a - b <= 2.0 * math.ulp(a):
+            break
+        a, b = 0.5 * (a + b), math.sqrt(a * b)
+    return 0.5 * (a + b)
+
+
+def half_complement_sin(amplitude: float, unit: str) -> float:
+    """``cos(theta/2)`` computed as ``sin((half turn - theta)/2)`` in the unit typed.
+
+    For an amplitude a hair below half a turn, ``cos(theta/2)`` is tiny and converting
+    ``179.999 deg`` to radians first loses most of its digits (the rounding of ``theta`` in
+    radians is ~1e-16 absolute, against a complement of ~1e-5). In degrees (grads, arcminutes,
+    turns) the complement ``180 - theta`` is exact (Sterbenz), and in radians it is taken
+    against the double-double ``pi``. Then only a relative rounding or two remain.
+
+    Parameters
+    ----------
+    amplitude : float
+        The amplitude in ``unit``, between 0 and half a turn.
+    unit : str
+        pint's name of the unit (``"degree"``, ``"radian"``, ...); others go through radians.
+
+    >>> half_complement_sin(90.0, "degree")  # sin(pi/4) = 0.70710678118654752...
+    0.7071067811865475
+    >>> half_complement_sin(179.999, "degree")  # mpmath: 8.72664625990255427e-6
+    8.726646259902554e-06
+    >>> math.cos(math.radians(179.999) / 2)      # the naive form: wrong from the 10th digit
+    8.726646260010393e-06
+    """
+    if unit in HALF_TURN:
+        complement = HALF_TURN[unit] - amplitude
+        radians = complement * (math.pi / HALF_TURN[unit])
+    else:
+        radians = (PI_HI - amplitude) + PI_LO
+    return math.sin(0.5 * radians)
+
+
+def pendulum_period_factor(cos_half: float) -> float:
+    """``T / T0`` of a pendulum of amplitude theta from ``cos(theta/2)``: ``1 / AGM(1, cos)``.
+
+    The exact period is ``T = 4 K(sin(theta/2)) / omega0 = 2 pi / (omega0 AGM(1, cos(theta/2)))``
+    with ``K`` the complete elliptic integral of the first kind.
+
+    >>> pendulum_period_factor(1.0)
+    1.0
+    """
+    return 1.0 / agm(1.0, cos_half)

@@ -17,26 +17,49 @@ from typing import Any
 
 from ..errors import InputError
 
-__all__ = ["Param", "Scene", "register", "catalog", "get_scene", "scene_names"]
+__all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names"]
 
-#: Modules whose import registers scenes (filled as the catalog grows).
-CATALOG_MODULES: tuple[str, ...] = ()
+#: Modules whose import registers scenes.
+CATALOG_MODULES: tuple[str, ...] = (
+    "dyncalc.scenes.basic", "dyncalc.scenes.rigid", "dyncalc.scenes.rotating",
+    "dyncalc.scenes.damped",
+)
 
 
 @dataclass(frozen=True)
 class Param:
     """One parameter of a scene.
 
-    ``dim`` is a :class:`dyncalc.units.Dim`; ``default`` the text used when the user gives none
-    (``None``: required); ``constraint`` one of the units module's constraints (``positive``,
-    ``nonnegative``, ...), ``description`` one line for the catalog.
+    ``dim`` is a :class:`dyncalc.units.Dim` (``None`` for a choice such as ``body``);
+    ``default`` the text used when the user gives none; ``optional`` a parameter that may be
+    left out with no default (an amplitude); otherwise a parameter with neither is required.
+    ``constraint`` is one of the units module's (``positive``, ``nonnegative``, ``None``),
+    ``choices`` maps the words of a choice parameter to the value passed on.
     """
 
     name: str
     dim: Any
     description: str
     default: str | None = None
+    optional: bool = False
     constraint: str | None = "positive"
+    choices: dict | None = None
+
+    def signature(self) -> str:
+        """``l [length]``, ``g [length]/[time]^2 = 9.80665 m/s^2``, ``amplitude [angle]?``"""
+        kind = self.dim.display if self.dim is not None else "{" + ", ".join(self.choices) + "}"
+        if self.default is not None:
+            return f"{self.name} {kind} = {self.default}"
+        return f"{self.name} {kind}" + ("?" if self.optional else "")
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """A relation between parameters (``R > r``): ``holds`` takes the SI values by name."""
+
+    text: str
+    holds: Any
+    why: str = ""
 
 
 @dataclass(frozen=True)
@@ -52,7 +75,18 @@ class Scene:
     formula: str                     # the closed form (or how it is solved)
     reference: str                   # "E5.12"
     example: str                     # a runnable command line
-    constraints: tuple[str, ...] = field(default_factory=tuple)   # "R > r"
+    example_result: dict = field(default_factory=dict)  # result -> value text the example gives
+    constraints: tuple[Constraint, ...] = ()
+    one_of: tuple[tuple[str, ...], ...] = ()   # groups of which exactly one must be given
+    methods: tuple[str, ...] = ()              # besides "auto"; empty: closed form only
+    accepts_zeta: bool = True                  # --zeta adds damped results
+    assumptions: tuple[str, ...] = ()
+
+    def param(self, name: str) -> Param | None:
+        return next((p for p in self.params if p.name == name), None)
+
+    def signature(self) -> str:
+        return ", ".join(p.signature() for p in self.params)
 
     def function(self):
         module, _, name = self.compute.partition(":")
@@ -64,9 +98,21 @@ _loaded = False
 
 
 def register(scene: Scene) -> Scene:
-    """Add ``scene`` to the catalog (a name may be registered once)."""
+    """Add ``scene`` to the catalog (a name may be registered once).
+
+    A scene that accepts ``zeta`` gets the optional parameter ``zeta`` (damping ratio, adds the
+    damped results) appended to its parameters.
+    """
+    import dataclasses
+
+    from ..units import DIMENSIONLESS
+
     if scene.name in _SCENES:
         raise ValueError(f"scene {scene.name!r} is registered twice")
+    if scene.accepts_zeta and scene.param("zeta") is None:
+        zeta = Param("zeta", DIMENSIONLESS, "damping ratio: adds omega_d, f_d, T_d",
+                     optional=True, constraint="nonnegative")
+        scene = dataclasses.replace(scene, params=(*scene.params, zeta))
     _SCENES[scene.name] = scene
     return scene
 

@@ -1,0 +1,68 @@
+"""What a scene's physics function returns, and the helpers every oscillator shares.
+
+A physics function returns an :class:`Outcome`: named pint quantities (``omega``, ``f``, ``T``
+and whatever else the scene gives), plus the model and method used, an error estimate,
+warnings and the assumptions with their size at these inputs. It never prints.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..units import Q_
+
+__all__ = ["Outcome", "periodic", "damped"]
+
+
+@dataclass
+class Outcome:
+    """The answer of one physics function.
+
+    ``values`` maps result names to pint quantities (or plain floats for pure numbers, numpy
+    arrays for mode shapes) in the order they are shown; ``error_estimate`` is the relative
+    error bound of the method at these inputs (``None`` for closed forms exact to rounding).
+    """
+
+    values: dict[str, Any]
+    model: str = "linear"
+    method: str = "closed-form"
+    error_estimate: float | None = None
+    warnings: list[str] = field(default_factory=list)
+    assumptions: list[str] = field(default_factory=list)
+
+
+def periodic(omega_si: float, suffix: str = "") -> dict[str, Any]:
+    """``omega``, ``f = omega / 2 pi`` and ``T = 2 pi / omega`` from an angular frequency.
+
+    ``omega_si`` in rad/s; ``suffix`` names a family (``"_d"`` gives ``omega_d``, ``f_d``,
+    ``T_d``; ``"_1"`` the first mode). A zero frequency has an infinite period (``inf``).
+
+    >>> periodic(2 * math.pi)["T"]
+    <Quantity(1.0, 'second')>
+    """
+    period = 2.0 * math.pi / omega_si if omega_si > 0 else math.inf
+    return {f"omega{suffix}": Q_(omega_si, "rad/s"),
+            f"f{suffix}": Q_(omega_si / (2.0 * math.pi), "Hz"),
+            f"T{suffix}": Q_(period, "s")}
+
+
+def damped(omega_si: float, zeta: float) -> tuple[dict[str, Any], list[str]]:
+    """Damped quantities of an oscillator of natural frequency ``omega_si`` and damping ratio
+    ``zeta``: ``zeta``, and for ``zeta < 1`` ``omega_d = omega sqrt((1 - zeta)(1 + zeta))``
+    with ``f_d`` and ``T_d`` (the product form keeps its digits for zeta a hair below 1).
+
+    Returns ``(values, warnings)``; at or above critical damping there is no damped frequency
+    and a warning says so instead.
+
+    >>> values, warnings = damped(10.0, 0.6)
+    >>> values["omega_d"]
+    <Quantity(8.0, 'radian / second')>
+    """
+    values: dict[str, Any] = {"zeta": float(zeta)}
+    if zeta < 1.0:
+        values.update(periodic(omega_si * math.sqrt((1.0 - zeta) * (1.0 + zeta)), "_d"))
+        return values, []
+    regime = "critically damped" if zeta == 1.0 else "overdamped"
+    return values, [f"zeta = {zeta:.6g}: the system is {regime}; it does not oscillate, so "
+                    "there is no damped frequency"]

@@ -1,0 +1,1 @@
+"""Catalog: damped scenes (see SCENES.md)."""

@@ -1,0 +1,71 @@
+"""What each result name of the scenes means: its dimension, display unit, symbol and words.
+
+Families share a stem: ``omega``, ``omega_0``, ``omega_d``, ``omega_1`` are angular rates;
+``f...`` cycle rates; ``T...`` periods.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA, LENGTH, TIME,
+                     VELOCITY, Dim)
+
+__all__ = ["ResultKind", "result_kind", "DECAY_RATE", "LINEAR_DRAG"]
+
+DECAY_RATE = Dim("decay rate", "1/[time]", "1/[time]", "1/s")
+LINEAR_DRAG = Dim("drag per unit length", "[force]*[time]/[length]^2",
+                  "[force]*[time]/[length]**2", "N*s/m^2")
+
+
+@dataclass(frozen=True)
+class ResultKind:
+    dim: Dim
+    unit: str
+    symbol: str
+    description: str
+
+
+_SUFFIX = {"": "", "_0": " (small oscillations)", "_d": " (damped)"}
+
+_FIXED = {
+    "zeta": ResultKind(DIMENSIONLESS, "", "ζ", "damping ratio"),
+    "xi": ResultKind(DECAY_RATE, "1/s", "ξ", "decay rate (amplitude ~ exp(-xi t))"),
+    "phi_0": ResultKind(ANGLE, "deg", "φ0", "equilibrium angle"),
+    "theta_eq": ResultKind(ANGLE, "deg", "θeq", "stable equilibrium angle"),
+    "J_A": ResultKind(INERTIA, "kg*m^2", "J_A", "moment of inertia about the pivot"),
+    "v_crit": ResultKind(VELOCITY, "m/s", "v_crit", "critical (resonance) speed"),
+    "x_amp": ResultKind(LENGTH, "m", "x_amp", "steady amplitude"),
+    "y0": ResultKind(LENGTH, "m", "y0", "static amplitude"),
+    "y_max": ResultKind(LENGTH, "m", "y_max", "largest steady amplitude"),
+    "Omega": ResultKind(ANGULAR_RATE, "rad/s", "Ω", "forcing angular frequency"),
+    "beta_crit": ResultKind(LINEAR_DRAG, "N*s/m^2", "β_crit", "critical drag coefficient"),
+    "error_estimate": ResultKind(DIMENSIONLESS, "", "ε", "relative error estimate"),
+}
+
+_STEMS = {
+    "omega": (ANGULAR_RATE, "rad/s", "ω", "angular frequency"),
+    "f": (CYCLE_RATE, "Hz", "f", "frequency"),
+    "T": (TIME, "s", "T", "period"),
+}
+_FAMILY_RE = re.compile(r"^(omega|f|T)(_0|_d|_\d+)?$")
+_MODE_RE = re.compile(r"^mode_(\d+)$")
+
+
+def result_kind(name: str) -> ResultKind:
+    """The kind of result ``name``; ``KeyError`` for a name no scene should produce."""
+    if name in _FIXED:
+        return _FIXED[name]
+    m = _FAMILY_RE.match(name)
+    if m:
+        dim, unit, symbol, words = _STEMS[m.group(1)]
+        suffix = m.group(2) or ""
+        if suffix in _SUFFIX:
+            return ResultKind(dim, unit, symbol + suffix.replace("_", ""), words + _SUFFIX[suffix])
+        return ResultKind(dim, unit, symbol + suffix.replace("_", ""),
+                          f"{words} of mode {suffix[1:]}")
+    m = _MODE_RE.match(name)
+    if m:
+        return ResultKind(DIMENSIONLESS, "", f"mode {m.group(1)}",
+                          f"shape of mode {m.group(1)} (normalised)")
+    raise KeyError(name)

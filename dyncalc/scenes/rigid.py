@@ -1,0 +1,1 @@
+"""Catalog: rigid scenes (see SCENES.md)."""

@@ -1,0 +1,1 @@
+"""Catalog: rotating scenes (see SCENES.md)."""

@@ -1,0 +1,183 @@
+"""Running a scene: texts -> checked quantities -> the scene's physics -> a Result.
+
+The rules (SPEC.md, SCENES.md): every parameter the scene needs must be given or have a
+default; a parameter the scene does not have, or one given twice, is refused with the list of
+the scene's parameters; groups of alternatives (``J`` or ``J_A``, ``body`` or ``kappa``) take
+exactly one; relations between parameters (``R > r``) are checked before any physics runs.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+from ..result import Entry, Explanation, Result, entry_from_parsed, format_number
+from ..units import DIMENSIONLESS, parse_quantity, to_si
+from . import Scene, get_scene
+from .results import result_kind
+
+__all__ = ["run_scene", "infer_scene", "DEFAULT_RTOL"]
+
+DEFAULT_RTOL = 1e-9
+
+#: Without --scene, the parameters given choose the scene (SPEC.md, natural-frequency).
+INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum", {"l"}))
+
+
+def infer_scene(names: set[str]) -> str:
+    """The scene the parameter names fit: mass-spring (the default), torsional or pendulum."""
+    given = set(names) - {"zeta"}
+    if not given:
+        return "mass-spring"
+    for scene_name, keys in INFERENCE:
+        if given & keys and given <= {p.name for p in get_scene(scene_name).params}:
+            return scene_name
+    raise InputError(f"the parameters given ({', '.join(sorted(given))}) fit no scene on their "
+                     "own; name one with --scene (dyncalc scenes lists them)")
+
+
+def _parameter_list(scene: Scene) -> str:
+    return f"the parameters of {scene.name} are: {scene.signature()}"
+
+
+def _resolve_groups(scene: Scene, texts: dict[str, str]) -> set[str]:
+    """Check the one-of groups; return the names left out on purpose (the other alternative)."""
+    skipped = set()
+    for group in scene.one_of:
+        given = [n for n in group if n in texts]
+        if len(given) > 1:
+            raise InputError(f"{scene.name}: give {' or '.join(group)}, not both; "
+                             f"{_parameter_list(scene)}")
+        if not given and not any(scene.param(n).default is not None for n in group):
+            raise InputError(f"{scene.name} needs {' or '.join(group)}; "
+                             f"{_parameter_list(scene)}")
+        chosen = given[0] if given else next(n for n in group
+                                             if scene.param(n).default is not None)
+        skipped.update(n for n in group if n != chosen)
+    return skipped
+
+
+def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, str] | None = None,
+              method: str | None = None, rtol: float | None = None, strict: bool = False,
+              command: str = "natural-frequency") -> Result:
+    """Compute ``scene`` from the parameter texts the user gave.
+
+    Parameters
+    ----------
+    scene : Scene or str
+    texts : dict
+        Parameter name -> text as typed (``{"k": "2 kN/m", "m": "4kg"}``).
+    labels : dict, optional
+        How the user named each parameter in messages (``{"k": "--k"}``); default ``k=``.
+    method : str, optional
+        ``auto`` (default) or one of ``scene.methods``.
+    rtol : float, optional
+        Relative tolerance the model must meet (default 1e-9).
+    strict : bool
+        ``--strict-units``.
+    """
+    if isinstance(scene, str):
+        scene = get_scene(scene)
+    labels = labels or {}
+    names = {p.name for p in scene.params}
+    for name in texts:
+        if name not in names:
+            raise InputError(f"{scene.name} has no parameter {name!r}; {_parameter_list(scene)}")
+    skipped = _resolve_groups(scene, texts)
+
+    kwargs: dict[str, Any] = {}
+    inputs: dict[str, Entry] = {}
+    si: dict[str, Any] = {}
+    missing = []
+    zeta = None
+    for param in scene.params:
+        text = texts.get(param.name)
+        if text is None and param.name not in skipped:
+            text = param.default
+        if text is None:
+            if not param.optional and param.name not in skipped:
+                missing.append(param.name)
+            continue
+        label = labels.get(param.name, f"{param.name}=")
+        label = label[:-1] if label.endswith("=") else label
+        if param.choices is not None:
+            word = text.strip()
+            if word not in param.choices:
+                raise InputError(f"{label} must be one of {', '.join(param.choices)}; got "
+                                 f"{word[:40]!r}")
+            kwargs["kappa" if param.name == "body" else param.name] = param.choices[word]
+            inputs[param.name] = Entry(param.name, word, None)
+            continue
+        parsed = parse_quantity(text, param.dim, label=label, strict=strict,
+                                constraint=param.constraint)
+        si[param.name] = parsed.si
+        inputs[param.name] = entry_from_parsed(param.name, parsed, param.dim,
+                                               description=param.description)
+        if param.name == "zeta" and scene.accepts_zeta:
+            zeta = parsed.si
+        elif param.dim is DIMENSIONLESS:
+            kwargs[param.name] = parsed.si
+        else:
+            kwargs[param.name] = parsed.quantity
+    if missing:
+        raise InputError(f"{scene.name} needs {', '.join(missing)}; {_parameter_list(scene)}")
+    for constraint in scene.constraints:
+        if not constraint.holds(si):
+            raise InputError(f"{scene.name} needs {constraint.text}{constraint.why}")
+
+    allowed = ("auto", *scene.methods)
+    if method not in (None, "auto") and method not in scene.methods:
+        offered = ", ".join(allowed) if scene.methods else "auto (a closed form only)"
+        raise InputError(f"--method {method} is not offered by {scene.name}; it offers "
+                         f"{offered}")
+    if scene.methods:
+        kwargs["method"] = method or "auto"
+        kwargs["rtol"] = DEFAULT_RTOL if rtol is None else rtol
+
+    outcome = scene.function()(**kwargs)
+    values = dict(outcome.values)
+    warnings = list(outcome.warnings)
+    if zeta is not None:
+        from ..physics.outcome import damped
+
+        omega = values["omega"].to("rad/s").magnitude
+        extra, notes = damped(float(omega), zeta)
+        values.update(extra)
+        warnings += notes
+
+    results = {name: _entry(name, value) for name, value in values.items()}
+    result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
+                    model=outcome.model, method=outcome.method, warnings=warnings,
+                    explanation=_explain(scene, inputs, results, outcome))
+    if outcome.error_estimate is not None:
+        result.extra["error_estimate"] = outcome.error_estimate
+    result.add_underflow_warnings()
+    return result
+
+
+def _entry(name: str, value) -> Entry:
+    kind = result_kind(name)
+    if hasattr(value, "units"):
+        magnitude = to_si(value, kind.dim, name)
+        si = np.asarray(magnitude, dtype=float) if np.ndim(magnitude) else float(magnitude)
+    elif np.ndim(value):
+        si = np.asarray(value, dtype=float)
+    else:
+        si = float(value)
+    return Entry(name, si, kind.dim, unit=kind.unit, symbol=kind.symbol,
+                 description=kind.description)
+
+
+def _explain(scene: Scene, inputs: dict[str, Entry], results: dict[str, Entry],
+             outcome) -> Explanation:
+    def shown(entry: Entry) -> str:
+        value = entry.value_in()
+        unit = f" {entry.unit}" if entry.unit else ""
+        return f"{entry.name} = {format_number(value, 6)}{unit}"
+
+    substituted = [shown(e) for e in inputs.values()] + [shown(e) for e in results.values()]
+    return Explanation(formula=[f"equation of motion: {scene.equation}", scene.formula],
+                       substituted=substituted,
+                       assumptions=[*scene.assumptions, *outcome.assumptions],
+                       reference=scene.reference)
