@@ -74,7 +74,7 @@ def run_checks(result: Result, specs: list[str], rtol: float | None) -> list[Che
             shown_expected, shown_given = expected, given
         else:
             label = f"--check {name}"
-            shown_expected = float(convert(expected, entry.dim, unit, label=label))
-            shown_given = float(convert(given, entry.dim, unit, label=label))
+            shown_expected = float(convert(expected, entry.dim, unit, label=label, name=name))
+            shown_given = float(convert(given, entry.dim, unit, label=label, name=name))
         checks.append(Check(name, shown_expected, shown_given, unit, rel, tol))
     return checks

@@ -54,7 +54,7 @@ class Entry:
         target = self.unit if unit is None else unit
         if target == self.dim.si or (not target and not self.dim.si):
             return self.si
-        return convert(self.si, self.dim, target, label=f"--unit {self.name}")
+        return convert(self.si, self.dim, target, label=f"--unit {self.name}", name=self.name)
 
 
 def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:

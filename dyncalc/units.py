@@ -25,7 +25,9 @@ unit name (prefixes, plurals, aliases), unit algebra and conversion.
 Grammar (juxtaposition multiplies, with the precedence of ``*``, as in pint)::
 
     expr     := term (('+' | '-') term)*
-    term     := unary (('*' | '/' | juxtaposition) unary)*
+    term     := unary (('*' | '/' | juxtaposition) unary)*     # a number juxtaposed only as
+                                                             # "1/unit": "2 1/s"; "1 000" and
+                                                             # "2 3/4" are refused
     unary    := ('+' | '-') unary | power
     power    := atom (('**' | '^') exponent)?          # 2**3**2 is refused, not guessed
     exponent := ('+' | '-')? (NUMBER | '(' expr ')')    # a plain number
@@ -72,9 +74,11 @@ def registry():
         import pint
 
         try:
-            _REGISTRY = pint.UnitRegistry(cache_folder=":auto:")
+            ureg = pint.UnitRegistry(cache_folder=":auto:")
         except OSError:  # an unwritable cache folder: build it the slow way
-            _REGISTRY = pint.UnitRegistry()
+            ureg = pint.UnitRegistry()
+        ureg.define("@alias turn = rev")  # rev/s, rev/min as SPEC.md writes them
+        _REGISTRY = ureg
     return _REGISTRY
 
 
@@ -134,12 +138,31 @@ def _unit_names(unit) -> list[str]:
     return list(unit._units.keys())
 
 
+def _base_name(name: str) -> str:
+    """pint's unit name without its prefix: ``kilohertz`` -> ``hertz``."""
+    try:
+        return registry().parse_unit_name(name)[0][1]
+    except (IndexError, Exception):  # not a unit pint can split: keep it as it is
+        return name
+
+
+def _unit_class(name: str) -> str:
+    """``turn`` (revolutions), ``angle`` (radian, degree, ...), ``cycle`` (hertz), ``rate``
+    (a plain 1/time such as 1/s, 1/min) or ``other``."""
+    base = _base_name(name)
+    if base in _TURN_UNITS:
+        return "turn"
+    if base in _CYCLE_ONLY_UNITS:
+        return "cycle"
+    root = registry().get_root_units(base)[1]._units
+    if "radian" in root:
+        return "angle"
+    return "other"
+
+
 def _is_angle_unit(name: str) -> bool:
     """A unit that carries an angle (radian, degree, ...), other than the full turn."""
-    if name in _TURN_UNITS:
-        return False
-    root = registry().get_root_units(name)[1]
-    return "radian" in root._units
+    return _unit_class(name) == "angle"
 
 
 # --------------------------------------------------------------------------------------------
@@ -169,7 +192,7 @@ _IDENT_REST = _IDENT_START | set("0123456789")
 _SUPERSCRIPTS = {"²": 2.0, "³": 3.0}
 _WORD_NUMBERS = {"inf": math.inf, "infinity": math.inf}
 _WORD_NAN = {"nan"}
-_OPERATORS = ("**", "*", "/", "^", "+", "-", "(", ")")
+_HEX_RE = re.compile(r"(?<![\w.])0[xXoObB][0-9A-Fa-f]")
 
 
 def _show(text: str, limit: int = 60) -> str:
@@ -184,8 +207,28 @@ def _show(text: str, limit: int = 60) -> str:
     return f"'{shown}'"
 
 
-def _refuse(label: str, text: str, why: str) -> InputError:
-    return InputError(f"{label}: cannot read {_show(text)}: {why}")
+class ReadError(InputError):
+    """Text that cannot be read as a quantity; keeps the reason so a caller reading a part of
+    the user's text (a vector's unit) can quote the whole of it instead."""
+
+    def __init__(self, label: str, text: str, why: str):
+        super().__init__(f"{label}: cannot read {_show(text)}: {why}")
+        self.label, self.text, self.why = label, text, why
+
+
+def _refuse(label: str, text: str, why: str) -> ReadError:
+    return ReadError(label, text, why)
+
+
+def _check_characters(text: str, label: str) -> None:
+    """Refuse control, zero-width and unusual space characters anywhere in ``text``."""
+    for ch in text:
+        if ch in " \t":
+            continue
+        cat = unicodedata.category(ch)
+        if cat.startswith("C") or cat.startswith("Z"):
+            raise _refuse(label, text, f"it holds an invisible or control character "
+                                       f"U+{ord(ch):04X}")
 
 
 @dataclass
@@ -193,9 +236,10 @@ class _Tok:
     kind: str       # NUM, NAME, OP
     value: Any      # float for NUM, str otherwise
     pos: int
+    exponent: bool = False  # a number that is a power (m^2, s**-1, m²), not a magnitude
 
 
-def _tokenize(text: str, label: str, allow_comma: bool = False) -> list[_Tok]:
+def _tokenize(text: str, label: str) -> list[_Tok]:
     toks: list[_Tok] = []
     i, n = 0, len(text)
     while i < n:
@@ -203,17 +247,25 @@ def _tokenize(text: str, label: str, allow_comma: bool = False) -> list[_Tok]:
         if ch in " \t":
             i += 1
             continue
+        if ch in _SUPERSCRIPTS:
+            toks.append(_Tok("OP", "**", i))
+            toks.append(_Tok("NUM", _SUPERSCRIPTS[ch], i, exponent=True))
+            i += 1
+            continue
         if ch.isdigit() and not ch.isascii():
             raise _refuse(label, text, f"the digit {ch!r} is not an ASCII digit 0-9")
         if ch.isascii() and ch.isdigit() or (ch == "." and i + 1 < n and text[i + 1].isdigit()):
             m = _NUMBER_RE.match(text, i)
             lit = m.group(0)
-            if re.match(r"0[xXoObB][0-9A-Fa-f]", text[i:i + 3]):
+            if _HEX_RE.match(text, i):
                 raise _refuse(label, text, "hexadecimal, octal and binary literals are not read; "
                                            "write the number in decimal")
             if re.match(r"0\d", lit):
-                raise _refuse(label, text, f"the leading zero in {lit!r} is ambiguous; "
-                                           "write it without")
+                if toks and toks[-1].kind == "NUM":
+                    raise _refuse(label, text, "two numbers side by side; write 1000, not "
+                                               "1 000, and use * to multiply")
+                raise _refuse(label, text, f"the leading zero in {lit!r} is ambiguous (octal?); "
+                                           f"write {lit.lstrip('0') or '0'}")
             end = m.end()
             if end < n and text[end] == "_":
                 raise _refuse(label, text, "digit separators ('_') are not read; write 1000, "
@@ -221,7 +273,13 @@ def _tokenize(text: str, label: str, allow_comma: bool = False) -> list[_Tok]:
             value = float(lit)
             if math.isinf(value):
                 raise _refuse(label, text, f"{lit} overflows float64 (the largest is 1.8e308)")
-            toks.append(_Tok("NUM", value, i))
+            if value == 0.0 and re.search(r"[1-9]", lit.split("e")[0].split("E")[0]):
+                raise _refuse(label, text, f"{lit} underflows float64 (the smallest is "
+                                           "4.9e-324)")
+            after_power = (toks and toks[-1].kind == "OP" and toks[-1].value in ("**", "^")) or (
+                len(toks) >= 2 and toks[-1].kind == "OP" and toks[-1].value in "+-"
+                and toks[-2].kind == "OP" and toks[-2].value in ("**", "^"))
+            toks.append(_Tok("NUM", value, i, exponent=bool(after_power)))
             i = end
             continue
         if ch in _IDENT_START:
@@ -237,11 +295,6 @@ def _tokenize(text: str, label: str, allow_comma: bool = False) -> list[_Tok]:
             else:
                 toks.append(_Tok("NAME", "degree" if word == "°" else word, i))
             i = j
-            continue
-        if ch in _SUPERSCRIPTS:
-            toks.append(_Tok("OP", "**", i))
-            toks.append(_Tok("NUM", _SUPERSCRIPTS[ch], i))
-            i += 1
             continue
         if ch in "·×":
             toks.append(_Tok("OP", "*", i))
@@ -266,10 +319,6 @@ def _tokenize(text: str, label: str, allow_comma: bool = False) -> list[_Tok]:
             i += 1
             continue
         if ch == ",":
-            if allow_comma:
-                toks.append(_Tok("OP", ",", i))
-                i += 1
-                continue
             raise _refuse(label, text, "a comma is neither a decimal point nor a thousands "
                                        "separator here; write 1.5 or 1500")
         if ch == "#":
@@ -290,6 +339,8 @@ class _Parser:
         self.i = 0
         self.depth = 0
         self.ureg = registry()
+        self.had_inf = any(t.kind == "NUM" and math.isinf(t.value) for t in toks)
+        self.mixed_turns = False  # a sum of a term in revolutions and one not
 
     # -- helpers
     def peek(self):
@@ -308,6 +359,9 @@ class _Parser:
         if self.depth > MAX_DEPTH:
             raise self.fail(f"it is nested more than {MAX_DEPTH} levels deep")
 
+    def leave(self):
+        self.depth -= 1
+
     def is_op(self, tok, *ops):
         return tok is not None and tok.kind == "OP" and tok.value in ops
 
@@ -324,7 +378,6 @@ class _Parser:
 
     # -- grammar
     def parse(self):
-        self.had_inf = any(t.kind == "NUM" and math.isinf(t.value) for t in self.toks)
         if not self.toks:
             raise self.fail("it is empty")
         q = self.expr()
@@ -333,19 +386,29 @@ class _Parser:
             raise self.fail(f"unexpected {tok.value!r} at position {tok.pos + 1}")
         return q
 
-    def expr(self):
+    def parenthesised(self):
+        """``( expr )`` after the '(' was taken: one level of nesting."""
         self.enter()
+        q = self.expr()
+        self.leave()
+        if not self.is_op(self.peek(), ")"):
+            raise self.fail("a '(' is not closed")
+        self.take()
+        return q
+
+    def expr(self):
         q = self.term()
         while self.is_op(self.peek(), "+", "-"):
             op = self.take().value
             rhs = self.term()
+            if _has_turns(q) != _has_turns(rhs):
+                self.mixed_turns = True
             try:
                 q = q + rhs if op == "+" else q - rhs
             except Exception as exc:  # pint: DimensionalityError, OffsetUnitCalculusError
                 raise self.fail(f"cannot {'add' if op == '+' else 'subtract'} "
                                 f"{rhs.units} and {q.units}") from exc
             self.finite(q)
-        self.depth -= 1
         return q
 
     def term(self):
@@ -357,8 +420,11 @@ class _Parser:
             elif tok is not None and (tok.kind == "NAME" or self.is_op(tok, "(")):
                 op = "*"
             elif tok is not None and tok.kind == "NUM":
-                raise self.fail("two numbers side by side; write 1000, not 1 000, and use * "
-                                "to multiply")
+                after = self.toks[self.i + 1] if self.i + 1 < len(self.toks) else None
+                if not (tok.value == 1.0 and self.is_op(after, "/")):  # "2 1/s" is 2/s
+                    raise self.fail("two numbers side by side; write 1000, not 1 000, and use "
+                                    "* to multiply")
+                op = "*"
             else:
                 return q
             rhs = self.unary()
@@ -377,7 +443,7 @@ class _Parser:
             self.take()
             self.enter()
             q = self.unary()
-            self.depth -= 1
+            self.leave()
             return -q if tok.value == "-" else q
         return self.power()
 
@@ -411,12 +477,7 @@ class _Parser:
             value = tok.value
         elif self.is_op(tok, "("):
             self.take()
-            self.enter()
-            q = self.expr()
-            self.depth -= 1
-            if not self.is_op(self.peek(), ")"):
-                raise self.fail("a '(' is not closed")
-            self.take()
+            q = self.parenthesised()
             if not q.unitless:
                 raise self.fail("an exponent must be a plain number")
             value = float(q.magnitude)
@@ -440,13 +501,7 @@ class _Parser:
                 raise self.fail(f"unknown unit {tok.value!r}") from exc
             return self.ureg.Quantity(1.0, unit)
         if tok.value == "(":
-            self.enter()
-            q = self.expr()
-            self.depth -= 1
-            if not self.is_op(self.peek(), ")"):
-                raise self.fail("a '(' is not closed")
-            self.take()
-            return q
+            return self.parenthesised()
         raise self.fail(f"unexpected {tok.value!r} at position {tok.pos + 1}")
 
     def check_units(self, q):
@@ -456,8 +511,21 @@ class _Parser:
                                 f"reads powers up to {MAX_UNIT_POWER}")
 
 
-def _evaluate(text: str, label: str):
-    """Text -> (pint quantity with a float magnitude, whether any unit was named, unit text)."""
+@dataclass
+class _Reading:
+    """What the parser read: the quantity, whether a unit was named, the unit as typed, the
+    canonical names of every unit mentioned, and whether it adds revolutions to non-revolutions
+    (``1 turn/s + 1 Hz``, which pint sums through radians)."""
+
+    quantity: Any
+    named: bool
+    unit_text: str
+    names: list[str]
+    mixed_turns: bool
+
+
+def _evaluate(text: str, label: str) -> _Reading:
+    """Read ``text`` (see the module docstring for the grammar and the refusals)."""
     if not isinstance(text, str):
         raise InputError(f"{label}: expected text, got {type(text).__name__}")
     if len(text) > MAX_TEXT:
@@ -466,19 +534,34 @@ def _evaluate(text: str, label: str):
     toks = _tokenize(text, label)
     if not toks:
         raise _refuse(label, text, "it is empty")
-    if not any(t.kind == "NUM" for t in toks):
+    magnitudes = [i for i, t in enumerate(toks) if t.kind == "NUM" and not t.exponent]
+    if not magnitudes:
         if any(t.kind == "NAME" for t in toks):
             raise _refuse(label, text, f"it has a unit but no number; write 1 {text.strip()} "
                                        "if that is what you mean")
         raise _refuse(label, text, "it holds no number")
-    quantity = _Parser(toks, text, label).parse()
-    named = any(t.kind == "NAME" for t in toks)
+    parser = _Parser(toks, text, label)
+    quantity = parser.parse()
+    ureg = registry()
+    names = [_canonical(ureg, t.value) for t in toks if t.kind == "NAME"]
     unit_text = ""
-    if named and toks[0].kind == "NUM" and all(t.kind != "NUM" for t in toks[1:]):
-        unit_text = text[toks[1].pos:].strip() if len(toks) > 1 else ""
-        if unit_text.startswith(("*", "/")):
-            unit_text = ""
-    return quantity, named, unit_text
+    first = magnitudes[0]
+    signs_only = all(t.kind == "OP" and t.value in "+-" for t in toks[:first])
+    if (names and len(magnitudes) == 1 and signs_only and first + 1 < len(toks)
+            and toks[first + 1].kind == "NAME"):
+        unit_text = text[toks[first + 1].pos:].strip()
+    return _Reading(quantity, bool(names), unit_text, names, parser.mixed_turns)
+
+
+def _has_turns(quantity) -> bool:
+    return any(_unit_class(n) == "turn" for n in _unit_names(quantity.units))
+
+
+def _canonical(ureg, name: str) -> str:
+    try:
+        return ureg.get_name(name)
+    except Exception:
+        return name
 
 
 # --------------------------------------------------------------------------------------------
@@ -486,9 +569,11 @@ def _evaluate(text: str, label: str):
 
 
 def _dimension_message(label: str, dim: Dim, quantity) -> InputError:
+    got = f"{format_quantity(quantity)} ({quantity.dimensionality})"
+    if dim.kind == "dimensionless":
+        return InputError(f"{label} must be a pure number; got {got}")
     article = "an" if dim.name[0] in "aeiou" else "a"
-    return InputError(f"{label} must be {article} {dim.name} {dim.display}; got "
-                      f"{format_quantity(quantity)} ({quantity.dimensionality})")
+    return InputError(f"{label} must be {article} {dim.name} {dim.display}; got {got}")
 
 
 def format_quantity(quantity) -> str:
@@ -502,30 +587,44 @@ def format_quantity(quantity) -> str:
     return f"{shown} {unit}" if unit != "dimensionless" else shown
 
 
-def _normalise(quantity, dim: Dim, label: str):
+def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
+               mixed_turns: bool = False):
     """Check ``quantity`` has dimension ``dim``; return it in the unit the physics works in.
 
-    Angular rates come back in rad/s and cycle rates in Hz, applying the 2 pi where revolutions
-    meet cycles; the other dimensions come back unchanged (pint converts them correctly).
+    ``names`` are the units the user mentioned (all of them, not only those pint kept after
+    adding: ``1 rad/s + 1 Hz`` must not pass as 2 rad/s). Angular rates come back in rad/s and
+    cycle rates in Hz, applying the 2 pi where revolutions meet cycles; the other dimensions
+    come back unchanged (pint converts them correctly).
     """
     ureg = registry()
-    names = _unit_names(quantity.units)
-    if dim.kind in ("dimensionless", "angle"):
+    classes = {_unit_class(n) for n in (names if names is not None
+                                        else _unit_names(quantity.units))}
+    if dim.kind == "dimensionless":
+        if not quantity.dimensionless:
+            raise _dimension_message(label, dim, quantity)
+        if classes & {"angle", "turn"}:
+            raise InputError(f"{label} is a pure number, not an angle; got "
+                             f"{format_quantity(quantity)}")
+        return quantity
+    if dim.kind == "angle":
         if not quantity.dimensionless:
             raise _dimension_message(label, dim, quantity)
         return quantity
     if not quantity.check(dim.check):
         raise _dimension_message(label, dim, quantity)
     if dim.kind == "angular-rate":
-        if any(n in _CYCLE_ONLY_UNITS for n in names):
+        if "cycle" in classes:
             raise InputError(f"{label} is an angular rate; give it in rad/s, deg/s, rpm or "
                              f"rev/s, not Hz (a frequency in cycles)")
         return quantity.to(dim.si.replace("^", "**"))
     if dim.kind == "cycle-rate":
-        if any(_is_angle_unit(n) for n in names):
+        if "angle" in classes:
             raise InputError(f"{label} is a frequency in cycles; give it in Hz, 1/s, 1/min or "
                              f"rpm, not in radians or degrees per time (that is omega)")
-        if any(n in _TURN_UNITS for n in names):
+        if mixed_turns:
+            raise InputError(f"{label}: a sum of revolutions and Hz or 1/s is ambiguous; "
+                             "give the frequency in one kind of unit")
+        if "turn" in classes:
             return ureg.Quantity(quantity.to("turn/s").magnitude, "Hz")
         return quantity.to("Hz")
     return quantity
@@ -587,21 +686,24 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     >>> p.si, p.assumed_si, p.unit_text
     (2000.0, False, 'kN/m')
     """
-    quantity, named, unit_text = _evaluate(text, label)
+    reading = _evaluate(text, label)
+    quantity = reading.quantity
     assumed = False
-    if not named and dim.kind != "dimensionless":
+    if not reading.named and dim.kind != "dimensionless":
         if strict:
             raise InputError(f"{label}: {_show(text)} has no unit and --strict-units is on; "
                              f"write it with a unit, e.g. {text.strip()} {dim.si}")
         quantity = registry().Quantity(quantity.magnitude, dim.si.replace("^", "**"))
         assumed = True
-    quantity = _normalise(quantity, dim, label)
+    quantity = _normalise(quantity, dim, label, reading.names if reading.named else None,
+                          reading.mixed_turns)
     si = to_si(quantity, dim, label)
     _check_value(si, dim, label, allow_inf, constraint, quantity)
-    return Parsed(quantity, float(si), assumed, unit_text, text)
+    return Parsed(quantity, float(si), assumed, reading.unit_text, text)
 
 
 _VECTOR_RE = re.compile(r"^\s*[\(\[]([^\)\]]*)[\)\]]\s*(.*)$")
+_COMPONENT_RE = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 
 
 def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
@@ -624,11 +726,15 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
     if len(text) > MAX_TEXT:
         raise InputError(f"{label}: the quantity is {len(text)} characters long; dyncalc reads "
                          f"at most {MAX_TEXT}")
+    _check_characters(text, label)
     if "," not in text:
         if allow_scalar:
             return parse_quantity(text, dim, label=label, strict=strict, constraint=constraint)
         raise InputError(f"{label} must be a vector of {size} components, e.g. '0,0,2 {dim.si}';"
                          f" got {_show(text)}")
+    if _HEX_RE.search(text):
+        raise _refuse(label, text, "hexadecimal, octal and binary literals are not read; write "
+                                   "the number in decimal")
     m = _VECTOR_RE.match(text)
     if m:
         parts = m.group(1).split(",")
@@ -636,7 +742,7 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
     else:
         parts = text.split(",")
         last = parts[-1].strip()
-        num = re.match(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", last)
+        num = _COMPONENT_RE.match(last)
         if num is None:
             raise _refuse(label, text, f"component {len(parts)} is not a number")
         parts[-1] = num.group(0)
@@ -648,7 +754,10 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
         part = part.strip()
         if not part:
             raise _refuse(label, text, f"component {index} is empty")
-        toks = _tokenize(part, label)
+        try:
+            toks = _tokenize(part, label)
+        except ReadError as exc:
+            raise _refuse(label, text, f"component {index}: {exc.why}") from None
         sign = 1.0
         while toks and toks[0].kind == "OP" and toks[0].value in "+-":
             sign = -sign if toks[0].value == "-" else sign
@@ -656,8 +765,12 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
         if len(toks) != 1 or toks[0].kind != "NUM":
             raise _refuse(label, text, f"component {index} ({part!r}) is not a plain number")
         values.append(sign * toks[0].value)
+    names = None
     if unit_text:
-        unit = parse_unit(unit_text, label=label)
+        try:
+            unit, names = _read_unit(unit_text, label)
+        except ReadError as exc:
+            raise _refuse(label, text, exc.why) from None
         named = True
     else:
         if strict and dim.kind != "dimensionless":
@@ -666,7 +779,7 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
         unit = registry().parse_units(dim.si.replace("^", "**")) if dim.si else None
         named = False
     quantity = registry().Quantity(np.array(values, dtype=float), unit)
-    quantity = _normalise(quantity, dim, label)
+    quantity = _normalise(quantity, dim, label, names)
     si = np.asarray(to_si(quantity, dim, label), dtype=float)
     if np.any(np.isinf(si)):
         raise InputError(f"{label} must be finite; got {format_quantity(quantity)}")
@@ -674,39 +787,48 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
     return Parsed(quantity, si, not named and dim.kind != "dimensionless", unit_text, text)
 
 
+def _read_unit(text: str, label: str):
+    """(pint unit, unit names mentioned) of a unit text such as ``kN/m`` or ``1/s``."""
+    if not isinstance(text, str) or not text.strip():
+        raise _refuse(label, str(text), "no unit is given")
+    _check_characters(text, label)
+    stripped = text.strip()
+    probe = stripped if _NUMBER_RE.match(stripped) else "1 " + stripped
+    try:
+        reading = _evaluate(probe, label)
+    except ReadError as exc:
+        raise _refuse(label, text, exc.why) from None
+    if reading.quantity.magnitude != 1.0:
+        raise _refuse(label, text, "give a unit, not a quantity")
+    return reading.quantity.units, reading.names
+
+
 def parse_unit(text: str, *, label: str = "unit"):
     """Read a unit (``"kN/m"``, ``"1/s"``, ``"rpm"``) and return the pint unit.
 
     A quantity with a magnitude other than 1 (``"2 m"``) is refused.
     """
-    if isinstance(text, str) and text.strip() and not _NUMBER_RE.match(text.strip()):
-        probe = "1 " + text
-    else:
-        probe = text
-    quantity, _named, _ut = _evaluate(probe, label)
-    if quantity.magnitude != 1.0:
-        raise _refuse(label, text, "give a unit, not a quantity")
-    return quantity.units
+    return _read_unit(text, label)[0]
 
 
-def convert(si_value, dim: Dim, unit_text: str, *, label: str = "unit"):
+def convert(si_value, dim: Dim, unit_text: str, *, label: str = "unit", name: str = "it"):
     """Express an SI magnitude of ``dim`` in ``unit_text``; returns the converted magnitude.
 
     The rate rules of SPEC.md apply: an angular rate cannot be shown in Hz, a cycle rate cannot
     be shown in rad/s or deg/s, and ``rpm`` is one revolution (one cycle) per minute for both.
+    ``name`` is the result's name, for the messages.
     """
     ureg = registry()
-    unit = parse_unit(unit_text, label=label)
-    names = _unit_names(unit)
+    unit, names = _read_unit(unit_text, label)
+    classes = {_unit_class(n) for n in names}
     if dim.kind == "cycle-rate":
-        if any(_is_angle_unit(n) for n in names):
-            raise InputError(f"{label}: a frequency in cycles cannot be shown in {unit_text}; "
-                             f"use omega for rad/s")
-        base = ureg.Quantity(si_value, "turn/s" if any(n in _TURN_UNITS for n in names) else "Hz")
+        if "angle" in classes:
+            raise InputError(f"{label}: {name} is a frequency in cycles; use omega for "
+                             f"{unit_text}")
+        base = ureg.Quantity(si_value, "turn/s" if "turn" in classes else "Hz")
     elif dim.kind == "angular-rate":
-        if any(n in _CYCLE_ONLY_UNITS for n in names):
-            raise InputError(f"{label}: an angular rate cannot be shown in {unit_text}; "
-                             f"use f for Hz")
+        if "cycle" in classes:
+            raise InputError(f"{label}: {name} is an angular rate; use f for {unit_text}")
         base = ureg.Quantity(si_value, dim.si.replace("^", "**"))
     else:
         base = ureg.Quantity(si_value, dim.si.replace("^", "**") if dim.si else "")
@@ -714,5 +836,5 @@ def convert(si_value, dim: Dim, unit_text: str, *, label: str = "unit"):
         return base.to(unit).magnitude
     except Exception as exc:  # pint's DimensionalityError
         article = "an" if dim.name[0] in "aeiou" else "a"
-        raise InputError(f"{label}: {unit_text} is not a unit of {dim.display}; the result is "
+        raise InputError(f"{label}: {unit_text} is not a unit of {dim.display}; {name} is "
                          f"{article} {dim.name}") from exc

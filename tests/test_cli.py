@@ -191,7 +191,7 @@ def test_unit_conversion_of_a_result():
 
 
 @pytest.mark.parametrize("spec, message", [
-    ("k_eq=kg", "Error: --unit k_eq: kg is not a unit of [force]/[length]; the result is a "
+    ("k_eq=kg", "Error: --unit k_eq: kg is not a unit of [force]/[length]; k_eq is a "
                 "stiffness"),
     ("omega=rad/s", "Error: --unit omega: there is no result named 'omega'; the results are "
                     "k_eq"),
@@ -325,7 +325,8 @@ def test_internal_error_one_line_and_debug_traceback(monkeypatch):
                                    "comma is neither a decimal point nor a thousands separator "
                                    "here; write 1.5 or 1500"),
     (["scenes", "no-such-scene"], "Error: there is no scene 'no-such-scene'; the scenes are: "
-                                  "none yet: the catalog is empty"),
+                                  + ", ".join(__import__("dyncalc.scenes", fromlist=["x"])
+                                              .scene_names())),
 ])
 def test_errors_are_one_line_exit_2(args, message):
     result = run(*args)
@@ -377,11 +378,15 @@ def test_no_color_on_a_terminal(monkeypatch):
 
 # --- scenes ----------------------------------------------------------------------------------
 
-def test_scenes_lists_the_empty_catalog():
+def test_scenes_lists_the_catalog():
+    from dyncalc.scenes import catalog
+
     result = run("scenes")
-    assert (result.exit_code, result.stdout) == (0, "The scene catalog is empty in this "
-                                                    "version.\n")
-    assert json.loads(run("scenes", "--json").stdout) == {"scenes": []}
+    assert result.exit_code == 0
+    lines = result.stdout.splitlines()
+    assert len(lines) == 2 * len(catalog())
+    assert lines[0].split()[0] == "mass-spring"
+    assert lines[1].strip() == "k [force]/[length], m [mass], zeta dimensionless?"
 
 
 def test_scenes_reads_the_registry(monkeypatch):
@@ -395,12 +400,14 @@ def test_scenes_reads_the_registry(monkeypatch):
         compute="math:sqrt", equation="m x'' + k x = 0", formula="omega^2 = k/m",
         reference="E5.11", example="dyncalc natural-frequency --k 100N/m --m 2kg")
     monkeypatch.setitem(registry._SCENES, scene.name, scene)
-    listing = run("scenes").stdout
-    assert listing == ("test-oscillator  a block on a spring  [k [force]/[length], "
-                       "m [mass]=1 kg]\n")
+    listing = run("scenes").stdout.splitlines()
+    at = [line.split()[0] for line in listing].index("test-oscillator")
+    assert listing[at].split(None, 1)[1].strip() == "a block on a spring"
+    assert listing[at + 1].strip() == "k [force]/[length], m [mass] = 1 kg"
     detail = json.loads(run("scenes", "test-oscillator", "--json").stdout)
     assert detail["params"][0] == {"name": "k", "dimension": "[force]/[length]", "unit": "N/m",
-                                   "default": None, "description": "spring stiffness"}
+                                   "choices": None, "default": None, "required": True,
+                                   "description": "spring stiffness"}
     assert "equation of motion: m x'' + k x = 0" in run("scenes", "test-oscillator").stdout
     assert scene.function() is math.sqrt
 

@@ -21,15 +21,20 @@ def _describe(scene) -> dict:
         "formula": scene.formula,
         "reference": scene.reference,
         "example": scene.example,
-        "constraints": list(scene.constraints),
-        "params": [{"name": p.name, "dimension": p.dim.display, "unit": p.dim.si,
-                    "default": p.default, "description": p.description} for p in scene.params],
+        "constraints": [c.text for c in scene.constraints],
+        "one_of": [list(group) for group in scene.one_of],
+        "methods": ["auto", *scene.methods],
+        "params": [_describe_param(p) for p in scene.params],
     }
 
 
-def _params_line(scene) -> str:
-    return ", ".join(f"{p.name} {p.dim.display}" + (f"={p.default}" if p.default else "")
-                     for p in scene.params)
+def _describe_param(p) -> dict:
+    required = p.default is None and not p.optional
+    return {"name": p.name,
+            "dimension": p.dim.display if p.dim is not None else "choice",
+            "unit": p.dim.si if p.dim is not None else "",
+            "choices": list(p.choices) if p.choices else None,
+            "default": p.default, "required": required, "description": p.description}
 
 
 @click.command("scenes")
@@ -57,10 +62,18 @@ def scenes(name, as_json, debug):
         lines = [f"{scene.name}: {scene.summary}", f"figure: {scene.figure}",
                  f"equation of motion: {scene.equation}", f"result: {scene.formula}",
                  "parameters:"]
-        lines += [f"  {p.name}  {p.dim.display}  {p.description}"
-                  + (f" (default {p.default})" if p.default else "") for p in scene.params]
+        width = max(len(p.name) for p in scene.params)
+        for p in scene.params:
+            kind = p.dim.display if p.dim is not None else "one of " + ", ".join(p.choices)
+            note = (f" (default {p.default})" if p.default is not None
+                    else " (optional)" if p.optional else "")
+            lines.append(f"  {p.name.ljust(width)}  {kind}: {p.description}{note}")
+        for group in scene.one_of:
+            lines.append("give one of: " + ", ".join(group))
         if scene.constraints:
-            lines.append("constraints: " + ", ".join(scene.constraints))
+            lines.append("constraints: " + ", ".join(c.text for c in scene.constraints))
+        if scene.methods:
+            lines.append("methods: auto, " + ", ".join(scene.methods))
         lines += [f"reference: {scene.reference}", f"example: {scene.example}"]
         click.echo("\n".join(lines))
         return 0
@@ -73,7 +86,8 @@ def scenes(name, as_json, debug):
         return 0
     width = max(len(n) for n in scenes_)
     for scene in scenes_.values():
-        click.echo(f"{scene.name.ljust(width)}  {scene.summary}  [{_params_line(scene)}]")
+        click.echo(f"{scene.name.ljust(width)}  {scene.summary}")
+        click.echo(f"{' ' * width}  {scene.signature()}")
     return 0
 
 
