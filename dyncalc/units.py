@@ -254,7 +254,8 @@ def _tokenize(text: str, label: str) -> list[_Tok]:
             continue
         if ch.isdigit() and not ch.isascii():
             raise _refuse(label, text, f"the digit {ch!r} is not an ASCII digit 0-9")
-        if ch.isascii() and ch.isdigit() or (ch == "." and i + 1 < n and text[i + 1].isdigit()):
+        if ch.isascii() and ch.isdigit() or (ch == "." and i + 1 < n
+                                             and text[i + 1] in "0123456789"):
             m = _NUMBER_RE.match(text, i)
             lit = m.group(0)
             if _HEX_RE.match(text, i):

@@ -113,7 +113,8 @@ def output_options(command):
                      help="Compare result NAME with your answer; exit 1 if it differs by more "
                           "than --rtol (repeatable)."),
         click.option("--rtol", type=float, default=None, callback=_positive_rtol,
-                     help="Relative tolerance of --check (default 1e-2)."),
+                     help="Relative tolerance: of --check (default 1e-2) and of the model that "
+                          "computes the result (default 1e-9)."),
         click.option("--explain", is_flag=True,
                      help="Show the formula, the values substituted and the assumptions."),
         click.option("--strict-units", is_flag=True,

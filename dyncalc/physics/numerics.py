@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 __all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm", "half_complement_sin",
-           "pendulum_period_factor", "sqrt_ratio"]
+           "pendulum_period_factor", "sqrt_ratio", "Wide"]
 
 
 def two_product(a: float, b: float) -> tuple[float, float]:
@@ -106,6 +106,62 @@ def sqrt_ratio(a: float, b: float) -> float:
         ma *= 2.0
         shift -= 1
     return math.ldexp(math.sqrt(ma / mb), shift // 2)
+
+
+class Wide:
+    """A positive (or zero) number ``mantissa * 2**exponent`` with an unbounded exponent.
+
+    The mantissa is kept in [0.5, 1) (or is 0); products, quotients and sums round the
+    mantissa once, as a float operation would, and never overflow or underflow. Sums align
+    the smaller term to the larger exponent, so a term below 2**-1074 of the other is dropped,
+    as float addition would round it away. Used where a formula is a ratio of sums of products
+    of the inputs (the rigid-body scenes); :func:`monomial` is the product-only special case.
+
+    >>> float((Wide(1e200) * Wide(1e200) + Wide(1e300) * Wide(1e100)) / Wide(1e300))
+    2e+100
+    >>> float(Wide(1e-300).sqrt() * Wide(1e-300).sqrt())
+    1e-300
+    """
+
+    __slots__ = ("m", "e")
+
+    def __init__(self, value: float = 0.0, exponent: int = 0):
+        m, e = math.frexp(value)
+        self.m, self.e = m, (e + exponent if m else 0)
+
+    def __mul__(self, other):
+        other = other if isinstance(other, Wide) else Wide(other)
+        return Wide(self.m * other.m, self.e + other.e)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        other = other if isinstance(other, Wide) else Wide(other)
+        return Wide(self.m / other.m, self.e - other.e)
+
+    def __add__(self, other):
+        other = other if isinstance(other, Wide) else Wide(other)
+        if not other.m:
+            return self
+        if not self.m:
+            return other
+        top = max(self.e, other.e)
+        return Wide(math.ldexp(self.m, self.e - top) + math.ldexp(other.m, other.e - top),
+                     top)
+
+    __radd__ = __add__
+
+    def sqrt(self) -> Wide:
+        m, e = self.m, self.e
+        if e % 2:
+            m, e = 2.0 * m, e - 1
+        return Wide(math.sqrt(m), e // 2)
+
+    def __float__(self) -> float:
+        try:
+            return math.ldexp(self.m, self.e)
+        except OverflowError:
+            return math.inf
 
 
 def parallel_sum(values) -> float:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
-from .numerics import half_complement_sin, pendulum_period_factor, sqrt_ratio
+from .numerics import half_complement_sin, monomial, pendulum_period_factor, sqrt_ratio
 from .outcome import Outcome, periodic
 
 __all__ = ["mass_spring", "torsional", "pendulum", "physical_pendulum", "large_amplitude",
@@ -219,12 +219,15 @@ def physical_pendulum(m, a, g, J=None, J_A=None, amplitude=None, method: str = "
     >>> round(rod.values["omega"].magnitude ** 2, 12)  # g / (2/3)
     14.715
     """
-    m_, a_ = _si(m, "kg"), _si(a, "m")
-    ja = _si(J_A, "kg*m**2") if J_A is not None else _si(J, "kg*m**2") + m_ * a_ * a_
-    if J_A is not None and ja < m_ * a_ * a_ * (1 - 1e-12):
-        raise PhysicsError(f"J_A = {ja:.6g} kg*m^2 is less than m a^2 = {m_ * a_ * a_:.6g} "
+    m_, a_, g_ = _si(m, "kg"), _si(a, "m"), _si(g, "m/s**2")
+    steiner = monomial(1.0, [(m_, 1), (a_, 2)])                  # m a^2, no overflow midway
+    ja = _si(J_A, "kg*m**2") if J_A is not None else _si(J, "kg*m**2") + steiner
+    if J_A is not None and ja < steiner * (1 - 1e-12):
+        raise PhysicsError(f"J_A = {ja:.6g} kg*m^2 is less than m a^2 = {steiner:.6g} "
                            "kg*m^2, which no body can have (J_A = J + m a^2 with J >= 0)")
-    omega0 = sqrt_ratio(m_ * _si(g, "m/s**2") * a_, ja)
+    if not math.isfinite(ja):
+        raise PhysicsError("J_A = J + m a^2 overflows float64")
+    omega0 = math.sqrt(monomial(1.0, [(m_, 1), (g_, 1), (a_, 1), (ja, -1)]))
     out = large_amplitude(omega0, amplitude, method, rtol, what="physical pendulum")
     from ..units import Q_
 

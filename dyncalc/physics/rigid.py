@@ -1,0 +1,453 @@
+"""Natural frequencies of rigid-body set-ups: rolling bodies, drums, pulleys, compound pendulums.
+
+Pure functions on pint quantities (plain floats for pure numbers such as ``kappa`` and ``mu``)
+returning an :class:`~dyncalc.physics.outcome.Outcome`. Every formula is a ratio of sums of
+products of the inputs; it is evaluated with :class:`~dyncalc.physics.numerics.Wide` numbers
+(a float mantissa with a separate binary exponent), so no product or sum overflows or
+underflows midway: masses of 1e200 kg on springs of 1e200 N/m give the right frequency, not
+``inf/inf``. In the ordinary
+range the operations and their roundings are exactly those of the naive float formula.
+
+``kappa`` is the body's shape factor ``J_C / (m r^2)``: solid sphere 2/5, hollow sphere 2/3,
+solid cylinder (disk) 1/2, hollow cylinder or hoop 1.
+
+References
+----------
+.. [1] Gross, Hauger, Schröder, Wall, Govindjee, *Engineering Mechanics 3: Dynamics*, 2nd ed.,
+   Springer 2013, Chapters 3 to 5.
+"""
+from __future__ import annotations
+
+import math
+
+from ..errors import PhysicsError
+from .numerics import Wide
+from .outcome import Outcome, periodic
+
+__all__ = ["rolling_disk_spring", "rolling_in_track", "drum_block_spring", "board_on_drums",
+           "clock_pendulum", "pulley_block_spring", "disk_torsion_offset_mass",
+           "wheel_on_moving_beam", "angled_member", "ANGLED_MEMBER_FACTOR"]
+
+#: ``sqrt(sqrt(65) / 14)``, correctly rounded (mpmath: 0.758864647647982349822...): the
+#: angled member's ``omega / sqrt(g / l)``.
+ANGLED_MEMBER_FACTOR = 0.7588646476479823
+
+
+def _si(quantity, unit: str) -> Wide:
+    return Wide(float(quantity.to(unit).magnitude))
+
+
+def _check_kappa(kappa: float) -> float:
+    kappa = float(kappa)
+    if not kappa >= 0.0 or math.isinf(kappa):
+        raise PhysicsError(f"kappa = J_C/(m r^2) must be a finite number >= 0; got {kappa!r}")
+    return kappa
+
+
+def _outcome(omega_squared: Wide, **extra) -> Outcome:
+    values = periodic(float(omega_squared.sqrt()))
+    if extra:
+        from ..units import Q_
+
+        for name, (value, unit) in extra.items():
+            values[name] = Q_(float(value), unit)
+    return Outcome(values)
+
+
+def rolling_disk_spring(k, m, kappa: float = 0.5) -> Outcome:
+    """A round body rolling without slipping on level ground, held by a spring at its centre.
+
+    .. math:: \\omega^2 = \\frac{k}{(1 + \\kappa)\\, m}
+
+    The kinetic energy of the rolling body is ``(1 + kappa) m x'^2 / 2`` (translation plus
+    rotation at ``x'/r``), the spring's energy ``k x^2 / 2``; the radius cancels.
+
+    Parameters
+    ----------
+    k : Quantity
+        Stiffness of the spring attached at the centre ``[force]/[length]``.
+    m : Quantity
+        Mass of the body ``[mass]``.
+    kappa : float
+        Shape factor ``J_C / (m r^2)`` (dimensionless, >= 0); 0.5 for a solid cylinder (disk).
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s).
+
+    Notes
+    -----
+    Rolling needs enough friction; ``kappa = 0`` is a block sliding without friction.
+
+    Examples
+    --------
+    Example 4.8 of [1]: a disk gives ``omega^2 = 2k/(3m)``:
+
+    >>> from dyncalc.units import Q_
+    >>> rolling_disk_spring(Q_(300, "N/m"), Q_(2, "kg")).values["omega"].magnitude  # rad/s
+    10.0
+    """
+    kappa = _check_kappa(kappa)
+    mass = _si(m, "kg")
+    return _outcome(_si(k, "N/m") / (mass + kappa * mass))
+
+
+def rolling_in_track(R, r, g, kappa: float = 0.5) -> Outcome:
+    """A round body rolling without slipping inside a circular track, about the bottom.
+
+    .. math:: \\omega^2 = \\frac{g}{(1 + \\kappa)(R - r)}
+
+    The centre of the body moves on a circle of radius ``R - r``; rolling ties the body's
+    angular velocity to the centre's speed, so the kinetic energy is
+    ``(1 + kappa) m (R - r)^2 phi'^2 / 2`` and the potential ``m g (R - r)(1 - cos phi)``.
+
+    Parameters
+    ----------
+    R : Quantity
+        Radius of the track ``[length]``.
+    r : Quantity
+        Radius of the body ``[length]``, ``r < R``.
+    g : Quantity
+        Gravitational acceleration ``[length]/[time]^2``.
+    kappa : float
+        Shape factor ``J_C / (m r^2)`` (dimensionless, >= 0); 0.5 for a solid cylinder.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s), for small oscillations.
+
+    Notes
+    -----
+    ``R - r`` is taken in the unit ``R`` was given in, so a body nearly as large as its
+    track keeps the digits of the gap. ``kappa = 0`` is a bead sliding without friction: a
+    simple pendulum of length ``R - r``.
+
+    Examples
+    --------
+    Examples 4.9 and 5.17 of [1] (``l = R - r``), a solid sphere:
+
+    >>> from dyncalc.units import Q_
+    >>> out = rolling_in_track(Q_(1, "m"), Q_(0.2, "m"), Q_(9.80665, "m/s^2"), 0.4)
+    >>> round(out.values["omega"].magnitude, 12)  # sqrt(9.80665 / (1.4 * 0.8)) rad/s
+    2.959043342028
+    """
+    kappa = _check_kappa(kappa)
+    gap = float((R - r).to("m").magnitude)
+    if not gap > 0.0:
+        from ..units import format_quantity
+
+        raise PhysicsError(f"the body (r = {format_quantity(r)}) must be smaller than the track "
+                           f"it rolls in (R = {format_quantity(R)})")
+    length = Wide(gap)
+    return _outcome(_si(g, "m/s**2") / (length + kappa * length))
+
+
+def drum_block_spring(k, m, M) -> Outcome:
+    """A block on a rope wound on a drum (a homogeneous disk), held by a spring.
+
+    .. math:: \\omega^2 = \\frac{2k}{M + 2m}
+
+    The drum turns at ``x'/R`` when the block moves at ``x'``, so its kinetic energy
+    ``(M R^2/2)(x'/R)^2/2 = M x'^2/4`` does not depend on ``R``: the drum radius cancels.
+
+    Parameters
+    ----------
+    k : Quantity
+        Spring stiffness ``[force]/[length]``.
+    m : Quantity
+        Mass of the block ``[mass]``.
+    M : Quantity
+        Mass of the drum, a homogeneous disk ``[mass]``.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s).
+
+    Examples
+    --------
+    Example 5.12 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = drum_block_spring(Q_(2, "kN/m"), Q_(4, "kg"), Q_(10, "kg"))
+    >>> round(out.values["omega"].magnitude, 12)  # sqrt(4000 / 18) rad/s
+    14.907119849999
+    """
+    return _outcome(2.0 * _si(k, "N/m") / (_si(M, "kg") + 2.0 * _si(m, "kg")))
+
+
+def board_on_drums(mu: float, a, g, sense: str = "inward") -> Outcome:
+    """A board lying on two drums that turn in opposite senses, sliding on them with friction.
+
+    .. math:: \\omega^2 = \\frac{2 \\mu g}{a}
+
+    With the board's centre at ``x`` from midway between the drums, the drum it is nearer
+    carries the weight share ``1/2 + x/a`` and the other ``1/2 - x/a``; the sliding friction
+    forces differ by ``2 mu m g x / a``. If the drums' tops move toward each other (inward),
+    that difference pushes the board back: ``x'' + (2 mu g / a) x = 0``. The mass and the
+    drums' speed cancel (as long as the drums slide under the board all the time).
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of kinetic friction between board and drums (dimensionless, > 0).
+    a : Quantity
+        Distance between the drum axes ``[length]``.
+    g : Quantity
+        Gravitational acceleration ``[length]/[time]^2``.
+    sense : {"inward", "outward"}
+        Turning sense of the drums: ``inward`` (tops moving toward each other, the default)
+        or ``outward`` (tops moving apart).
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s).
+
+    Raises
+    ------
+    PhysicsError
+        For the outward sense: the board does not oscillate, any offset grows like
+        ``exp(lambda t)`` with ``lambda = sqrt(2 mu g / a)``, which the message gives.
+
+    Examples
+    --------
+    Example 5.13 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = board_on_drums(0.4, Q_(0.8, "m"), Q_(9.80665, "m/s^2"))
+    >>> round(out.values["omega"].magnitude, 12)  # sqrt(2 * 0.4 * 9.80665 / 0.8) rad/s
+    3.131557120667
+    """
+    if sense not in ("inward", "outward"):
+        raise PhysicsError(f"the drums turn inward or outward; got {sense!r}")
+    if not mu > 0.0:
+        raise PhysicsError(f"mu must be positive; got {mu!r}")
+    rate_squared = 2.0 * Wide(float(mu)) * _si(g, "m/s**2") / _si(a, "m")
+    if sense == "outward":
+        rate = float(rate_squared.sqrt())
+        raise PhysicsError(
+            "with the drums turning outward (tops moving apart) the board does not oscillate: "
+            "friction pushes it further from the middle and it runs off exponentially, any "
+            "offset growing like exp(lambda t) with lambda = sqrt(2 mu g / a) = "
+            f"{rate:.6g} 1/s; with sense=inward it oscillates at omega = {rate:.6g} rad/s")
+    return _outcome(rate_squared)
+
+
+def clock_pendulum(m, l, M, r, a, g) -> Outcome:
+    """A clock pendulum: a uniform rod pivoted at one end carrying a disk on it.
+
+    .. math:: J_A = \\frac{m l^2}{3} + \\frac{M (r^2 + 2 a^2)}{2}, \\qquad
+              \\omega^2 = \\frac{(m l + 2 M a)\\, g}{2 J_A}
+
+    Parameters
+    ----------
+    m : Quantity
+        Mass of the rod ``[mass]``.
+    l : Quantity
+        Length of the rod ``[length]``.
+    M : Quantity
+        Mass of the disk (homogeneous) ``[mass]``.
+    r : Quantity
+        Radius of the disk ``[length]``.
+    a : Quantity
+        Distance from the pivot to the disk's centre ``[length]``.
+    g : Quantity
+        Gravitational acceleration ``[length]/[time]^2``.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s) for small swings and ``J_A``
+    (kg*m^2), the moment of inertia about the pivot.
+
+    Examples
+    --------
+    Example 5.15 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = clock_pendulum(Q_(0.5, "kg"), Q_(1, "m"), Q_(2, "kg"), Q_(0.1, "m"),
+    ...                      Q_(0.9, "m"), Q_(9.80665, "m/s^2"))
+    >>> round(out.values["omega"].magnitude, 12)  # rad/s
+    3.345056926893
+    >>> round(out.values["J_A"].magnitude, 12)  # kg*m^2
+    1.796666666667
+    """
+    m_, l_, M_ = _si(m, "kg"), _si(l, "m"), _si(M, "kg")
+    r_, a_ = _si(r, "m"), _si(a, "m")
+    inertia = m_ * l_ * l_ / 3.0 + M_ * (r_ * r_ + 2.0 * a_ * a_) / 2.0
+    moment = (m_ * l_ + 2.0 * M_ * a_) * _si(g, "m/s**2")
+    return _outcome(moment / (2.0 * inertia), J_A=(inertia, "kg*m**2"))
+
+
+def pulley_block_spring(k, m, M) -> Outcome:
+    """A loose pulley (a homogeneous disk) held by a spring, with a block moving twice as far.
+
+    .. math:: \\omega^2 = \\frac{k}{4 m + 3 M / 2}
+
+    The pulley rolls on the fixed strand of its rope: its centre moves ``x``, it turns at
+    ``x'/r`` (kinetic energy ``3 M x'^2 / 4``), and the block on the free strand moves ``2x``
+    (kinetic energy ``2 m x'^2``); the spring on the pulley's axle stores ``k x^2 / 2``.
+
+    Parameters
+    ----------
+    k : Quantity
+        Spring stiffness ``[force]/[length]``.
+    m : Quantity
+        Mass of the block ``[mass]``.
+    M : Quantity
+        Mass of the pulley, a homogeneous disk ``[mass]``.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s).
+
+    Examples
+    --------
+    Example 5.16 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = pulley_block_spring(Q_(1, "kN/m"), Q_(3, "kg"), Q_(4, "kg"))
+    >>> round(out.values["omega"].magnitude, 12)  # sqrt(1000 / 18) rad/s
+    7.453559924999
+    """
+    return _outcome(_si(k, "N/m") / (4.0 * _si(m, "kg") + 1.5 * _si(M, "kg")))
+
+
+def disk_torsion_offset_mass(M, R, m, r, a, kt, g) -> Outcome:
+    """A disk on a torsion shaft carrying a small disk whose centre hangs below the axis.
+
+    .. math:: \\omega^2 = \\frac{k_t + m g a}{M R^2/2 + m (r^2/2 + a^2)}
+
+    The shaft and the weight of the offset disk both pull back; the moment of inertia about
+    the axis (reported as ``J_A``) is the large disk's plus the small disk's by the
+    parallel-axis theorem.
+
+    Parameters
+    ----------
+    M : Quantity
+        Mass of the large disk ``[mass]``.
+    R : Quantity
+        Radius of the large disk ``[length]``.
+    m : Quantity
+        Mass of the small disk ``[mass]``.
+    r : Quantity
+        Radius of the small disk ``[length]``.
+    a : Quantity
+        Distance of the small disk's centre below the axis ``[length]`` (>= 0).
+    kt : Quantity
+        Torsional stiffness of the shaft ``[force]*[length]/[angle]`` (>= 0).
+    g : Quantity
+        Gravitational acceleration ``[length]/[time]^2``.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s) for small oscillations and ``J_A``
+    (kg*m^2), the moment of inertia about the axis.
+
+    Raises
+    ------
+    PhysicsError
+        When ``kt = 0`` and ``a = 0``: nothing pulls the disk back.
+
+    Examples
+    --------
+    Example 5.25 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = disk_torsion_offset_mass(Q_(20, "kg"), Q_(0.3, "m"), Q_(2, "kg"),
+    ...                                Q_(0.05, "m"), Q_(0.2, "m"), Q_(50, "N*m/rad"),
+    ...                                Q_(9.80665, "m/s^2"))
+    >>> round(out.values["omega"].magnitude, 12)  # rad/s
+    7.408313877247
+    """
+    M_, R_, m_ = _si(M, "kg"), _si(R, "m"), _si(m, "kg")
+    r_, a_, kt_ = _si(r, "m"), _si(a, "m"), _si(kt, "N*m/rad")
+    stiffness = kt_ + m_ * _si(g, "m/s**2") * a_
+    if not stiffness.m:
+        raise PhysicsError("with kt = 0 and a = 0 nothing pulls the disk back (neutral "
+                           "equilibrium): it does not oscillate")
+    inertia = M_ * R_ * R_ / 2.0 + m_ * (r_ * r_ / 2.0 + a_ * a_)
+    return _outcome(stiffness / inertia, J_A=(inertia, "kg*m**2"))
+
+
+def wheel_on_moving_beam(k, m, M, kappa: float = 0.5) -> Outcome:
+    """A wheel held by a spring, rolling on a beam that runs freely on rollers.
+
+    .. math:: \\omega^2 = \\frac{k}{m + \\frac{M}{1 + M/(\\kappa m)}}
+              = \\frac{k\\,(\\kappa m + M)}{m\\,(\\kappa m + M + \\kappa M)}
+
+    With ``x`` the wheel's centre and ``X`` the beam, rolling turns the wheel at
+    ``(x' - X')/r``; the kinetic energy is
+    ``m x'^2/2 + kappa m (x' - X')^2/2 + M X'^2/2`` and the spring (from a fixed support to the
+    wheel's centre) stores ``k x^2/2``. The second form, evaluated here, also holds for
+    ``kappa = 0`` (a frictionless slider: the beam plays no part and ``omega^2 = k/m``).
+
+    Parameters
+    ----------
+    k : Quantity
+        Spring stiffness ``[force]/[length]``.
+    m : Quantity
+        Mass of the wheel ``[mass]``.
+    M : Quantity
+        Mass of the beam ``[mass]``.
+    kappa : float
+        Shape factor of the wheel ``J_C / (m r^2)`` (dimensionless, >= 0); 0.5 for a disk.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s).
+
+    Notes
+    -----
+    The system has two degrees of freedom; the other mode has zero frequency: the beam
+    drifts at constant speed under a wheel whose centre stays put (it only spins).
+
+    Examples
+    --------
+    Example 5.27 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = wheel_on_moving_beam(Q_(500, "N/m"), Q_(5, "kg"), Q_(20, "kg"))
+    >>> round(out.values["omega"].magnitude, 12)  # rad/s
+    8.320502943378
+    """
+    kappa = _check_kappa(kappa)
+    m_, M_ = _si(m, "kg"), _si(M, "kg")
+    coupled = kappa * m_ + M_
+    out = _outcome(_si(k, "N/m") * coupled / (m_ * (coupled + kappa * M_)))
+    out.assumptions.append("the other mode has zero frequency: the beam drifts freely on its "
+                           "rollers under the wheel, whose centre stays put while it spins")
+    return out
+
+
+def angled_member(l, g) -> Outcome:
+    """An L-shaped uniform bar swinging in its plane about the free end of its long arm.
+
+    .. math:: \\omega^2 = \\frac{\\sqrt{65}}{14} \\frac{g}{l}
+
+    The long arm (length ``2l``) hangs from the pivot, the short arm (length ``l``) is at right
+    angles to it at the far end. With ``m`` the mass per length ``l``: the centre of mass lies
+    ``sqrt(65) l / 6`` from the pivot, ``J_A = 7 m l^2``, so
+    ``omega^2 = 3 m g (sqrt(65) l / 6) / (7 m l^2)``; the mass cancels.
+
+    Parameters
+    ----------
+    l : Quantity
+        Length of the short arm (the long one is ``2l``) ``[length]``.
+    g : Quantity
+        Gravitational acceleration ``[length]/[time]^2``.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s) for small swings about the
+    equilibrium (in which the long arm leans away from the vertical).
+
+    Examples
+    --------
+    Example 3.44 of [1]:
+
+    >>> from dyncalc.units import Q_
+    >>> out = angled_member(Q_(0.5, "m"), Q_(9.80665, "m/s^2"))
+    >>> round(out.values["omega"].magnitude, 12)  # rad/s
+    3.360776694825
+    """
+    ratio = (_si(g, "m/s**2") / _si(l, "m")).sqrt()
+    return Outcome(periodic(float(ANGLED_MEMBER_FACTOR * ratio)))
