@@ -98,6 +98,8 @@ def sqrt_ratio(a: float, b: float) -> float:
     7.0710678118654755
     >>> sqrt_ratio(1e300, 1e-300)
     1e+300
+    >>> sqrt_ratio(1e308, 5e-324)  # 4.5e315 overflows: inf, for the caller to refuse
+    inf
     """
     ma, ea = math.frexp(a)
     mb, eb = math.frexp(b)
@@ -105,7 +107,10 @@ def sqrt_ratio(a: float, b: float) -> float:
     if shift % 2:
         ma *= 2.0
         shift -= 1
-    return math.ldexp(math.sqrt(ma / mb), shift // 2)
+    try:
+        return math.ldexp(math.sqrt(ma / mb), shift // 2)
+    except OverflowError:  # the true result is above 1.8e308
+        return math.inf
 
 
 class Wide:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
-from .numerics import half_complement_sin, monomial, pendulum_period_factor, sqrt_ratio
+from .numerics import HALF_TURN, half_complement_sin, monomial, pendulum_period_factor, sqrt_ratio
 from .outcome import Outcome, periodic
 
 __all__ = ["mass_spring", "torsional", "pendulum", "physical_pendulum", "large_amplitude",
@@ -22,6 +22,8 @@ __all__ = ["mass_spring", "torsional", "pendulum", "physical_pendulum", "large_a
 SMALL_ANGLE_METHODS = ("small-angle", "elliptic")
 #: Relative accuracy claimed for the elliptic (AGM) period: a few ulp (tests/test_pendulum.py).
 ELLIPTIC_ERROR = 1e-15
+_SHORT = {"degree": "deg", "radian": "rad", "grade": "grad", "arcminute": "arcmin",
+          "arcsecond": "arcsec"}
 
 
 def _si(quantity, unit: str) -> float:
@@ -75,12 +77,13 @@ def torsional(kt, J) -> Outcome:
 
 
 def _amplitude_parts(amplitude) -> tuple[float, str, float]:
-    """(magnitude in the unit typed, pint's unit name, radians) of an amplitude quantity."""
+    """(magnitude, unit name, radians) of an amplitude: in the unit typed where half a turn is
+    exact in it (degree, grade, ...) or it is the radian; otherwise converted to radians."""
     units = list(amplitude.units._units.items())
-    if len(units) == 1 and units[0][1] == 1:
-        name = units[0][0]
-        return float(amplitude.magnitude), name, _si(amplitude, "rad")
     radians = _si(amplitude, "rad")
+    if len(units) == 1 and units[0][1] == 1 and (units[0][0] in HALF_TURN
+                                                 or units[0][0] == "radian"):
+        return float(amplitude.magnitude), units[0][0], radians
     return radians, "radian", radians
 
 
@@ -103,16 +106,17 @@ def large_amplitude(omega0: float, amplitude, method: str = "auto", rtol: float 
     amplitude : Quantity or None
         Angle ``[angle]``, 0 <= amplitude < 180 deg. ``None``: small oscillations.
     method : {"auto", "small-angle", "elliptic"}
-        ``auto`` takes the small-angle model when its error bound
-        ``theta0^2/16 (1 + theta0^2/8)`` (the amplitude series is ``1 + theta0^2/16 +
-        11 theta0^4/3072 + ...``) meets ``rtol``, otherwise the elliptic period.
+        ``auto`` takes the small-angle model when its true relative period error
+        ``1 - AGM(1, cos(theta0/2))`` (about ``theta0^2/16``) meets ``rtol``, otherwise the
+        elliptic period; the AGM costs a handful of float operations, so the choice is made on
+        the exact error rather than on a bound.
     rtol : float
         Relative tolerance on the period.
 
     Returns
     -------
     Outcome with ``omega``, ``f``, ``T`` at the amplitude and ``omega_0``; ``error_estimate``
-    is the relative period error of the model chosen.
+    is the relative period error of the model chosen, ``(T_model - T) / T`` in magnitude.
     """
     if amplitude is None:
         if method == "elliptic":
@@ -123,16 +127,15 @@ def large_amplitude(omega0: float, amplitude, method: str = "auto", rtol: float 
                                "the exact large-amplitude period")
         return out
     magnitude, unit, radians = _amplitude_parts(amplitude)
+    shown = f"{magnitude:.6g} {_SHORT.get(unit, unit)}"
     if radians >= math.pi:
-        raise PhysicsError(f"the amplitude must be below 180 degrees; at {magnitude:g} "
-                           f"{unit} the {what} goes over the top and does not swing back")
+        raise PhysicsError(f"the amplitude must be below 180 degrees; at {shown} the {what} "
+                           "goes over the top and does not swing back")
     cos_half = half_complement_sin(magnitude, unit)
-    factor = pendulum_period_factor(cos_half)        # T / T0
-    small_error = factor - 1.0                        # relative period error of small-angle
-    bound = radians * radians / 16.0 * (1.0 + radians * radians / 8.0)
-    if method == "auto":
-        method = "small-angle" if bound <= rtol else "elliptic"
-    shown = f"{magnitude:.6g} {'deg' if unit == 'degree' else unit}"
+    factor = pendulum_period_factor(cos_half)        # T / T0 = 1 / AGM(1, cos(theta0/2))
+    small_error = 1.0 - 1.0 / factor                  # (T - T0) / T: the small-angle error
+    if method == "auto":  # the AGM is cheaper than any bound, so decide on the true error
+        method = "small-angle" if small_error <= rtol else "elliptic"
     assumption = (f"the small-angle period is {100 * small_error:.3g}% short at an amplitude "
                   f"of {shown}")
     if method == "small-angle":

@@ -7,11 +7,12 @@ exactly one; relations between parameters (``R > r``) are checked before any phy
 """
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, PhysicsError
 from ..result import Entry, Explanation, Result, entry_from_parsed, format_number
 from ..units import DIMENSIONLESS, parse_quantity, to_si
 from . import Scene, get_scene
@@ -82,6 +83,9 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
     labels = labels or {}
     names = {p.name for p in scene.params}
     for name in texts:
+        if name == "zeta" and not scene.accepts_zeta:
+            raise InputError(f"{scene.name} takes no zeta: its damping comes from its own "
+                             f"parameters (or it has several modes); {_parameter_list(scene)}")
         if name not in names:
             raise InputError(f"{scene.name} has no parameter {name!r}; {_parameter_list(scene)}")
     skipped = _resolve_groups(scene, texts)
@@ -147,6 +151,7 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
         warnings += notes
 
     results = {name: _entry(name, value) for name, value in values.items()}
+    _refuse_overflow(results)
     result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
                     model=outcome.model, method=outcome.method, warnings=warnings,
                     explanation=_explain(scene, inputs, results, outcome))
@@ -154,6 +159,21 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
         result.extra["error_estimate"] = outcome.error_estimate
     result.add_underflow_warnings()
     return result
+
+
+def _refuse_overflow(results: dict[str, Entry]) -> None:
+    """A result that overflowed float64 is refused (SPEC.md). The one meaningful infinity is a
+    period ``T...`` of a mode whose frequency is exactly zero (a drift, a bifurcation)."""
+    for name, entry in results.items():
+        if not (isinstance(entry.si, float) and math.isinf(entry.si)):
+            continue
+        if name.startswith("T"):
+            omega = results.get("omega" + name[1:])
+            if omega is not None and omega.si == 0.0:
+                continue
+        raise PhysicsError(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
+                           f"{entry.dim.si if entry.dim else ''}); the inputs are too extreme "
+                           "for this result")
 
 
 def _entry(name: str, value) -> Entry:
