@@ -17,7 +17,7 @@ import math
 
 from ..errors import PhysicsError
 from ..units import Q_
-from .numerics import monomial
+from .numerics import monomial, root_monomial
 from .outcome import Outcome, damped, periodic
 
 __all__ = ["pendulum_spring_dashpot", "rod_in_fluid", "frame_brace_damper",
@@ -34,37 +34,6 @@ _PEAK_LIMIT = math.sqrt(0.5)
 def _si(quantity, unit: str) -> float:
     """The magnitude of ``quantity`` in ``unit`` (pint refuses a wrong dimension here)."""
     return float(quantity.to(unit).magnitude)
-
-
-def _root(coefficient: float, factors) -> float:
-    """``sqrt(coefficient * prod(x ** p))`` with no overflow or underflow on the way.
-
-    :func:`~dyncalc.physics.numerics.sqrt_ratio` generalised to a monomial: the binary
-    exponents are summed exactly and halved, only the mantissa product is rounded (one rounding
-    per factor), and the result is ``inf`` only when the true root overflows. Zero factors
-    with positive powers give zero.
-
-    >>> _root(6.0, [(1e200, 1), (1e200, 2), (1e-100, -3)])  # sqrt(6e900): 2.449...e450 -> inf
-    inf
-    >>> _root(8.0, [(1e200, 3), (1e100, 2), (1e300, -1), (1e-10, -2)])  # sqrt(8e520)
-    2.82842712474619e+260
-    """
-    mantissa, exponent = math.frexp(coefficient)
-    for value, power in factors:
-        if value == 0.0:
-            return 0.0
-        m, e = math.frexp(value)
-        mantissa *= m ** power
-        exponent += e * power
-        mantissa, e2 = math.frexp(mantissa)
-        exponent += e2
-    if exponent % 2:
-        mantissa *= 2.0
-        exponent -= 1
-    try:
-        return math.ldexp(math.sqrt(mantissa), exponent // 2)
-    except OverflowError:
-        return math.inf
 
 
 def _hypot(a: float, b: float) -> float:
@@ -133,14 +102,14 @@ def pendulum_spring_dashpot(m, a, k, d, g) -> Outcome:
     """
     m_, a_, k_ = _si(m, "kg"), _si(a, "m"), _si(k, "N/m")
     d_, g_ = _si(d, "N*s/m"), _si(g, "m/s**2")
-    omega = _hypot(_root(1.0, [(k_, 1), (m_, -1)]), _root(0.5, [(g_, 1), (a_, -1)]))
+    omega = _hypot(root_monomial(1.0, [(k_, 1), (m_, -1)]), root_monomial(0.5, [(g_, 1), (a_, -1)]))
     if d_ == 0.0:
         xi = zeta = 0.0
     else:
         xi = monomial(0.125, [(d_, 1), (m_, -1)])
         # 1 / zeta = 8 sqrt(k m + g m^2 / (2a)) / d, each term scaled by d before it is squared
-        scaled = _hypot(_root(1.0, [(k_, 1), (m_, 1), (d_, -2)]),
-                        _root(0.5, [(g_, 1), (m_, 2), (a_, -1), (d_, -2)]))
+        scaled = _hypot(root_monomial(1.0, [(k_, 1), (m_, 1), (d_, -2)]),
+                        root_monomial(0.5, [(g_, 1), (m_, 2), (a_, -1), (d_, -2)]))
         zeta = 0.125 / scaled if scaled > 0.0 else math.inf
     values = periodic(omega)
     values["xi"] = Q_(xi, "1/s")
@@ -148,8 +117,8 @@ def pendulum_spring_dashpot(m, a, k, d, g) -> Outcome:
     values.update(extra)
     _refuse_overflow(values, "pendulum-spring-dashpot")
     if notes:
-        critical = 8.0 * _hypot(_root(1.0, [(k_, 1), (m_, 1)]),
-                                _root(0.5, [(g_, 1), (m_, 2), (a_, -1)]))
+        critical = 8.0 * _hypot(root_monomial(1.0, [(k_, 1), (m_, 1)]),
+                                root_monomial(0.5, [(g_, 1), (m_, 2), (a_, -1)]))
         notes = [f"{note}; it oscillates only for d < 8 sqrt(k m + g m^2/(2a)) = "
                  f"{critical:.6g} N*s/m" for note in notes]
     return Outcome(values, warnings=notes)
@@ -200,10 +169,10 @@ def rod_in_fluid(m, l, beta, g) -> Outcome:
     0.124376335
     """
     m_, l_, beta_, g_ = _si(m, "kg"), _si(l, "m"), _si(beta, "N*s/m**2"), _si(g, "m/s**2")
-    omega = _root(1.5, [(g_, 1), (l_, -1)])
+    omega = root_monomial(1.5, [(g_, 1), (l_, -1)])
     xi = monomial(0.5, [(beta_, 1), (l_, 1), (m_, -1)]) if beta_ else 0.0
-    zeta = _root(1.0 / 6.0, [(beta_, 2), (l_, 3), (g_, -1), (m_, -2)])
-    beta_crit = Q_(_root(6.0, [(g_, 1), (m_, 2), (l_, -3)]), "N*s/m**2")
+    zeta = root_monomial(1.0 / 6.0, [(beta_, 2), (l_, 3), (g_, -1), (m_, -2)])
+    beta_crit = Q_(root_monomial(6.0, [(g_, 1), (m_, 2), (l_, -3)]), "N*s/m**2")
     extra, notes = damped(omega, zeta)
     values = {**periodic(omega), "xi": Q_(xi, "1/s"), "zeta": extra.pop("zeta"),
               "beta_crit": beta_crit, **extra}
@@ -291,8 +260,8 @@ def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) ->
     'exact'
     """
     m_, k_, d_, b0_ = _si(m, "kg"), _si(k, "N/m"), _si(d, "N*s/m"), _si(b0, "m/s**2")
-    omega = _root(0.5, [(k_, 1), (m_, -1)])
-    zeta = _root(0.125, [(d_, 2), (k_, -1), (m_, -1)])
+    omega = root_monomial(0.5, [(k_, 1), (m_, -1)])
+    zeta = root_monomial(0.125, [(d_, 2), (k_, -1), (m_, -1)])
     extra, warnings = damped(omega, zeta)
     y0 = Q_(monomial(2.0, [(m_, 1), (b0_, 1), (k_, -1)]), "m")
     values = {**periodic(omega), **extra, "y0": y0}
@@ -302,7 +271,7 @@ def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) ->
     if method == "auto":
         method = "small-damping" if error <= rtol else "exact"
     # y0 / (2 zeta) = sqrt(8 m^3 b0^2 / (k d^2)), straight from the inputs
-    small = _root(8.0, [(m_, 3), (b0_, 2), (k_, -1), (d_, -2)]) if d_ else math.inf
+    small = root_monomial(8.0, [(m_, 3), (b0_, 2), (k_, -1), (d_, -2)]) if d_ else math.inf
     where = f"at zeta = {zeta:.6g}"
     if method == "small-damping":
         y_max = small

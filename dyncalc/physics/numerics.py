@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 __all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm", "half_complement_sin",
-           "pendulum_period_factor", "sqrt_ratio", "Wide"]
+           "pendulum_period_factor", "sqrt_ratio", "root_monomial", "Wide"]
 
 
 def two_product(a: float, b: float) -> tuple[float, float]:
@@ -184,6 +184,20 @@ def parallel_sum(values) -> float:
         return math.inf
 
 
+def _scaled_product(coefficient: float, factors) -> tuple[float, int] | None:
+    """``coefficient * prod(x ** p)`` as (mantissa, binary exponent), or ``None`` if it is 0."""
+    mantissa, exponent = math.frexp(coefficient)
+    for value, power in factors:
+        if value == 0.0:
+            return None
+        m, e = math.frexp(value)
+        mantissa *= m ** power
+        exponent += e * power
+        mantissa, e2 = math.frexp(mantissa)
+        exponent += e2
+    return mantissa, exponent
+
+
 def monomial(coefficient: float, factors) -> float:
     """``coefficient * prod(x ** p)`` for small integer powers, without intermediate overflow.
 
@@ -198,7 +212,7 @@ def monomial(coefficient: float, factors) -> float:
     coefficient : float
         A positive constant (3 for a cantilever, 48 for a midspan load, 1/8 for a coil).
     factors : iterable of (float, int)
-        Positive finite values with integer powers, e.g. ``[(E, 1), (I, 1), (l, -3)]``.
+        Non-negative finite values with integer powers, e.g. ``[(E, 1), (I, 1), (l, -3)]``.
 
     Examples
     --------
@@ -209,15 +223,36 @@ def monomial(coefficient: float, factors) -> float:
     >>> monomial(1.0, [(1e-120, -3)])  # the true result, 1e360, overflows
     inf
     """
-    mantissa, exponent = math.frexp(coefficient)
-    for value, power in factors:
-        m, e = math.frexp(value)
-        mantissa *= m ** power
-        exponent += e * power
-        mantissa, e2 = math.frexp(mantissa)
-        exponent += e2
+    scaled = _scaled_product(coefficient, factors)
+    if scaled is None:
+        return 0.0
     try:
-        return math.ldexp(mantissa, exponent)
+        return math.ldexp(*scaled)
+    except OverflowError:
+        return math.inf
+
+
+def root_monomial(coefficient: float, factors) -> float:
+    """``sqrt(coefficient * prod(x ** p))`` with no overflow or underflow on the way.
+
+    :func:`monomial` with the binary exponent halved exactly before the result is assembled:
+    only the mantissas are rounded, and the result is ``inf`` only when the true root
+    overflows (a frequency ``sqrt(k/m)`` from ``k = 1e300``, ``m = 1e-300`` is fine although
+    ``k/m`` is not). A zero factor gives zero.
+
+    >>> root_monomial(6.0, [(1e200, 1), (1e200, 2), (1e-100, -3)])  # sqrt(6e900) overflows
+    inf
+    >>> root_monomial(8.0, [(1e200, 3), (1e100, 2), (1e300, -1), (1e-10, -2)])  # sqrt(8e520)
+    2.82842712474619e+260
+    """
+    scaled = _scaled_product(coefficient, factors)
+    if scaled is None:
+        return 0.0
+    mantissa, exponent = scaled
+    if exponent % 2:
+        mantissa, exponent = 2.0 * mantissa, exponent - 1
+    try:
+        return math.ldexp(math.sqrt(mantissa), exponent // 2)
     except OverflowError:
         return math.inf
 

@@ -1,0 +1,325 @@
+"""Oscillators whose equation of motion is nonlinear: a rocking half-cylinder shell at large
+amplitude, and a rod held by a torsion spring about an equilibrium found by a root find.
+
+Pure functions on pint quantities returning an :class:`~dyncalc.physics.outcome.Outcome`.
+scipy is imported inside the functions that need it, so importing this module stays cheap.
+
+References
+----------
+.. [1] Gross, Hauger, Schröder, Wall, Govindjee, *Engineering Mechanics 3: Dynamics*, 2nd ed.,
+   Springer 2013, Chapters 4 and 5.
+"""
+from __future__ import annotations
+
+import math
+
+from ..errors import PhysicsError
+from ..units import Q_
+from .numerics import HALF_TURN, PI_LO, monomial, sqrt_ratio
+from .oscillators import _amplitude_parts, _si
+from .outcome import Outcome, periodic
+
+__all__ = ["half_cylinder_shell", "rod_torsion_spring", "SHELL_METHODS", "WOUND_THRESHOLD"]
+
+#: The methods the half-cylinder shell offers besides ``auto``.
+SHELL_METHODS = ("linear", "quadrature", "ode")
+
+#: pi - 2 rounded once (math.pi - 2 is exact by Sterbenz's lemma; PI_LO restores pi's tail).
+PI_MINUS_2 = (math.pi - 2.0) + PI_LO
+
+#: The smallest relative tolerance scipy's quad accepts (50 eps); below it quad warns.
+QUAD_FLOOR = 50.0 * 2.0 ** -52
+#: The smallest relative tolerance solve_ivp's DOP853 accepts (100 eps).
+ODE_FLOOR = 100.0 * 2.0 ** -52
+
+#: ``kt / (m g l)`` below which the rod-torsion-spring has equilibria past the vertical:
+#: ``sin(psi)`` with ``psi`` in (pi/2, pi) the root of ``psi sin(psi) + cos(psi) = 0``
+#: (mpmath.findroot at 40 digits: psi = 2.79838604578388713672..., threshold
+#: 0.336508416918395291616...).
+WOUND_THRESHOLD = 0.33650841691839529
+
+
+# --- half-cylinder shell -----------------------------------------------------------------------
+
+def _shell_small_error_bound(k2: float) -> float:
+    """Upper bound of ``T/T0 - 1`` for the shell at ``k2 = sin^2(phi0/2)``, ``k2 <= 1/2``.
+
+    With ``s = sin^2 u``, ``c = 4/(pi - 2)``, ``T/T0 = (2/pi) int_0^{pi/2} f(k2 s) du`` and
+    ``f(x) = sqrt(1 + c x) / sqrt(1 - x)``. Since ``sqrt(1 + c x) <= 1 + c x/2`` and
+    ``1/sqrt(1 - x) - 1 <= x / (2 (1 - x))``, ``f(x) - 1 <= c x/2 + x/(2(1 - x)) +
+    c x^2/(4(1 - x))``; the means of ``s`` and ``s^2`` over the quarter period are 1/2 and
+    3/8, and ``1 - x >= 1 - k2``. The bound is exact to first order in ``k2``:
+    ``(1/(pi - 2) + 1/4) k2``.
+    """
+    c = 4.0 / PI_MINUS_2
+    q = 1.0 - k2
+    return 0.5 * k2 * (0.5 * c + 0.5 / q) + 0.375 * c * k2 * k2 / (4.0 * q)
+
+
+def _shell_quadrature(k2: float, rtol: float) -> tuple[float, float]:
+    """``(T/T0, relative error estimate)`` by scipy's adaptive Gauss-Kronrod quadrature.
+
+    quad's IntegrationWarning (roundoff near its 50 eps floor) is not shown: its error
+    estimate is returned instead, and the caller warns when that misses ``rtol``.
+    """
+    import warnings
+
+    from scipy.integrate import IntegrationWarning, quad
+
+    c = 4.0 / PI_MINUS_2
+
+    def integrand(u: float) -> float:
+        x = k2 * math.sin(u) ** 2
+        return math.sqrt((1.0 + c * x) / (1.0 - x))
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", IntegrationWarning)
+        value, abserr = quad(integrand, 0.0, 0.5 * math.pi, epsabs=0.0,
+                             epsrel=max(rtol, QUAD_FLOOR), limit=200)
+    factor = value / (0.5 * math.pi)
+    return factor, abserr / value
+
+
+def _shell_ode(phi0: float, rtol: float) -> float:
+    """``T/T0`` from the equation of motion integrated over a quarter period.
+
+    Time is scaled by ``sqrt(r/g)``: ``phi'' = -(phi'^2 + 1) sin(phi) / (pi - 2 cos(phi))``,
+    with ``pi - 2 cos(phi) = (pi - 2) + 4 sin^2(phi/2)`` (no cancellation at small phi). The
+    quarter period ends at the event ``phi = 0`` (crossed downward).
+    """
+    from scipy.integrate import solve_ivp
+
+    def rhs(_t, y):
+        phi, rate = y
+        half = math.sin(0.5 * phi)
+        return [rate, -(rate * rate + 1.0) * math.sin(phi) / (PI_MINUS_2 + 4.0 * half * half)]
+
+    def upright(_t, y):
+        return y[0]
+
+    upright.terminal = True
+    upright.direction = -1.0
+    small_period = 2.0 * math.pi * math.sqrt(PI_MINUS_2)
+    tol = max(0.1 * rtol, ODE_FLOOR)
+    sol = solve_ivp(rhs, (0.0, 2.0 * small_period), [phi0, 0.0], method="DOP853",
+                    rtol=tol, atol=1e-3 * tol * phi0, events=upright)
+    if not sol.t_events[0].size:  # cannot happen below 90 degrees (T/T0 < 1.4 there)
+        raise PhysicsError("the integration of the shell's equation of motion did not return "
+                           "to the upright position; use --method quadrature")
+    return 4.0 * float(sol.t_events[0][0]) / small_period
+
+
+def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
+                        rtol: float = 1e-9) -> Outcome:
+    """A thin half-cylinder shell rocking without slipping on flat ground.
+
+    .. math:: \\ddot\\varphi (\\pi - 2\\cos\\varphi) + \\dot\\varphi^2 \\sin\\varphi
+              + \\frac{g}{r}\\sin\\varphi = 0, \\qquad
+              \\omega_0^2 = \\frac{g}{(\\pi - 2) r}
+
+    At amplitude ``phi0`` energy conservation gives
+    ``phi'^2 = 2 (g/r)(cos phi - cos phi0) / (pi - 2 cos phi)``; substituting
+    ``sin(phi/2) = k sin(u)``, ``k = sin(phi0/2)``, removes the endpoint singularity:
+
+    .. math:: T = 4\\sqrt{\\frac{r}{g}} \\int_0^{\\pi/2}
+              \\frac{\\sqrt{\\pi - 2 + 4 k^2 \\sin^2 u}}{\\sqrt{1 - k^2 \\sin^2 u}}\\,du
+
+    (``pi - 2 cos phi = pi - 2 + 4 k^2 sin^2 u``). Below 90 degrees ``k^2 <= 1/2``, so the
+    integrand is smooth and bounded and Gauss-Kronrod quadrature converges fast.
+
+    Parameters
+    ----------
+    r : Quantity
+        Shell radius ``[length]``.
+    g : Quantity
+        Gravitational acceleration ``[length]/[time]^2``.
+    amplitude : Quantity, optional
+        Rocking amplitude ``[angle]``, 0 <= amplitude < 90 deg. ``None``: small oscillations.
+    method : {"auto", "linear", "quadrature", "ode"}
+        ``linear`` is the small-oscillation period; ``quadrature`` the integral above
+        (scipy.integrate.quad, ``epsrel = rtol``); ``ode`` integrates the equation of motion
+        (scipy.integrate.solve_ivp, DOP853) from rest at ``phi0`` to the upright position.
+        ``auto`` takes ``linear`` when the rigorous bound on its period error
+        ``(k^2/2)(c/2 + 1/(2(1-k^2))) + 3 c k^4/(32 (1-k^2))``, ``c = 4/(pi-2)``, meets
+        ``rtol`` (it costs nothing and is exact to first order, ``(1/(pi-2) + 1/4) k^2``),
+        otherwise ``quadrature`` (a few dozen integrand evaluations).
+    rtol : float
+        Relative tolerance on the period.
+
+    Returns
+    -------
+    Outcome with ``omega`` (rad/s), ``f`` (Hz), ``T`` (s), and with an amplitude also
+    ``omega_0``. ``error_estimate``: for ``linear`` its period error (the bound, or the
+    quadrature's value when the bound misses ``rtol``), for ``quadrature`` quad's own
+    estimate, for ``ode`` its difference from the quadrature plus quad's estimate.
+
+    Notes
+    -----
+    The shell rolls without slipping and is thin (its mass on the arc). At 90 degrees the
+    rim reaches the ground and the model ends, so larger amplitudes are refused.
+
+    Examples
+    --------
+    The set-up of E4.18 of [1], with numbers of our own (checked against mpmath):
+
+    >>> from dyncalc.units import Q_
+    >>> out = half_cylinder_shell(Q_(0.5, "m"), Q_(9.80665, "m/s^2"))
+    >>> round(out.values["omega"].magnitude, 12)  # sqrt(g / ((pi - 2) r)), rad/s
+    4.144954360471
+    >>> out = half_cylinder_shell(Q_(0.5, "m"), Q_(9.80665, "m/s^2"), Q_(60, "deg"))
+    >>> out.method
+    'quadrature'
+    >>> round(out.values["T"].magnitude, 12)  # mpmath.quad at 30 digits: 1.949968530966157
+    1.949968530966
+    """
+    omega0 = sqrt_ratio(_si(g, "m/s**2"), PI_MINUS_2 * _si(r, "m"))
+    if amplitude is None:
+        if method in ("quadrature", "ode"):
+            raise PhysicsError(f"--method {method} needs an amplitude (--amplitude or "
+                               "amplitude=); without one the shell's oscillation is linear")
+        out = Outcome(periodic(omega0), model="linear", method="closed-form")
+        out.assumptions.append("small oscillations; give --amplitude for the "
+                               "amplitude-dependent period")
+        return out
+    magnitude, unit, phi0 = _amplitude_parts(amplitude)
+    limit = 0.5 * HALF_TURN[unit] if unit in HALF_TURN else 0.5 * math.pi
+    if magnitude >= limit:
+        shown = f"{magnitude:g} {'deg' if unit == 'degree' else unit}"
+        raise PhysicsError(f"the amplitude must be below 90 degrees; at {shown} the rim of "
+                           "the half-cylinder shell touches the ground and the rocking model "
+                           "ends")
+    k2 = math.sin(0.5 * phi0) ** 2
+    bound = _shell_small_error_bound(k2)
+    if method == "auto":
+        method = "linear" if bound <= rtol else "quadrature"
+    shown = f"{magnitude:.6g} {'deg' if unit == 'degree' else unit}"
+    omega_0 = periodic(omega0)["omega"]
+    if method == "linear":
+        error, size = bound, "at most "
+        if bound > rtol:
+            error, size = _shell_quadrature(k2, rtol)[0] - 1.0, ""
+        values = periodic(omega0)
+        values["omega_0"] = omega_0
+        out = Outcome(values, model="linear", method="linear", error_estimate=error,
+                      assumptions=[f"small oscillations: the period is {size}"
+                                   f"{100 * error:.3g}% short at an amplitude of {shown}"])
+        if error > rtol:
+            out.warnings.append(f"the linear model misses the requested tolerance {rtol:g}: "
+                                f"its period is {100 * error:.3g}% short at {shown}; use "
+                                "--method quadrature")
+        return out
+    factor, error = _shell_quadrature(k2, rtol)
+    model_note = ("period of phi''(pi - 2 cos phi) + phi'^2 sin phi + (g/r) sin phi = 0 at "
+                  f"an amplitude of {shown}")
+    if method == "ode":
+        ode_factor = _shell_ode(phi0, rtol) if phi0 > 0.0 else 1.0
+        error = abs(ode_factor / factor - 1.0) + error  # triangle inequality
+        factor = ode_factor
+        how = "integrated with DOP853 to the upright position (error: against the quadrature)"
+    else:
+        how = "by Gauss-Kronrod quadrature of the energy integral"
+    values = periodic(omega0 / factor)
+    values["omega_0"] = omega_0
+    out = Outcome(values, model="nonlinear", method=method, error_estimate=error,
+                  assumptions=[f"{model_note}, {how}; the small-oscillation period is "
+                               f"{100 * (factor - 1.0):.3g}% short"])
+    if error > rtol:
+        out.warnings.append(f"the {method} method reached a relative error of {error:.2g}, "
+                            f"more than the requested tolerance {rtol:g}")
+    return out
+
+
+# --- rod on a torsion spring -------------------------------------------------------------------
+
+def _rod_equilibrium(kappa: float) -> float:
+    """The root ``phi`` in (0, pi/2) of ``F(phi) = cos(phi) - kappa phi = 0``, ``kappa > 0``.
+
+    The bracket: ``F(0) = 1 > 0`` and ``F(pi/2) = -kappa pi/2 < 0``, and ``F`` is strictly
+    decreasing there (``F' = -sin(phi) - kappa < 0``), so [0, pi/2] holds exactly one root.
+    ``F`` is also concave (``F'' = -cos(phi) <= 0``), so every tangent lies above it: Newton
+    started at the right end ``pi/2`` (where ``F < 0``) steps left but never past the root,
+    and its iterates fall monotonically into it (quadratically at the end). The step is
+    written ``phi - F/F' = (phi sin(phi) + cos(phi)) / (sin(phi) + kappa)``, a ratio of
+    positive terms, so no rounding can throw an iterate out of the bracket (the form
+    ``phi + F/|F'|`` cancels to 0 at the first step when kappa is 1e18). It stops when an
+    iterate no longer decreases, which rounding makes happen within a few ulp of the root.
+    At most 5 steps for ``kappa`` from 1e-300 to 1e300 (measured).
+
+    Not scipy's brentq: importing scipy.optimize doubles the command's run time, and in
+    floats ``F(fl(pi/2)) = 6.1e-17 - kappa pi/2`` is positive for kappa below 3.9e-17, so the
+    float bracket fails there (Newton returns ``fl(pi/2)``, the root to the last bit).
+    The tests compare the two where both apply.
+    """
+    phi = 0.5 * math.pi
+    for _ in range(200):
+        sin = math.sin(phi)
+        following = (phi * sin + math.cos(phi)) / (sin + kappa)  # phi - F/F', all terms >= 0
+        if not following < phi:
+            break
+        phi = following
+    return phi
+
+
+def rod_torsion_spring(m, l, kt, g) -> Outcome:
+    """A massless rod with a point mass at its tip, pivoted at the other end on a torsion spring
+    that is unstretched with the rod horizontal; gravity bends it down to ``phi_0``.
+
+    .. math:: \\frac{g}{l}\\cos\\varphi_0 = \\frac{k_t \\varphi_0}{m l^2}, \\qquad
+              \\omega^2 = \\frac{g}{l}\\sin\\varphi_0 + \\frac{k_t}{m l^2}
+
+    With ``kappa = kt / (m g l)`` the equilibrium solves ``cos(phi_0) = kappa phi_0``, a
+    bracketed root find on [0, pi/2] (monotone Newton, see :func:`_rod_equilibrium`), and
+    ``omega = sqrt(g/l) sqrt(sin(phi_0) + kappa)`` (a sum of positive terms).
+
+    Parameters
+    ----------
+    m : Quantity
+        Tip mass ``[mass]``.
+    l : Quantity
+        Rod length ``[length]``.
+    kt : Quantity
+        Torsional stiffness ``[force]*[length]/[angle]``, positive.
+    g : Quantity
+        ``[length]/[time]^2``.
+
+    Returns
+    -------
+    Outcome with ``omega``, ``f``, ``T`` and ``phi_0`` (rad, below the horizontal).
+
+    Notes
+    -----
+    ``cos(phi) = kappa phi`` has further roots with the rod wound past the vertical (phi
+    below -90 degrees, or beyond 270 degrees) when ``kappa`` is at most
+    :data:`WOUND_THRESHOLD` ``= 0.33650841691839529``: at that value the line ``kappa phi``
+    touches ``cos(phi)`` at ``psi`` in (90, 180) degrees, i.e. ``kappa = -sin(phi)`` and
+    ``cos(phi) = kappa phi`` give ``psi sin(psi) + cos(psi) = 0``, ``kappa = sin(psi)``
+    (solved with mpmath.findroot at 40 digits). A warning says so.
+
+    Examples
+    --------
+    The set-up of E5.20 of [1], with numbers of our own (checked against mpmath):
+
+    >>> from dyncalc.units import Q_
+    >>> out = rod_torsion_spring(Q_(2, "kg"), Q_(1, "m"), Q_(30, "N*m/rad"), Q_(9.81, "m/s^2"))
+    >>> round(out.values["phi_0"].to("deg").magnitude, 9)  # mpmath: 31.83472856122
+    31.834728561
+    >>> round(out.values["omega"].magnitude, 12)  # mpmath: 4.491602048489267
+    4.491602048489
+    """
+    m_, l_, kt_, g_ = _si(m, "kg"), _si(l, "m"), _si(kt, "N*m/rad"), _si(g, "m/s**2")
+    if not kt_ > 0.0:
+        raise PhysicsError(f"kt must be positive; got {kt_:g} N*m/rad")
+    kappa = monomial(1.0, [(kt_, 1), (m_, -1), (g_, -1), (l_, -1)])
+    phi0 = _rod_equilibrium(kappa)
+    omega = sqrt_ratio(g_, l_) * math.sqrt(math.sin(phi0) + kappa)
+    values = periodic(omega)
+    values["phi_0"] = Q_(phi0, "rad")
+    out = Outcome(values, model="linear", method="root-find",
+                  assumptions=["small oscillations about the equilibrium phi_0 below the "
+                               "horizontal; massless rod, point mass at the tip"])
+    if kappa <= WOUND_THRESHOLD:
+        out.warnings.append(f"kt = {kappa:.4g} m g l is at most {WOUND_THRESHOLD:.6f} m g l: "
+                            "further equilibria exist with the rod wound past the vertical; "
+                            "this result is the one between the horizontal and the downward "
+                            "vertical")
+    return out
