@@ -44,6 +44,7 @@ class Entry:
     description: str = ""
     assumed_si: bool = False
     exact: Any = None  # the magnitude in ``unit`` exactly as typed or computed
+    overflowed: bool = False  # a finite true value beyond float64: shown as inf / null
 
     def value_in(self, unit: str | None = None):
         """The magnitude in ``unit`` (default: this entry's display unit)."""
@@ -93,13 +94,14 @@ class Result:
     explanation: Explanation | None = None
     extra: dict[str, Any] = field(default_factory=dict)
 
-    def add_underflow_warnings(self) -> None:
-        """Warn about a result that underflowed to zero from non-zero inputs (SPEC.md)."""
+    def add_underflow_warnings(self, exact_zeros: set[str] = frozenset()) -> None:
+        """Warn about a result that underflowed to zero from non-zero inputs (SPEC.md);
+        ``exact_zeros`` are results that are zero by the physics."""
         inputs_nonzero = all(
             not isinstance(e.si, (int, float)) or e.si != 0 for e in self.inputs.values())
         for entry in self.results.values():
             if (isinstance(entry.si, float) and entry.si == 0.0 and inputs_nonzero
-                    and self.inputs):
+                    and self.inputs and entry.name not in exact_zeros):
                 self.warnings.append(f"{entry.name} underflows to zero (below 4.9e-324 "
                                      f"{entry.dim.si if entry.dim else ''}) although no input "
                                      f"is zero")

@@ -464,8 +464,7 @@ def test_missing_parameter_refused():
 def test_zeta_refused_by_a_scene_with_its_own_damper(how):
     result = run("--scene", PSD, *words(PSD_TEXTS), *how)
     assert error_line(result) == ("Error: pendulum-spring-dashpot takes no zeta: its damping "
-                                  "comes from its own parameters (or it has several modes); "
-                                  f"{PSD_PARAMS}")
+                                  f"comes from its own parameters; {PSD_PARAMS}")
 
 
 def test_wrong_dimension_and_methods_refused():

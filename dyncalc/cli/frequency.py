@@ -47,7 +47,8 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
 @click.option("--g", metavar="G", help="Gravitational acceleration (default 9.80665 m/s^2).")
 @click.option("--method", metavar="METHOD",
               help="auto (default: the cheapest model meeting --rtol), or one the scene offers "
-                   "(pendulums: small-angle, elliptic).")
+                   "(dyncalc scenes NAME lists them; pendulums: small-angle, elliptic; "
+                   "half-cylinder-shell: linear, quadrature, ode).")
 @output_options
 def natural_frequency(parameters, scene, method, out, **options):
     """Natural frequency omega (rad/s), f (Hz) and period T (s) of a scene.

@@ -69,6 +69,8 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
     if entry is None:
         raise InputError(f"--value {name}: there is no result named {name!r}; the results are "
                          f"{', '.join(result.results)}")
+    if entry.overflowed:
+        raise InputError(f"--value {name}: {name} overflows float64 at these inputs")
     value, _unit = _shown(entry, units)
     if isinstance(value, str):
         return value

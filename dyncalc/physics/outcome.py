@@ -21,7 +21,9 @@ class Outcome:
 
     ``values`` maps result names to pint quantities (or plain floats for pure numbers, numpy
     arrays for mode shapes) in the order they are shown; ``error_estimate`` is the relative
-    error bound of the method at these inputs (``None`` for closed forms exact to rounding).
+    error bound of the method at these inputs (``None`` for closed forms exact to rounding);
+    ``exact_zeros`` names results that are zero by the physics (an equilibrium at the bottom),
+    which must not be reported as underflow.
     """
 
     values: dict[str, Any]
@@ -30,6 +32,7 @@ class Outcome:
     error_estimate: float | None = None
     warnings: list[str] = field(default_factory=list)
     assumptions: list[str] = field(default_factory=list)
+    exact_zeros: set[str] = field(default_factory=set)  # zero by the physics, not underflow
 
 
 def periodic(omega_si: float, suffix: str = "") -> dict[str, Any]:

@@ -196,7 +196,8 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
                         "is infinite; the real oscillation is governed by the cubic term and "
                         "depends on its amplitude")
         return Outcome(values, model="linear", method="closed-form", warnings=warnings,
-                       assumptions=["small oscillations about the stable equilibrium"])
+                       assumptions=["small oscillations about the stable equilibrium"],
+                       exact_zeros={"omega", "f", "theta_eq"})
     if excess > 0:                        # above the bifurcation: the bead rides up
         gap = excess / pull               # 1 - c, exact
         theta = 2.0 * math.asin(math.sqrt(0.5 * float(gap)))
@@ -216,7 +217,8 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
               else "below the bifurcation: equilibrium at the bottom")
     return Outcome(values, model="linear", method="closed-form", warnings=warnings,
                    assumptions=[f"small oscillations about the stable equilibrium ({regime}); "
-                                "frictionless bead, constant spin"])
+                                "frictionless bead, constant spin"],
+                   exact_zeros=set() if excess > 0 else {"theta_eq"})
 
 
 def quarter_car(k, m, L, U0, v0) -> Outcome:

@@ -80,6 +80,7 @@ class Scene:
     one_of: tuple[tuple[str, ...], ...] = ()   # groups of which exactly one must be given
     methods: tuple[str, ...] = ()              # besides "auto"; empty: closed form only
     accepts_zeta: bool = True                  # --zeta adds damped results
+    no_zeta_because: str = "its damping comes from its own parameters"  # when it does not
     assumptions: tuple[str, ...] = ()
 
     def param(self, name: str) -> Param | None:

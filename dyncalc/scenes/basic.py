@@ -11,8 +11,8 @@ def gravity() -> Param:
     return Param("g", ACCELERATION, "gravitational acceleration", default=G_DEFAULT)
 
 
-def amplitude(limit: str = "below 180 deg") -> Param:
-    return Param("amplitude", ANGLE, f"swing amplitude theta0 ({limit}); omit for small "
+def amplitude(limit: str = "below 180 deg", symbol: str = "theta0") -> Param:
+    return Param("amplitude", ANGLE, f"swing amplitude {symbol} ({limit}); omit for small "
                  "oscillations", optional=True, constraint="nonnegative")
 
 

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, PhysicsError
+from ..errors import InputError
 from ..result import Entry, Explanation, Result, entry_from_parsed, format_number
 from ..units import DIMENSIONLESS, parse_quantity, to_si
 from . import Scene, get_scene
@@ -84,8 +84,8 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
     names = {p.name for p in scene.params}
     for name in texts:
         if name == "zeta" and not scene.accepts_zeta:
-            raise InputError(f"{scene.name} takes no zeta: its damping comes from its own "
-                             f"parameters (or it has several modes); {_parameter_list(scene)}")
+            raise InputError(f"{scene.name} takes no zeta: {scene.no_zeta_because}; "
+                             f"{_parameter_list(scene)}")
         if name not in names:
             raise InputError(f"{scene.name} has no parameter {name!r}; {_parameter_list(scene)}")
     skipped = _resolve_groups(scene, texts)
@@ -151,19 +151,24 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
         warnings += notes
 
     results = {name: _entry(name, value) for name, value in values.items()}
-    _refuse_overflow(results)
+    warnings += _overflow_warnings(results)
     result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
                     model=outcome.model, method=outcome.method, warnings=warnings,
                     explanation=_explain(scene, inputs, results, outcome))
     if outcome.error_estimate is not None:
         result.extra["error_estimate"] = outcome.error_estimate
-    result.add_underflow_warnings()
+    result.add_underflow_warnings(outcome.exact_zeros)
     return result
 
 
-def _refuse_overflow(results: dict[str, Entry]) -> None:
-    """A result that overflowed float64 is refused (SPEC.md). The one meaningful infinity is a
-    period ``T...`` of a mode whose frequency is exactly zero (a drift, a bifurcation)."""
+def _overflow_warnings(results: dict[str, Entry]) -> list[str]:
+    """Results that overflowed float64 (their true value is finite but beyond 1.8e308).
+
+    They are kept as ``inf`` (JSON ``null``) with a warning, so that the results that did not
+    overflow are still given; ``--value`` of such a result is refused. The one meaningful
+    infinity, a period ``T...`` of a mode whose frequency is exactly zero, is not an overflow.
+    """
+    warnings = []
     for name, entry in results.items():
         if not (isinstance(entry.si, float) and math.isinf(entry.si)):
             continue
@@ -171,9 +176,10 @@ def _refuse_overflow(results: dict[str, Entry]) -> None:
             omega = results.get("omega" + name[1:])
             if omega is not None and omega.si == 0.0:
                 continue
-        raise PhysicsError(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
-                           f"{entry.dim.si if entry.dim else ''}); the inputs are too extreme "
-                           "for this result")
+        entry.overflowed = True
+        warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
+                        f"{entry.dim.si if entry.dim else ''}); it is left out (null in JSON)")
+    return warnings
 
 
 def _entry(name: str, value) -> Entry:
