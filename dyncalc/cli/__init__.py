@@ -88,8 +88,8 @@ def main(argv=None):
     return cli.main(args=argv, prog_name="dyncalc")
 
 
-from . import frequency, pending, scenes, springs  # noqa: E402  (register the commands)
+from . import coriolis, damping, frequency, rolling, scenes, springs  # noqa: E402
 
-for _module in (springs, frequency, pending, scenes):
+for _module in (springs, frequency, damping, rolling, coriolis, scenes):  # register them
     for _command in _module.COMMANDS:
         cli.add_command(_command)

@@ -41,7 +41,7 @@ register(Scene(
     compute="dyncalc.physics.oscillators:torsional",
     equation="J phi'' + kt phi = 0",
     formula="omega^2 = kt / J",
-    reference="",
+    reference="Gross et al., Chapter 5 (free vibrations); no worked example of its own",
     example='dyncalc natural-frequency --kt "3 kN*m/rad" --inertia "1.2 kg*m^2"',
     example_result={"omega": "50 rad/s", "f": "7.957747154594767 Hz",
                     "T": "0.12566370614359174 s"},
@@ -56,7 +56,8 @@ register(Scene(
     compute="dyncalc.physics.oscillators:pendulum",
     equation="theta'' + (g/l) sin(theta) = 0",
     formula="omega_0^2 = g / l; at amplitude theta0: T = 2 pi / (omega_0 AGM(1, cos(theta0/2)))",
-    reference="",
+    reference="Gross et al., Chapter 5 (the mathematical pendulum); the exact period is the "
+              "complete elliptic integral 4 K(sin(theta0/2)) / omega_0",
     example="dyncalc natural-frequency --length 1m --amplitude 90deg",
     example_result={"T": "2.36824634628600988 s", "omega": "2.65309616840881415 rad/s",
                     "omega_0": "3.13155712066696941 rad/s"},

@@ -5,13 +5,13 @@ The physics is in :mod:`dyncalc.physics.rigid`; the references are to Gross et a
 """
 from __future__ import annotations
 
+from ..physics.bodies import KAPPA
 from ..units import DIMENSIONLESS, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from . import Constraint, Param, Scene, register
 from .basic import gravity
 
 #: Shape factors ``kappa = J_C / (m r^2)`` of the bodies a ``body=`` parameter names.
-BODIES = {"solid-sphere": 0.4, "hollow-sphere": 2 / 3, "solid-cylinder": 0.5,
-          "hollow-cylinder": 1.0, "hoop": 1.0}
+BODIES = KAPPA
 
 PHYSICS = "dyncalc.physics.rigid"
 
