@@ -41,5 +41,5 @@ def test_readme_example(command, expected):
     words = shlex.split(command)
     assert words[0] == "dyncalc"
     result = CliRunner().invoke(cli, words[1:])
-    shown = (result.stdout + result.stderr).splitlines()
+    shown = result.output.splitlines()  # stdout and stderr interleaved, as on a terminal
     assert shown == expected
