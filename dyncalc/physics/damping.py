@@ -17,11 +17,14 @@ import math
 
 from ..errors import PhysicsError
 from ..units import Q_
-from .numerics import monomial, root_monomial
+from .numerics import Wide, monomial, root_monomial, sqrt_ratio, two_product
 from .outcome import Outcome, damped, periodic
 
 __all__ = ["pendulum_spring_dashpot", "rod_in_fluid", "frame_brace_damper",
-           "small_damping_error", "FRAME_METHODS"]
+           "small_damping_error", "FRAME_METHODS", "TWO_PI", "CRITICAL_BAND", "REGIMES",
+           "zeta_from_decrement", "decrement_from_zeta", "decrement_from_ratio",
+           "damping_from_coefficients", "damping_from_decrement", "damping_from_zeta",
+           "free_response"]
 
 #: The methods frame-brace-damper offers besides ``auto``.
 FRAME_METHODS = ("exact", "small-damping")
@@ -299,3 +302,315 @@ def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) ->
         values["y_max"] = Q_(y_max, "m")
     return Outcome(values, model="linear", method=method, error_estimate=estimate,
                    warnings=warnings, assumptions=assumptions)
+
+
+# --- the damping-ratio command: zeta from a measurement --------------------------------------
+
+#: ``2 pi`` (the float nearest it; its relative error is 3.9e-17).
+TWO_PI = 2.0 * math.pi
+
+#: ``|1 - zeta^2|`` at or below this (``2**-50``, about 8.9e-16) counts as critical damping.
+#: The inputs themselves carry a relative rounding of ``2**-53`` each (more after a unit
+#: conversion), so ``c^2 / (4 k m)`` is only known to about four roundings: a system closer
+#: than that to critical damping cannot be told from critical with float64 inputs.
+CRITICAL_BAND = 2.0 ** -50
+
+#: The regimes, in order of growing damping.
+REGIMES = ("undamped", "underdamped", "critically damped", "overdamped")
+
+
+def zeta_from_decrement(delta: float) -> float:
+    """Damping ratio from the logarithmic decrement per cycle.
+
+    .. math:: \\zeta = \\frac{\\delta}{\\sqrt{4\\pi^2 + \\delta^2}}
+              = \\frac{\\delta}{\\operatorname{hypot}(2\\pi, \\delta)}
+
+    ``hypot`` neither overflows for a huge decrement nor loses the small one: two roundings
+    (within about 1.5 ulp) from 1e-300 to 1e300.
+
+    >>> round(zeta_from_decrement(math.log(10) / 10), 9)  # E5.18: a tenth in ten cycles
+    0.036622197
+    >>> zeta_from_decrement(1e-12)  # delta / (2 pi)
+    1.5915494309189534e-13
+    """
+    return delta / math.hypot(TWO_PI, delta)
+
+
+def decrement_from_zeta(zeta: float) -> float:
+    """Logarithmic decrement per cycle of an underdamped oscillator (``0 <= zeta < 1``).
+
+    .. math:: \\delta = \\frac{2\\pi\\zeta}{\\sqrt{(1-\\zeta)(1+\\zeta)}}
+
+    ``(1 - zeta)(1 + zeta)`` rather than ``1 - zeta^2``: for zeta a hair below 1 the
+    difference ``1 - zeta`` is exact (Sterbenz) and the result keeps its digits.
+
+    >>> round(decrement_from_zeta(0.036622197), 6)
+    0.230259
+    >>> decrement_from_zeta(0.0)
+    0.0
+    """
+    return TWO_PI * zeta / math.sqrt((1.0 - zeta) * (1.0 + zeta))
+
+
+def decrement_from_ratio(ratio: float, cycles: int) -> float:
+    """Logarithmic decrement from the ratio ``x_i / x_(i+N)`` of two peaks ``N`` cycles apart.
+
+    .. math:: \\delta = \\frac{\\ln R}{N}
+
+    >>> decrement_from_ratio(math.e ** 2, 2)
+    1.0
+    """
+    return math.log(ratio) / cycles
+
+
+def _critical_wide(k: float, m: float) -> Wide:
+    """``c_c = 2 sqrt(k m)`` as a :class:`Wide` (no overflow of ``k m``)."""
+    return (Wide(4.0) * Wide(k) * Wide(m)).sqrt()
+
+
+def _excess(c: float, k: float, m: float) -> tuple[float, int]:
+    """``4 k m - c^2`` as ``(mantissa, exponent)``: the value is ``mantissa * 2**exponent``.
+
+    Both products are formed exactly from the binary mantissas (:func:`two_product`) and the
+    four exact parts are summed once (``math.fsum``): the sign is exact for the float inputs and
+    the value is correctly rounded, however close ``c`` is to ``2 sqrt(k m)``. This is what keeps
+    ``omega_d`` and ``delta`` accurate for zeta a hair below 1 (the naive ``1 - zeta^2`` from a
+    rounded zeta loses ``log10(1/(1 - zeta))`` digits).
+    """
+    mk, ek = math.frexp(k)
+    mm, em = math.frexp(m)
+    mc, ec = math.frexp(c)
+    p1, e1 = two_product(mk, mm)
+    p2, e2 = two_product(mc, mc)
+    a, b = ek + em + 2, 2 * ec  # 4 k m = (p1 + e1) 2**a, c^2 = (p2 + e2) 2**b
+    top = max(a, b)
+    parts = [math.ldexp(p1, a - top), math.ldexp(e1, a - top),
+             -math.ldexp(p2, b - top), -math.ldexp(e2, b - top)]
+    return math.fsum(parts), top
+
+
+def _overdamped_note(zeta: float, regime: str) -> str:
+    return (f"zeta = {zeta:.6g}: the system is {regime}; it does not oscillate, so there is no "
+            "damped frequency, period or logarithmic decrement")
+
+
+def damping_from_coefficients(c, k, m) -> Outcome:
+    """Damping ratio and damped motion of a mass ``m`` on a spring ``k`` with a viscous
+    damper ``c``: ``m x'' + c x' + k x = 0``.
+
+    .. math::
+        c_c = 2\\sqrt{k m}, \\quad \\zeta = \\frac{c}{c_c}, \\quad
+        \\omega = \\sqrt{k/m}, \\quad \\omega_d = \\frac{\\sqrt{4 k m - c^2}}{2 m}, \\quad
+        \\delta = \\frac{2\\pi c}{\\sqrt{4 k m - c^2}}, \\quad Q = \\frac{c_c}{2c},
+        \\quad \\xi = \\frac{c}{2m}
+
+    Parameters
+    ----------
+    c : Quantity
+        Damping coefficient, ``>= 0`` ``[force]*[time]/[length]``.
+    k : Quantity
+        Stiffness, ``> 0`` ``[force]/[length]``.
+    m : Quantity
+        Mass, ``> 0`` ``[mass]``.
+
+    Returns
+    -------
+    Outcome with ``zeta``, ``regime`` (a word), ``c_c`` and ``c`` (N s/m), ``omega`` (rad/s),
+    ``xi`` (1/s), ``Q`` when ``c > 0``, and when underdamped ``delta``, ``omega_d``, ``f_d``,
+    ``T_d``. A value beyond float64 is ``inf`` (the caller reports it).
+
+    Notes
+    -----
+    Every product and root is formed from binary mantissas and exponents (:class:`Wide`), so
+    inputs from 1e-300 to 1e300 neither overflow nor underflow on the way. ``4 k m - c^2`` is
+    formed exactly (see :func:`_excess`), so ``omega_d`` and ``delta`` keep their digits for
+    zeta a hair below 1. The regime follows from the sign of ``4 k m - c^2``; when
+    ``|1 - zeta^2| <= CRITICAL_BAND`` (within the rounding of the inputs, for instance ``c``
+    typed as the ``c_c`` printed for the same ``k`` and ``m``) the system is taken as
+    critically damped, with ``zeta = 1`` exactly.
+
+    Examples
+    --------
+    >>> from dyncalc.units import Q_
+    >>> out = damping_from_coefficients(Q_(4, "N*s/m"), Q_(100, "N/m"), Q_(1, "kg"))
+    >>> out.values["zeta"], out.values["regime"], out.values["c_c"]
+    (0.2, 'underdamped', <Quantity(20.0, 'newton * second / meter')>)
+    >>> damping_from_coefficients(Q_(20, "N*s/m"), Q_(100, "N/m"), Q_(1, "kg")).values["regime"]
+    'critically damped'
+    """
+    c_, k_, m_ = _si(c, "N*s/m"), _si(k, "N/m"), _si(m, "kg")
+    critical = _critical_wide(k_, m_)
+    values: dict = {"c_c": Q_(float(critical), "N*s/m"), "c": Q_(c_, "N*s/m"),
+                    "omega": Q_(sqrt_ratio(k_, m_), "rad/s")}
+    notes: list[str] = []
+    if c_ == 0.0:
+        values.update(zeta=0.0, delta=0.0, regime="undamped", xi=Q_(0.0, "1/s"))
+        values.update(periodic(values["omega"].magnitude, "_d"))
+        notes.append("zeta = 0: undamped; Q is unbounded and not given")
+        return _ordered(values, notes)
+    excess, exponent = _excess(c_, k_, m_)
+    # 1 - zeta^2 = (4 k m - c^2) / (4 k m), from the exact excess
+    four_km = Wide(4.0) * Wide(k_) * Wide(m_)
+    fraction = float(Wide(abs(excess), exponent) / four_km)
+    values["xi"] = Q_(float(Wide(c_) / Wide(m_) * Wide(0.5)), "1/s")
+    values["Q"] = float(critical / Wide(c_) * Wide(0.5))
+    if fraction <= CRITICAL_BAND:
+        values.update(zeta=1.0, regime="critically damped", Q=0.5)
+        if excess != 0.0:
+            notes.append(f"c differs from c_c = 2 sqrt(k m) by less than the rounding of the "
+                         f"inputs (|1 - zeta^2| = {fraction:.2g} <= 2^-50): taken as critically "
+                         "damped, zeta = 1")
+        notes.append(_overdamped_note(1.0, "critically damped"))
+        return _ordered(values, notes)
+    zeta = float(Wide(c_) / critical)
+    values["zeta"] = zeta
+    if excess < 0.0:
+        values["regime"] = "overdamped"
+        notes.append(_overdamped_note(zeta, "overdamped"))
+        return _ordered(values, notes)
+    root = Wide(excess, exponent).sqrt()          # sqrt(4 k m - c^2)
+    values["regime"] = "underdamped"
+    values["delta"] = float(Wide(TWO_PI) * Wide(c_) / root)
+    omega_d = root / Wide(m_) * Wide(0.5)
+    values["omega_d"] = Q_(float(omega_d), "rad/s")
+    values["f_d"] = Q_(float(omega_d / Wide(TWO_PI)), "Hz")
+    values["T_d"] = Q_(float(Wide(TWO_PI) / omega_d), "s")
+    return _ordered(values, notes)
+
+
+def damping_from_decrement(delta: float, omega=None, k=None, m=None) -> Outcome:
+    """Damping ratio and damped motion from a logarithmic decrement per cycle.
+
+    .. math::
+        h = \\sqrt{4\\pi^2 + \\delta^2}, \\quad \\zeta = \\frac{\\delta}{h}, \\quad
+        \\sqrt{1-\\zeta^2} = \\frac{2\\pi}{h}, \\quad Q = \\frac{h}{2\\delta}, \\quad
+        \\omega_d = \\frac{2\\pi\\omega}{h}, \\quad T_d = \\frac{h}{\\omega}
+
+    Parameters
+    ----------
+    delta : float
+        ``ln(x_i / x_(i+1))``, ``>= 0`` and finite.
+    omega : Quantity, optional
+        Undamped natural angular frequency ``[angle]/[time]``.
+    k, m : Quantity, optional
+        Stiffness and mass (both or neither; not with ``omega``): give ``omega = sqrt(k/m)``,
+        ``c_c = 2 sqrt(k m)`` and ``c = zeta c_c``.
+
+    Returns
+    -------
+    Outcome with ``zeta``, ``delta``, ``regime`` (``undamped`` for ``delta = 0``, else
+    ``underdamped``: a decrement is only measured on an oscillation), ``Q`` when
+    ``delta > 0``; with a natural frequency ``xi``, ``omega_d``, ``f_d``, ``T_d``; with k and m
+    also ``omega``, ``c_c``, ``c``.
+
+    Notes
+    -----
+    ``sqrt(1 - zeta^2)`` is taken as ``2 pi / h``, never from zeta, so the damped frequency of
+    a huge decrement (zeta rounds to 1) is still right.
+
+    Examples
+    --------
+    Example 5.18 of [1]: the amplitude falls to a tenth in ten cycles, zeta = 0.037:
+
+    >>> out = damping_from_decrement(math.log(10) / 10)
+    >>> round(out.values["zeta"], 6), out.values["regime"]
+    (0.036622, 'underdamped')
+    """
+    h = math.hypot(TWO_PI, delta)
+    values: dict = {"zeta": delta / h, "delta": float(delta),
+                    "regime": "undamped" if delta == 0.0 else "underdamped"}
+    notes: list[str] = []
+    if delta > 0.0:
+        values["Q"] = float(Wide(h) / Wide(delta) * Wide(0.5))
+    else:
+        notes.append("zeta = 0: undamped; Q is unbounded and not given")
+    omega_si = None
+    if omega is not None:
+        omega_si = _si(omega, "rad/s")
+    elif k is not None and m is not None:
+        k_, m_ = _si(k, "N/m"), _si(m, "kg")
+        omega_si = sqrt_ratio(k_, m_)
+        critical = _critical_wide(k_, m_)
+        values["omega"] = Q_(omega_si, "rad/s")
+        values["c_c"] = Q_(float(critical), "N*s/m")
+        values["c"] = Q_(float(critical * Wide(delta) / Wide(h)), "N*s/m")
+    if omega_si is not None:
+        values["xi"] = Q_(float(Wide(omega_si) * Wide(delta) / Wide(h)), "1/s")
+        values["omega_d"] = Q_(float(Wide(omega_si) * Wide(TWO_PI) / Wide(h)), "rad/s")
+        values["f_d"] = Q_(float(Wide(omega_si) / Wide(h)), "Hz")
+        values["T_d"] = Q_(float(Wide(h) / Wide(omega_si)), "s")
+    return _ordered(values, notes)
+
+
+def damping_from_zeta(zeta: float) -> Outcome:
+    """Decrement, quality factor and regime of an oscillator of damping ratio ``zeta >= 0``.
+
+    ``delta = 2 pi zeta / sqrt((1 - zeta)(1 + zeta))`` below critical damping,
+    ``Q = 1/(2 zeta)`` for ``zeta > 0``. A zeta with ``|1 - zeta^2| <= CRITICAL_BAND`` is
+    critical damping (``zeta`` is then returned as exactly 1).
+
+    >>> out = damping_from_zeta(0.5)
+    >>> round(out.values["delta"], 12), out.values["Q"], out.values["regime"]
+    (3.627598728468, 1.0, 'underdamped')
+    >>> damping_from_zeta(1.0 - 2.0 ** -52).values["regime"]
+    'critically damped'
+    """
+    values: dict = {"zeta": float(zeta)}
+    notes: list[str] = []
+    if zeta == 0.0:
+        values.update(delta=0.0, regime="undamped")
+        notes.append("zeta = 0: undamped; Q is unbounded and not given")
+        return Outcome(values, warnings=notes)
+    fraction = abs((1.0 - zeta) * (1.0 + zeta))
+    if fraction <= CRITICAL_BAND:
+        values.update(zeta=1.0, regime="critically damped", Q=0.5)
+        if zeta != 1.0:
+            notes.append(f"zeta = {zeta!r} differs from 1 by less than the rounding of the "
+                         f"inputs (|1 - zeta^2| = {fraction:.2g} <= 2^-50): taken as critically "
+                         "damped, zeta = 1")
+        return Outcome(values, warnings=notes)
+    if zeta < 1.0:
+        values.update(delta=decrement_from_zeta(zeta), regime="underdamped")
+    else:
+        values["regime"] = "overdamped"
+    values["Q"] = 0.5 / zeta
+    return Outcome(values, warnings=notes)
+
+
+_ORDER = ("zeta", "delta", "regime", "Q", "c_c", "c", "omega", "xi", "omega_d", "f_d", "T_d")
+
+
+def _ordered(values: dict, notes: list[str]) -> Outcome:
+    """The values in the order the damping-ratio command shows them."""
+    ordered = {name: values[name] for name in _ORDER if name in values}
+    return Outcome(ordered, model="linear", method="closed-form", warnings=notes)
+
+
+def free_response(zeta: float, tau):
+    """``x(tau) / x(0)`` of an oscillator released from rest: ``x(0) = 1``, ``x'(0) = 0``.
+
+    ``tau = omega t`` is the dimensionless time (``omega`` the undamped natural frequency);
+    ``x'' + 2 zeta x' + x = 0``. Underdamped, with ``s = sqrt((1 - zeta)(1 + zeta))``:
+    ``x = exp(-zeta tau) (cos(s tau) + (zeta/s) sin(s tau))``; critical:
+    ``x = (1 + tau) exp(-tau)``; overdamped, with the slow and fast rates
+    ``a = 1/(zeta + r)``, ``b = zeta + r``, ``r = sqrt(zeta - 1) sqrt(zeta + 1)`` (no overflow
+    of ``zeta^2``): ``x = (b exp(-a tau) - a exp(-b tau)) / (b - a)``.
+
+    >>> float(free_response(0.0, math.pi))
+    -1.0
+    >>> float(free_response(1.0, 0.0)), float(free_response(3.0, 0.0))
+    (1.0, 1.0)
+    """
+    import numpy as np
+
+    tau = np.asarray(tau, dtype=float)
+    if zeta < 1.0:
+        s = math.sqrt((1.0 - zeta) * (1.0 + zeta))
+        return np.exp(-zeta * tau) * (np.cos(s * tau) + (zeta / s) * np.sin(s * tau))
+    if zeta == 1.0:
+        return (1.0 + tau) * np.exp(-tau)
+    r = math.sqrt(zeta - 1.0) * math.sqrt(zeta + 1.0)
+    fast = zeta + r
+    slow = 1.0 / fast
+    with np.errstate(over="ignore", under="ignore"):  # exp(-fast tau) -> 0 is right
+        return (fast * np.exp(-slow * tau) - slow * np.exp(-fast * tau)) / (fast - slow)

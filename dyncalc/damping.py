@@ -1,0 +1,577 @@
+"""``damping-ratio``: the damping ratio, decrement, regime and damped period from a measurement.
+
+:func:`damping_ratio` takes the texts the user typed, reads them (``dyncalc.units``), calls the
+physics (``dyncalc.physics.damping``, ``dyncalc.physics.decay_fit``, or a damping scene through
+the scene runner) and returns a :class:`~dyncalc.result.Result`. :func:`plot_decay` draws the
+free decay of a result (matplotlib, imported only there).
+
+The input forms, exactly one of them:
+
+* ``c, k, m``            a viscous damper, a spring and a mass;
+* ``decrement``          the logarithmic decrement per cycle;
+* ``ratio, cycles``      the ratio ``x_i / x_(i+N)`` of two peaks ``N`` whole cycles apart
+  (``cycles`` defaults to 1: successive peaks);
+* ``amplitudes``         successive peaks, one per cycle, fitted;
+* ``scene, params``      a scene with a damper (rod-in-fluid, pendulum-spring-dashpot,
+  frame-brace-damper), with ``NAME=QUANTITY`` words.
+
+``omega`` (the undamped natural angular frequency), or ``k`` and ``m``, add the damped
+quantities to the decrement, ratio and amplitude forms.
+"""
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InputError, PhysicsError
+from .result import Entry, Explanation, Result, entry_from_parsed, format_number
+from .scenes.results import DECAY_RATE
+from .units import (ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS, STIFFNESS, TIME,
+                    Dim, parse_quantity, parse_unit)
+
+__all__ = ["damping_ratio", "plot_decay", "parse_amplitudes", "parse_cycles",
+           "damping_scene_names", "MAX_PEAKS", "PLOT_FORMATS"]
+
+#: The most peaks ``--amplitudes`` reads.
+MAX_PEAKS = 100_000
+
+#: File suffixes ``--plot`` writes.
+PLOT_FORMATS = (".png", ".svg", ".pdf")
+
+
+#: name -> (dimension, display unit, symbol, description) of every result this command adds.
+_KINDS = {
+    "zeta": (DIMENSIONLESS, "", "ζ", "damping ratio"),
+    "delta": (DIMENSIONLESS, "", "δ", "logarithmic decrement per cycle"),
+    "regime": (None, "", "regime", "undamped / underdamped / critically damped / overdamped"),
+    "Q": (DIMENSIONLESS, "", "Q", "quality factor 1/(2 zeta)"),
+    "c_c": (DAMPING, "N*s/m", "c_c", "critical damping coefficient 2 sqrt(k m)"),
+    "c": (DAMPING, "N*s/m", "c", "damping coefficient"),
+    "omega": (ANGULAR_RATE, "rad/s", "ω", "undamped natural angular frequency"),
+    "xi": (DECAY_RATE, "1/s", "ξ", "decay rate zeta omega (envelope exp(-xi t))"),
+    "omega_d": (ANGULAR_RATE, "rad/s", "ωd", "damped angular frequency"),
+    "f_d": (CYCLE_RATE, "Hz", "fd", "damped frequency"),
+    "T_d": (TIME, "s", "Td", "damped period"),
+    "residual": (DIMENSIONLESS, "", "s_fit", "rms scatter of ln(peaks) about the fitted envelope"),
+    "delta_se": (DIMENSIONLESS, "", "σδ", "standard error of delta from the fit"),
+}
+
+_FORMS = ("--c --k --m", "--decrement", "--ratio --cycles", "--amplitudes", "--scene")
+_USAGE = ('--c C --k K --m M, --decrement DELTA, --ratio R --cycles N, --amplitudes '
+          '"x0,x1,...", or --scene NAME NAME=QUANTITY ...')
+
+
+def damping_scene_names() -> list[str]:
+    """The scenes with a damper: those whose physics lives in ``dyncalc.physics.damping``."""
+    from .scenes import catalog
+
+    return [name for name, scene in catalog().items()
+            if scene.compute.startswith("dyncalc.physics.damping:")]
+
+
+# --- reading the inputs ----------------------------------------------------------------------
+
+_NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
+_PEAK_RE = re.compile(_NUMBER)
+_BRACKETS_RE = re.compile(r"^\s*[\(\[](.*)[\)\]]\s*(.*)$", re.S)
+
+
+def parse_amplitudes(text: str, label: str = "--amplitudes") -> tuple[np.ndarray, str]:
+    """Successive peaks ``"x0, x1, ..."`` with an optional unit after the last one
+    (``"12.1, 8.3, 5.9 mV"``, ``"[12.1, 8.3, 5.9] mm"``) -> (peaks, unit text).
+
+    Commas separate the peaks (so a comma is never a decimal point here). The unit may be any
+    unit (a length, a voltage from an oscilloscope, a percentage): only ratios of the peaks
+    matter. Every peak must be a positive finite plain number.
+
+    >>> parse_amplitudes("12.1, 8.3, 5.9 mV")
+    (array([12.1,  8.3,  5.9]), 'mV')
+    """
+    if not isinstance(text, str) or not text.strip():
+        raise InputError(f'{label} needs the peaks separated by commas, e.g. {label} '
+                         '"12.1, 8.3, 5.9 mm"')
+    m = _BRACKETS_RE.match(text)
+    if m:
+        body, unit = m.group(1), m.group(2).strip()
+        parts = body.split(",")
+    else:
+        parts = text.split(",")
+        last = parts[-1].strip()
+        num = _PEAK_RE.match(last)
+        unit = last[num.end():].strip() if num else ""
+        if num:
+            parts[-1] = num.group(0)
+    if len(parts) > MAX_PEAKS:
+        raise InputError(f"{label}: {len(parts)} peaks; dyncalc fits at most {MAX_PEAKS}")
+    if len(parts) < 2:
+        raise InputError(f"{label} needs at least 2 peaks (one per cycle) to measure a "
+                         f"decrement; got 1")
+    values = []
+    for index, part in enumerate(parts):
+        part = part.strip()
+        if not part:
+            raise InputError(f"{label}: x{index} is empty; separate the peaks by single "
+                             "commas")
+        if not _PEAK_RE.fullmatch(part):
+            raise InputError(f"{label}: x{index} ({part[:40]!r}) is not a plain number; "
+                             f'give the peaks as numbers with one unit at the end, e.g. '
+                             f'"12.1, 8.3, 5.9 mm"')
+        value = float(part)
+        if math.isinf(value):
+            raise InputError(f"{label}: x{index} ({part[:40]}) overflows float64")
+        if value <= 0.0:
+            raise InputError(f"{label}: every peak must be positive (give the peak magnitudes "
+                             f"|x|); x{index} is {part}")
+        values.append(value)
+    if unit:
+        parse_unit(unit, label=label)  # a real unit, or a clear refusal
+    return np.array(values), unit
+
+
+def parse_cycles(text: str, label: str = "--cycles") -> int:
+    """A whole number of cycles, at least 1.
+
+    >>> parse_cycles("10"), parse_cycles("1e2")
+    (10, 100)
+    """
+    value = parse_quantity(text, DIMENSIONLESS, label=label).si
+    if not float(value).is_integer():
+        raise InputError(f"{label} must be a whole number of cycles (1, 2, 3, ...); got "
+                         f"{value:.15g}")
+    if value < 1:
+        raise InputError(f"{label} must be at least 1 (a whole number of cycles); got "
+                         f"{value:.15g}")
+    return int(value)
+
+
+# --- the command -----------------------------------------------------------------------------
+
+def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None = None,
+                  omega: str | None = None, decrement: str | None = None,
+                  ratio: str | None = None, cycles: str | None = None,
+                  amplitudes: str | None = None, scene: str | None = None,
+                  params: tuple[str, ...] | list[str] = (), g: str | None = None,
+                  method: str | None = None, rtol: float | None = None,
+                  strict: bool = False) -> Result:
+    """The damping ratio and everything that follows from it, from one measurement.
+
+    Every argument is the text the user typed (``None`` when not given); see the module's
+    docstring for the forms. Returns a :class:`Result` with ``zeta``, ``delta``, ``regime``,
+    ``Q`` and, as the inputs allow, ``c_c``, ``c``, ``omega``, ``xi``, ``omega_d``, ``f_d``,
+    ``T_d`` (and ``residual``, ``delta_se`` for a fit; the scene's own results for a scene).
+
+    >>> r = damping_ratio(ratio="10", cycles="10")  # E5.18
+    >>> round(r.results["zeta"].si, 6), r.results["regime"].si
+    (0.036622, 'underdamped')
+    """
+    forms = []
+    if c is not None:
+        forms.append("--c")
+    if decrement is not None:
+        forms.append("--decrement")
+    if ratio is not None or cycles is not None:
+        forms.append("--ratio" if ratio is not None else "--cycles")
+    if amplitudes is not None:
+        forms.append("--amplitudes")
+    if scene is not None or params:
+        forms.append("--scene")
+    if not forms:
+        raise InputError(f"damping-ratio needs one measurement of the damping: {_USAGE}")
+    if len(forms) > 1:
+        raise InputError(f"damping-ratio takes one measurement of the damping, not "
+                         f"{len(forms)}: got {' and '.join(forms)}; give one of {_USAGE}")
+    form = forms[0]
+    if form == "--scene":
+        if scene is None:
+            raise InputError("NAME=QUANTITY parameters need --scene NAME (a scene with a "
+                             f"damper: {', '.join(damping_scene_names())})")
+        if omega is not None:
+            raise InputError("--omega is not used with --scene: the scene gives its own "
+                             "natural frequency")
+        return _from_scene(scene, params, k, m, g, method, rtol, strict)
+    if g is not None:
+        raise InputError("--g is a scene parameter: use it with --scene")
+    if form == "--cycles":
+        raise InputError("--cycles goes with --ratio R (the ratio x_i / x_(i+N) of two peaks "
+                         "N cycles apart)")
+    if omega is not None and (k is not None or m is not None):
+        raise InputError("give the natural frequency as --omega or as --k and --m, not both")
+    if form == "--c":
+        if k is None or m is None:
+            need = " and ".join(f"--{n}" for n, v in (("k", k), ("m", m)) if v is None)
+            raise InputError(f"--c needs {need} too: zeta = c / (2 sqrt(k m))")
+    elif (k is None) != (m is None):
+        given, other = ("--k", "--m") if m is None else ("--m", "--k")
+        raise InputError(f"{given} needs {other}: together they give the natural frequency "
+                         "sqrt(k/m) and c_c = 2 sqrt(k m)")
+    fit_method = _check_method(form, method)
+
+    inputs: dict[str, Entry] = {}
+
+    def read(name: str, text: str, dim: Dim, label: str, constraint: str | None):
+        parsed = parse_quantity(text, dim, label=label, strict=strict, constraint=constraint)
+        inputs[name] = entry_from_parsed(name, parsed, dim)
+        return parsed
+
+    from .physics import damping as phys
+
+    extra: dict = {}
+    formula: list[str] = []
+    reference = ""
+    fit = None
+    exact_zeros: set[str] = set()
+    c_unit = None
+    if form == "--c":
+        pc = read("c", c, DAMPING, "--c", "nonnegative")
+        pk = read("k", k, STIFFNESS, "--k", "positive")
+        pm = read("m", m, MASS, "--m", "positive")
+        outcome = phys.damping_from_coefficients(pc.quantity, pk.quantity, pm.quantity)
+        c_unit = inputs["c"].unit if pc.unit_text else None
+        if pc.si == 0.0:
+            exact_zeros |= {"zeta", "delta", "xi"}
+        formula = ["c_c = 2 sqrt(k m), zeta = c / c_c, omega = sqrt(k/m), xi = c / (2 m)",
+                   "underdamped: omega_d = sqrt(4 k m - c^2) / (2 m), T_d = 2 pi / omega_d, "
+                   "delta = 2 pi c / sqrt(4 k m - c^2)", "Q = c_c / (2 c) = 1/(2 zeta)"]
+    else:
+        if form == "--decrement":
+            delta = read("decrement", decrement, DIMENSIONLESS, "--decrement",
+                         "nonnegative").si
+            formula = []
+        elif form == "--ratio":
+            pr = read("ratio", ratio, DIMENSIONLESS, "--ratio", None)
+            n_cycles = parse_cycles(cycles if cycles is not None else "1")
+            inputs["cycles"] = Entry("cycles", float(n_cycles), DIMENSIONLESS,
+                                     description="whole cycles between the two peaks")
+            if pr.si < 1.0:
+                raise InputError(f"--ratio must be at least 1: it is x_i / x_(i+N), the "
+                                 f"earlier peak over the later one; got {pr.si:.15g} (for "
+                                 f"decaying peaks, did you mean {1.0 / pr.si:.6g}?)"
+                                 if pr.si > 0 else
+                                 f"--ratio must be at least 1: it is x_i / x_(i+N), the "
+                                 f"earlier peak over the later one; got {pr.si:.15g}")
+            delta = phys.decrement_from_ratio(pr.si, n_cycles)
+            formula = ["delta = ln(R) / N"]
+            reference = "E5.18"
+        else:
+            peaks, unit = parse_amplitudes(amplitudes)
+            inputs["amplitudes"] = Entry("amplitudes", peaks, None, unit=unit,
+                                         description="successive peaks, one per cycle")
+            fit = _fit(peaks, fit_method, rtol)
+            delta = fit.delta
+            extra["fit"] = fit.as_dict()
+            formula = (["ln x_i = ln x0 - delta i, least squares over the peaks i = 0 .. n-1"]
+                       if fit_method == "log-linear" else
+                       ["x_i = x0 exp(-delta i), least squares over the peaks i = 0 .. n-1"])
+        if delta == 0.0:
+            exact_zeros |= {"zeta", "delta", "xi", "c"}
+        kw = {}
+        if omega is not None:
+            kw["omega"] = read("omega", omega, ANGULAR_RATE, "--omega", "positive").quantity
+        if k is not None:
+            kw["k"] = read("k", k, STIFFNESS, "--k", "positive").quantity
+            kw["m"] = read("m", m, MASS, "--m", "positive").quantity
+        outcome = phys.damping_from_decrement(delta, **kw)
+        formula += ["zeta = delta / sqrt(4 pi^2 + delta^2), Q = 1/(2 zeta)"]
+        if kw:
+            formula.append("omega_d = omega sqrt(1 - zeta^2) = 2 pi omega / sqrt(4 pi^2 + "
+                           "delta^2), T_d = 2 pi / omega_d, xi = zeta omega")
+        if "k" in kw:
+            formula.append("omega = sqrt(k/m), c_c = 2 sqrt(k m), c = zeta c_c")
+
+    results = {name: _entry(name, value) for name, value in outcome.values.items()}
+    if c_unit is not None:
+        for name in ("c", "c_c"):
+            results[name].unit = c_unit
+        results["c"].exact = inputs["c"].exact
+    if fit is not None:
+        results["residual"] = _entry("residual", fit.residual)
+        if fit.delta_se is not None:
+            results["delta_se"] = _entry("delta_se", fit.delta_se)
+    warnings = list(outcome.warnings) + (fit.warnings if fit is not None else [])
+    warnings += _overflow_warnings(results)
+    result = Result(command="damping-ratio", results=results, inputs=inputs, scene=None,
+                    model="linear", method=fit_method or "closed-form", warnings=warnings,
+                    extra=extra)
+    result.explanation = _explain(formula, inputs, results, reference, fit)
+    result.add_underflow_warnings(exact_zeros)
+    return result
+
+
+def _check_method(form: str, method: str | None) -> str | None:
+    """The fitting method for ``--amplitudes`` (``None`` for the closed forms)."""
+    from .physics.decay_fit import FIT_METHODS
+
+    if form == "--amplitudes":
+        if method in (None, "auto"):
+            return FIT_METHODS[0]
+        if method not in FIT_METHODS:
+            raise InputError(f"--method {method} is not offered for --amplitudes; it offers "
+                             f"{FIT_METHODS[0]} (the default) and {FIT_METHODS[1]}")
+        return method
+    if method not in (None, "auto", "closed-form"):
+        raise InputError(f"--method {method} does not apply to {form}, which has a closed form; "
+                         "--method log-linear or nonlinear chooses the fit of --amplitudes")
+    return None
+
+
+def _fit(peaks: np.ndarray, method: str, rtol: float | None):
+    """Fit the peaks; refuse peaks that grow, take non-significant growth as no decay."""
+    from .physics.decay_fit import fit_decrement
+
+    fit = fit_decrement(peaks, method=method, rtol=1e-9 if rtol is None else rtol)
+    if fit.delta < 0.0:
+        se = fit.delta_se
+        if se is None or fit.delta + 2.0 * se < 0.0:
+            spread = f" +/- {se:.2g}" if se is not None else ""
+            raise PhysicsError(f"--amplitudes: the peaks grow (fitted delta = {fit.delta:.4g}"
+                               f"{spread} per cycle): that is not a free decay; list the peaks "
+                               "in time order, the first peak first")
+        fit.warnings.append(f"the peaks do not decay measurably: the fitted delta = "
+                            f"{fit.delta:.3g} +/- {se:.2g} per cycle is not distinguishable "
+                            "from zero; taken as 0 (undamped)")
+        fit.x0 = float(np.exp(np.mean(np.log(peaks))))
+        fit.delta = 0.0
+    return fit
+
+
+def _entry(name: str, value) -> Entry:
+    dim, unit, symbol, description = _KINDS[name]
+    if isinstance(value, str):
+        return Entry(name, value, None, unit="", symbol=symbol, description=description)
+    if hasattr(value, "units"):
+        value = value.to(dim.si.replace("^", "**")).magnitude
+    return Entry(name, float(value), dim, unit=unit, symbol=symbol, description=description)
+
+
+def _overflow_warnings(results: dict[str, Entry]) -> list[str]:
+    """Results beyond float64 are kept as inf (null in JSON) with a warning (as the scenes)."""
+    warnings = []
+    for name, entry in results.items():
+        if isinstance(entry.si, float) and math.isinf(entry.si):
+            entry.overflowed = True
+            warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
+                            f"{entry.dim.si if entry.dim else ''}); it is left out (null in "
+                            "JSON)")
+    return warnings
+
+
+def _shown(entry: Entry) -> str:
+    value = entry.value_in()
+    unit = f" {entry.unit}" if entry.unit else ""
+    return f"{entry.name} = {format_number(value, 6)}{unit}"
+
+
+def _explain(formula, inputs, results, reference, fit) -> Explanation:
+    from .physics.damping import CRITICAL_BAND
+
+    assumptions = ["linear viscous damping: the peaks fall geometrically, one factor "
+                   "exp(delta) per cycle",
+                   "regime from zeta: critically damped when |1 - zeta^2| <= 2^-50 "
+                   f"({CRITICAL_BAND:.2g}), the rounding of the inputs"]
+    if fit is not None:
+        from .physics.decay_fit import CURVATURE_LIMIT, R2_LIMIT
+
+        assumptions.append(
+            "peaks one full cycle apart, in time order; not exponential when ln(x) bends "
+            "(quadratic term significant at 0.1% and changing the decrement by more than "
+            f"{100 * CURVATURE_LIMIT:.0f}%) or scatters (R^2 < {R2_LIMIT})")
+    return Explanation(formula=formula,
+                       substituted=[_shown(e) for e in inputs.values()]
+                       + [_shown(e) for e in results.values()],
+                       assumptions=assumptions, reference=reference)
+
+
+# --- scenes with a damper --------------------------------------------------------------------
+
+def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
+    from .checks import split_assignment
+    from .physics.damping import damping_from_zeta
+    from .scenes import get_scene
+    from .scenes.runner import run_scene
+
+    scene = get_scene(name)
+    damped = damping_scene_names()
+    if scene.name not in damped:
+        raise InputError(f"damping-ratio --scene takes a scene with a damper: "
+                         f"{', '.join(damped)}; {scene.name} has none (natural-frequency "
+                         "computes it)")
+    texts: dict[str, str] = {}
+    labels: dict[str, str] = {}
+    for option, text in (("k", k), ("m", m), ("g", g)):
+        if text is not None:
+            texts[option], labels[option] = text, f"--{option}"
+    for word in params:
+        key, text = split_assignment(word, "a scene parameter")
+        if key in texts:
+            raise InputError(f"{key} is given twice ({labels[key]} and {key}=)")
+        texts[key], labels[key] = text, f"{key}="
+    result = run_scene(scene, texts, labels=labels, method=method, rtol=rtol, strict=strict,
+                       command="damping-ratio")
+    zeta = result.results["zeta"].si
+    added = damping_from_zeta(zeta)
+    results: dict[str, Entry] = {}
+    for key, entry in result.results.items():
+        results[key] = entry
+        if key == "zeta":
+            for extra_name, value in added.values.items():
+                if extra_name != "zeta":
+                    results[extra_name] = _entry(extra_name, value)
+    warnings = list(result.warnings)
+    if added.values["zeta"] != zeta:  # within rounding of critical: exactly critical
+        results["zeta"].si = added.values["zeta"]
+        for key in ("omega_d", "f_d", "T_d"):
+            results.pop(key, None)
+        # the scene's own words on the regime were about the unrounded zeta
+        warnings = [w for w in warnings if not w.startswith("zeta = ")]
+        warnings += added.warnings
+        warnings.append("zeta = 1: the system is critically damped; it does not oscillate, "
+                        "so there is no damped frequency, period or logarithmic decrement")
+    else:
+        warnings += [w for w in added.warnings if w not in warnings]
+    result.results = results
+    result.warnings = warnings
+    if result.explanation is not None:
+        result.explanation.formula.append(
+            "delta = 2 pi zeta / sqrt((1 - zeta)(1 + zeta)) (underdamped), Q = 1/(2 zeta)")
+        result.explanation.substituted += [_shown(results[n]) for n in added.values
+                                           if n in results and n != "zeta"]
+    return result
+
+
+# --- the picture -----------------------------------------------------------------------------
+
+def plot_decay(result: Result, path: str) -> str:
+    """Draw the free decay of a damping-ratio result into ``path`` (PNG, SVG or PDF).
+
+    For fitted peaks: the measured peaks with the fitted envelope ``x0 exp(-delta i)``, on a
+    linear and on a logarithmic axis (where an exponential decay is a straight line). Otherwise:
+    the response ``x(t)`` from a unit initial displacement released from rest, over a few
+    periods, with its envelope; in seconds when the natural frequency is known, else against
+    damped cycles (or ``omega t``) with a warning saying so. matplotlib is imported here only,
+    with its Agg canvas (no display needed). Returns the path written.
+    """
+    target = Path(path)
+    if target.suffix.lower() not in PLOT_FORMATS:
+        raise InputError(f"--plot: {path[:80]!r} must end in {', '.join(PLOT_FORMATS[:-1])} or {PLOT_FORMATS[-1]}")
+    try:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+    except ImportError:
+        raise InputError("--plot needs matplotlib: pip install 'dyncalc[plot]'") from None
+
+    fig = Figure(figsize=(9.0, 4.8), dpi=100, layout="constrained")
+    FigureCanvasAgg(fig)
+    if "amplitudes" in result.inputs:
+        _draw_peaks(fig, result)
+    else:
+        _draw_response(fig, result)
+    try:
+        fig.savefig(target)
+    except OSError as exc:
+        raise InputError(f"--plot: cannot write {path[:80]!r}: {exc.strerror or exc}") from None
+    result.extra["plot"] = str(target)
+    return str(target)
+
+
+def _value(result: Result, name: str):
+    entry = result.results.get(name)
+    if entry is None or entry.overflowed or not isinstance(entry.si, float):
+        return None
+    return entry.si
+
+
+def _natural_frequency(result: Result):
+    if "omega" in result.results:
+        return _value(result, "omega")
+    if "omega" in result.inputs:
+        return result.inputs["omega"].si
+    return None
+
+
+def _draw_peaks(fig, result: Result) -> None:
+    peaks = np.asarray(result.inputs["amplitudes"].si, dtype=float)
+    unit = result.inputs["amplitudes"].unit
+    fit = result.extra["fit"]
+    delta, x0 = _value(result, "delta") or 0.0, fit["x0"]
+    zeta = _value(result, "zeta")
+    n = peaks.size
+    period = _value(result, "T_d")
+    cycles = np.arange(n)
+    fine = np.linspace(0.0, n - 1, 400)
+    if period is not None:
+        xs, xf, xlabel = cycles * period, fine * period, "time since the first peak (s)"
+    else:
+        xs, xf, xlabel = cycles, fine, "cycle i"
+    envelope = x0 * np.exp(-delta * fine)
+    label_fit = f"fitted envelope x0 exp(-δ i), δ = {delta:.4g} ({result.method})"
+    ylabel = f"peak amplitude ({unit})" if unit else "peak amplitude"
+    for ax, log in ((fig.add_subplot(1, 2, 1), False), (fig.add_subplot(1, 2, 2), True)):
+        ax.plot(xf, envelope, "-", color="tab:blue", label=label_fit)
+        ax.plot(xs, peaks, "o", color="tab:red", label=f"measured peaks ({n})")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, which="both", alpha=0.3)
+        if log:
+            from matplotlib.ticker import FuncFormatter
+
+            ax.set_yscale("log")
+            plain = FuncFormatter(lambda v, _pos: f"{v:g}")
+            ax.yaxis.set_major_formatter(plain)
+            ax.yaxis.set_minor_formatter(plain)
+            ax.set_title("logarithmic axis: exponential = straight line", fontsize=10)
+        else:
+            ax.set_ylim(bottom=0.0)
+            ax.set_title("measured peaks and fitted envelope", fontsize=10)
+            ax.legend(fontsize=8)
+    fig.suptitle(f"damping-ratio: ζ = {format_number(zeta, 4)}, δ = {delta:.4g}, "
+                 f"fit residual {fit['residual']:.2g}"
+                 + ("  (NOT exponential: see warnings)" if fit["systematic"]
+                    or fit["scattered"] else ""), fontsize=11)
+
+
+def _draw_response(fig, result: Result) -> None:
+    from .physics.damping import free_response
+
+    zeta = _value(result, "zeta") or 0.0
+    regime = result.results["regime"].si
+    omega = _natural_frequency(result)
+    ax = fig.add_subplot(1, 1, 1)
+    oscillates = regime in ("undamped", "underdamped")
+    if oscillates:
+        s = math.sqrt((1.0 - zeta) * (1.0 + zeta))
+        if regime == "underdamped" and zeta >= 1.0:  # a huge decrement: zeta rounded to 1
+            delta = _value(result, "delta")
+            s = 2.0 * math.pi / math.hypot(2.0 * math.pi, delta)
+        cycle = 2.0 * math.pi / s                       # one damped period in omega t
+        span = 5.0 * cycle
+        if zeta > 0.0:
+            span = min(span, max(1.5 * cycle, math.log(1e3) / zeta))
+    else:
+        slow = 1.0 if zeta == 1.0 else 1.0 / (zeta + math.sqrt(zeta - 1.0)
+                                              * math.sqrt(zeta + 1.0))
+        span = (8.0 if zeta == 1.0 else math.log(100.0) / slow)
+    tau = np.linspace(0.0, span, 2000)
+    x = free_response(min(zeta, 1.0) if oscillates else zeta, tau)
+    if omega is not None:
+        t, xlabel = tau / omega, "time t (s)"
+    elif oscillates:
+        t, xlabel = tau / cycle, "t / T_d (damped cycles; no natural frequency given)"
+    else:
+        t, xlabel = tau, "ω t (dimensionless time; no natural frequency given)"
+    if omega is None:
+        result.warnings.append("--plot: no natural frequency given (--omega, or --k and --m), "
+                               "so the plot's time axis is dimensionless")
+    ax.plot(t, x, color="tab:blue", label="x(t) / x(0), released from rest")
+    if oscillates:
+        env = np.exp(-zeta * tau) / s
+        ax.plot(t, env, "--", color="tab:red", label="envelope ± exp(-ζ ω t) / sqrt(1 - ζ²)")
+        ax.plot(t, -env, "--", color="tab:red")
+    ax.axhline(0.0, color="black", linewidth=0.6)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("x / x(0)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="upper right")
+    ax.set_title(f"free decay: ζ = {format_number(zeta, 4)} ({regime})", fontsize=11)

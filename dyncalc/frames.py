@@ -1,0 +1,587 @@
+"""The ``coriolis`` command's computation: option texts -> checked vectors -> every term of the
+relative-motion formula -> a :class:`~dyncalc.result.Result`.
+
+Three forms, chosen by the options given:
+
+* **vectors** (``--omega 0,0,2rad/s --vr 3,0,0m/s``): components in the frame's axes; results
+  ``a_c`` (and ``|a_c|`` as ``a_c_mag``); with ``--mass`` ``F_c = -m a_c``; when any of
+  ``--r --alpha --a0 --ar`` is given, also ``a_euler = alpha x r``,
+  ``a_centripetal = Omega x (Omega x r)``, ``a_transport``, the absolute ``a`` and ``a_mag``.
+  Missing optional vectors are zero.
+* **magnitudes** (``--omega 2rad/s --vr 3m/s``): perpendicular vectors; ``a_c = 2 Omega v_r``,
+  ``F_c = m a_c``; ``--r`` is the distance from the rotation axis and ``--alpha`` turns about
+  the same axis (``a_euler = alpha r``, ``a_centripetal = Omega^2 r`` and
+  ``a_transport = hypot`` of the two, which are perpendicular). ``--a0`` and ``--ar`` need a
+  direction and are refused; the absolute ``a`` is not given (the direction of ``v_r`` in the
+  plane is not known).
+* **Earth** (``--latitude``): a local east-north-up frame turning with
+  ``Omega_E (0, cos phi, sin phi)``; ``--vr`` in east, north, up components, or ``--speed`` with
+  ``--heading`` (compass: 0 north, 90 deg east) and ``--vertical``; ``--omega`` may only change
+  the rate (a magnitude). The explanation names the directions of ``a_c`` and of the Coriolis
+  force ``-m a_c``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .errors import InputError, PhysicsError
+from .result import Entry, Explanation, Result, entry_from_parsed, format_number
+from .units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
+                    MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
+                    parse_vector)
+
+__all__ = ["coriolis_result", "OPTIONS"]
+
+#: Option name -> (dimension, description).
+OPTIONS = {
+    "omega": (ANGULAR_RATE, "angular velocity of the frame"),
+    "vr": (VELOCITY, "velocity relative to the frame"),
+    "r": (LENGTH, "position in the frame"),
+    "alpha": (ANGULAR_ACCELERATION, "angular acceleration of the frame"),
+    "a0": (ACCELERATION, "acceleration of the frame's origin"),
+    "ar": (ACCELERATION, "acceleration relative to the frame"),
+    "mass": (MASS, "mass"),
+    "latitude": (ANGLE, "latitude"),
+    "speed": (VELOCITY, "horizontal speed"),
+    "heading": (ANGLE, "compass heading (0 north, 90 deg east)"),
+    "vertical": (VELOCITY, "vertical speed (positive up)"),
+}
+
+RATE = Dim("rate", "1/[time]", "1/[time]", "1/s")
+
+REFERENCE = ("Gross et al., Engineering Mechanics 3, Chapter 6 (relative motion): E6.6 (a point "
+             "on a disk spinning on a turntable), E6.10 (a point on an eccentric platform), "
+             "E6.12 (a translating frame)")
+
+_KINDS = {  # result name -> (dim, unit, vector symbol, magnitude symbol, description)
+    "a_c": (ACCELERATION, "m/s^2", "2Ω×v_r", "2Ωv_r", "Coriolis acceleration term"),
+    "a_c_mag": (ACCELERATION, "m/s^2", "|a_c|", "|a_c|", "magnitude of a_c"),
+    "F_c": (FORCE, "N", "-m a_c", "m a_c", "Coriolis force (apparent, in the frame)"),
+    "F_c_mag": (FORCE, "N", "|F_c|", "|F_c|", "magnitude of F_c"),
+    "a_euler": (ACCELERATION, "m/s^2", "α×r", "αr", "Euler term (angular acceleration)"),
+    "a_centripetal": (ACCELERATION, "m/s^2", "Ω×(Ω×r)", "Ω²r", "centripetal term"),
+    "a_transport": (ACCELERATION, "m/s^2", "a0+α×r+Ω×(Ω×r)", "|α×r+Ω×(Ω×r)|",
+                    "transport acceleration (of the frame point)"),
+    "a": (ACCELERATION, "m/s^2", "a", "|a|", "absolute acceleration"),
+    "a_mag": (ACCELERATION, "m/s^2", "|a|", "|a|", "magnitude of a"),
+    "Omega": (ANGULAR_RATE, "rad/s", "Ω", "Ω", "Earth's angular velocity (east, north, up)"),
+    "v_r": (VELOCITY, "m/s", "v_r", "v_r", "velocity relative to the Earth (east, north, up)"),
+    "coriolis_parameter": (RATE, "1/s", "2Ω sinφ", "2Ω sinφ", "Coriolis parameter f"),
+}
+
+_COMPASS = ["north", "north-north-east", "north-east", "east-north-east", "east",
+            "east-south-east", "south-east", "south-south-east", "south", "south-south-west",
+            "south-west", "west-south-west", "west", "west-north-west", "north-west",
+            "north-north-west"]
+
+
+# --------------------------------------------------------------------------------------------
+# Reading the options
+
+
+def _fmt(value, unit: str = "") -> str:
+    if hasattr(value, "__len__"):
+        value = np.asarray(value, dtype=float) + 0.0
+    elif isinstance(value, float):
+        value += 0.0
+    text = format_number(value, 6)
+    return f"{text} {unit}" if unit else text
+
+
+def _is_vector(parsed: Parsed) -> bool:
+    return bool(np.ndim(parsed.si))
+
+
+def _input_entry(name: str, parsed: Parsed, dim: Dim, description: str) -> Entry:
+    if _is_vector(parsed):
+        return Entry(name, np.asarray(parsed.si, dtype=float) + 0.0, dim,
+                     unit=parsed.unit_text or dim.si, assumed_si=parsed.assumed_si,
+                     description=description)
+    return entry_from_parsed(name, parsed, dim, description=description)
+
+
+class _Reader:
+    """Parses the option texts, remembering the input entries in the order read."""
+
+    def __init__(self, texts: dict[str, str], strict: bool):
+        self.texts, self.strict = texts, strict
+        self.inputs: dict[str, Entry] = {}
+
+    def vector(self, name: str) -> Parsed | None:
+        text = self.texts.get(name)
+        if text is None:
+            return None
+        dim, description = OPTIONS[name]
+        parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
+                              strict=self.strict)
+        self.inputs[name] = _input_entry(name, parsed, dim, description)
+        return parsed
+
+    def scalar(self, name: str, constraint: str | None = None) -> Parsed | None:
+        text = self.texts.get(name)
+        if text is None:
+            return None
+        dim, description = OPTIONS[name]
+        parsed = parse_quantity(text, dim, label=f"--{name}", strict=self.strict,
+                                constraint=constraint)
+        self.inputs[name] = entry_from_parsed(name, parsed, dim, description=description)
+        return parsed
+
+
+def _refuse_negative(name: str, parsed: Parsed) -> None:
+    if parsed.si < 0:
+        raise InputError(f"--{name} as a scalar is a magnitude and must not be negative; got "
+                         f"{format_quantity(parsed.quantity)} (give a vector for a direction)")
+
+
+# --------------------------------------------------------------------------------------------
+# Results
+
+
+def _entry(name: str, si, vector: bool) -> Entry:
+    dim, unit, vsym, ssym, description = _KINDS[name]
+    if vector:
+        value = np.asarray(si, dtype=float) + 0.0
+    else:
+        value = float(si) + 0.0
+        if math.isinf(value):
+            raise PhysicsError(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
+                               f"{unit})")
+    return Entry(name, value, dim, unit=unit, symbol=vsym if vector else ssym,
+                 description=description)
+
+
+def _mag(v) -> float:
+    from .physics.frames import magnitude
+
+    return magnitude(v)
+
+
+def _zero(v) -> bool:
+    return not np.any(np.asarray(v) != 0.0)
+
+
+# --------------------------------------------------------------------------------------------
+# Why a term vanishes
+
+
+def _why_zero(term: str, fa, form: str) -> str | None:
+    """The reason the term ``term`` of ``fa`` vanishes, or ``None`` when it does not."""
+    given = fa.given
+    no_r = "no --r (the point is at the frame's origin)" if "r" not in given else \
+        "r = 0 (the point is at the frame's origin)"
+    if form == "scalar":
+        no_r = ("no --r (the point is on the rotation axis)" if "r" not in given else
+                "r = 0 (the point is on the rotation axis)")
+    still = "alpha = 0 (the frame turns at a constant rate)"
+    if term == "a0":
+        if "a0" not in given:
+            return "no --a0 (the frame's origin rests or moves at constant velocity)"
+        return "given as zero" if _zero(fa.a0) else None
+    if term == "a_euler":
+        if "alpha" not in given:
+            return "no --alpha (the frame turns at a constant rate)"
+        if _zero(fa.alpha):
+            return still
+        if _zero(fa.r):
+            return no_r
+        if "a_euler" in fa.parallel:
+            return "r is parallel to alpha"
+        return None
+    if term == "a_centripetal":
+        if _zero(fa.Omega):
+            return "Omega = 0 (the frame does not rotate)"
+        if _zero(fa.r):
+            return no_r
+        if "a_centripetal" in fa.parallel:
+            return "r lies on the rotation axis (parallel to Omega)"
+        return None
+    if term == "a_c":
+        if _zero(fa.Omega):
+            return "Omega = 0 (the frame does not rotate)"
+        if _zero(fa.v_r):
+            return "v_r = 0 (the point is at rest in the frame)"
+        if "a_c" in fa.parallel:
+            return "v_r is parallel to Omega (motion along the rotation axis)"
+        return None
+    if term == "a_r":
+        if "a_r" not in given:
+            return "no --ar (the velocity relative to the frame is constant)"
+        return "given as zero" if _zero(fa.a_r) else None
+    raise KeyError(term)
+
+
+def _line(label: str, expression: str, value, unit: str, why: str | None) -> str:
+    if why is not None:
+        return f"{label} = 0: {why}"
+    return f"{label} = {expression}{' = ' if expression else ''}{_fmt(value, unit)}"
+
+
+def _vector_lines(fa, full: bool, mass_si: float | None) -> list[str]:
+    """The terms of the formula with their numbers (vectors), and which vanish and why."""
+    om, v, r, al = (_fmt(x) for x in (fa.Omega, fa.v_r, fa.r, fa.alpha))
+    lines = [_line("2 Omega x v_r", f"2 {om} rad/s x {v} m/s", fa.a_c, "m/s^2",
+                   _why_zero("a_c", fa, "vector"))]
+    if not full:
+        lines.append("a0, alpha x r, Omega x (Omega x r), a_r: not computed (give --r, "
+                     "--alpha, --a0 or --ar for the absolute acceleration a)")
+    else:
+        lines += [
+            _line("a0", "", fa.a0, "m/s^2", _why_zero("a0", fa, "vector")),
+            _line("alpha x r", f"{al} rad/s^2 x {r} m", fa.a_euler, "m/s^2",
+                  _why_zero("a_euler", fa, "vector")),
+            _line("Omega x (Omega x r)", f"{om} rad/s x ({om} rad/s x {r} m)",
+                  fa.a_centripetal, "m/s^2", _why_zero("a_centripetal", fa, "vector")),
+            _line("a_r", "", fa.a_r, "m/s^2", _why_zero("a_r", fa, "vector")),
+            f"a_transport = a0 + alpha x r + Omega x (Omega x r) = "
+            f"{_fmt(fa.a_transport, 'm/s^2')}",
+            f"a = a_transport + 2 Omega x v_r + a_r = {_fmt(fa.a, 'm/s^2')}, "
+            f"|a| = {_fmt(_mag(fa.a), 'm/s^2')}",
+        ]
+    if fa.F_c is not None:
+        lines.append(f"F_c = -m a_c = -{_fmt(mass_si, 'kg')} x {_fmt(fa.a_c, 'm/s^2')} = "
+                     f"{_fmt(fa.F_c, 'N')}")
+    return lines
+
+
+# --------------------------------------------------------------------------------------------
+# Directions on the Earth
+
+
+def _compass(east: float, north: float) -> tuple[str, float]:
+    bearing = math.degrees(math.atan2(east, north)) % 360.0
+    return _COMPASS[round(bearing / 22.5) % 16], bearing
+
+
+def _direction(v) -> str:
+    """``west``, ``north and down``, ``down`` or ``none`` for an east-north-up vector."""
+    east, north, up = (float(x) for x in v)
+    parts = []
+    if east != 0.0 or north != 0.0:
+        parts.append(_compass(east, north)[0])
+    if up != 0.0:
+        parts.append("up" if up > 0 else "down")
+    return " and ".join(parts) if parts else "none"
+
+
+def _direction_line(label: str, v, unit: str) -> str:
+    east, north, up = (float(x) for x in v)
+    if east == 0.0 and north == 0.0 and up == 0.0:
+        return f"{label} is zero"
+    parts = []
+    if east != 0.0 or north != 0.0:
+        name, bearing = _compass(east, north)
+        parts.append(f"{name} (bearing {format_number(bearing, 4)} deg, horizontal part "
+                     f"{_fmt(math.hypot(east, north), unit)})")
+    if up != 0.0:
+        parts.append(f"{'up' if up > 0 else 'down'} ({_fmt(abs(up), unit)})")
+    return f"{label} points " + " and ".join(parts)
+
+
+def _side(v_r, force) -> str:
+    """Which side of the horizontal motion the horizontal force pushes."""
+    turn = float(v_r[0]) * float(force[1]) - float(v_r[1]) * float(force[0])
+    if (v_r[0] == 0.0 and v_r[1] == 0.0) or (force[0] == 0.0 and force[1] == 0.0):
+        return ""
+    if turn < 0:
+        return ": to the right of the horizontal motion"
+    if turn > 0:
+        return ": to the left of the horizontal motion"
+    return ": along the line of the horizontal motion"
+
+
+def _latitude_words(degrees: float) -> str:
+    if degrees == 0.0:
+        return "0 deg (the equator)"
+    if abs(degrees) == 90.0:
+        return f"90 deg {'N (the North Pole)' if degrees > 0 else 'S (the South Pole)'}"
+    return f"{format_number(abs(degrees), 6)} deg {'N' if degrees > 0 else 'S'}"
+
+
+# --------------------------------------------------------------------------------------------
+# The three forms
+
+
+def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Result:
+    """Compute the ``coriolis`` command from the option texts (``{"omega": "0,0,2 rad/s",
+    "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given).
+
+    Raises :class:`~dyncalc.errors.InputError` with a message saying what to change.
+
+    >>> res = coriolis_result({"omega": "2 rad/s", "vr": "3 m/s"})
+    >>> res.results["a_c"].si, res.results["a_c"].unit
+    (12.0, 'm/s^2')
+    """
+    texts = {k: v for k, v in texts.items() if v is not None}
+    unknown = set(texts) - set(OPTIONS)
+    if unknown:
+        raise InputError(f"coriolis has no option --{sorted(unknown)[0]}")
+    if "latitude" in texts:
+        return _earth(texts, strict)
+    for name in ("speed", "heading", "vertical"):
+        if name in texts:
+            raise InputError(f"--{name} describes motion over the Earth and needs --latitude; "
+                             "in a machine frame give --vr (3 components)")
+    if "omega" not in texts:
+        raise InputError("--omega is missing: give the frame's angular velocity, e.g. --omega "
+                         "'0,0,2 rad/s' ('0,0,0 rad/s' for a frame that only translates), or "
+                         "--latitude for the rotating Earth")
+    if "vr" not in texts:
+        raise InputError("--vr is missing: give the velocity relative to the frame, e.g. --vr "
+                         "'3,0,0 m/s' (or a magnitude such as '3 m/s' with a magnitude --omega)")
+    reader = _Reader(texts, strict)
+    omega = reader.vector("omega")
+    if _is_vector(omega):
+        return _vectors(reader, omega)
+    return _scalars(reader, omega)
+
+
+def _vectors(reader: _Reader, omega: Parsed) -> Result:
+    parsed = {}
+    for name in ("vr", "r", "alpha", "a0", "ar"):
+        p = reader.vector(name)
+        if p is not None and not _is_vector(p):
+            dim = OPTIONS[name][0]
+            raise InputError(f"--{name} is a magnitude but --omega is a vector; give --{name} "
+                             f"with 3 components too, e.g. '1,0,0 {dim.si}' (or every input "
+                             "as a magnitude: the scalar form)")
+        parsed[name] = p
+    mass = reader.scalar("mass", "positive")
+    return _compute(reader, omega.si, parsed["vr"].si, parsed, mass, model="vectors")
+
+
+def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, model: str,
+             earth: dict | None = None) -> Result:
+    from .physics.frames import relative_acceleration
+
+    def si(name):
+        return None if parsed.get(name) is None else parsed[name].si
+
+    fa = relative_acceleration(Omega, v_r, r=si("r"), alpha=si("alpha"), a0=si("a0"),
+                               a_r=si("ar"), m=None if mass is None else mass.si)
+    full = any(parsed.get(n) is not None for n in ("r", "alpha", "a0", "ar"))
+
+    results = {"a_c": _entry("a_c", fa.a_c, True),
+               "a_c_mag": _entry("a_c_mag", _mag(fa.a_c), False)}
+    if fa.F_c is not None:
+        results["F_c"] = _entry("F_c", fa.F_c, True)
+        results["F_c_mag"] = _entry("F_c_mag", _mag(fa.F_c), False)
+    if full:
+        for name in ("a_euler", "a_centripetal", "a_transport", "a"):
+            results[name] = _entry(name, getattr(fa, name), True)
+        results["a_mag"] = _entry("a_mag", _mag(fa.a), False)
+
+    substituted = []
+    assumptions = []
+    extra = {}
+    if earth is None:
+        substituted.append(f"Omega = {_fmt(fa.Omega, 'rad/s')}, v_r = {_fmt(fa.v_r, 'm/s')}"
+                           + (f", r = {_fmt(fa.r, 'm')}" if "r" in fa.given else ""))
+        assumptions.append("a rigid frame turning with Omega (and alpha) whose origin "
+                           "accelerates with a0; r, v_r and a_r are measured in the frame; all "
+                           "vectors are components in the frame's axes at this instant (SI)")
+    else:
+        results["Omega"] = _entry("Omega", fa.Omega, True)
+        if earth["derived_v"]:
+            results["v_r"] = _entry("v_r", fa.v_r, True)
+        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * fa.Omega[2], False)
+        substituted += earth["lines"]
+        assumptions += earth["assumptions"]
+    substituted += _vector_lines(fa, full, None if mass is None else mass.si)
+    assumptions.append("a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
+                       "an observer in the frame sees the Coriolis force F_c = -m a_c, opposite "
+                       "to a_c")
+    if earth is not None:
+        force = -fa.a_c + 0.0
+        substituted.append(_direction_line("a_c", fa.a_c, "m/s^2"))
+        if fa.F_c is None:
+            line = _direction_line("the Coriolis force F_c = -m a_c", force, "N/kg")
+        else:
+            line = _direction_line("the Coriolis force F_c = -m a_c", fa.F_c, "N")
+        substituted.append(line + _side(fa.v_r, force))
+        extra = {"frame": "east-north-up",
+                 "directions": {"a_c": _direction(fa.a_c), "F_c": _direction(force)}}
+    explanation = Explanation(
+        formula=["a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
+                 "a_transport = a0 + alpha x r + Omega x (Omega x r), a_c = 2 Omega x v_r, "
+                 "F_c = -m a_c"],
+        substituted=substituted, assumptions=assumptions, reference=REFERENCE)
+    return Result(command="coriolis", results=results, inputs=reader.inputs, model=model,
+                  method="closed-form", warnings=list(earth["warnings"] if earth else [])
+                  + fa.warnings, explanation=explanation, extra=extra)
+
+
+def _scalars(reader: _Reader, omega: Parsed) -> Result:
+    from .physics.frames import relative_acceleration
+
+    _refuse_negative("omega", omega)
+    values = {}
+    for name in ("vr", "r", "alpha"):
+        p = reader.vector(name)
+        if p is None:
+            continue
+        if _is_vector(p):
+            raise InputError(f"--{name} is a vector but --omega is a magnitude; give both with "
+                             "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
+                             "(the scalar form: perpendicular vectors)")
+        _refuse_negative(name, p)
+        values[name] = p.si
+    for name in ("a0", "ar"):
+        if name in reader.texts:
+            raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
+                             "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
+                             "form takes only --omega, --vr, --r (distance from the axis), "
+                             "--alpha and --mass")
+    mass = reader.scalar("mass", "positive")
+    Om, v = omega.si, values["vr"]
+    r, al = values.get("r"), values.get("alpha")
+    # perpendicular vectors: Omega and alpha along z, r radial along x, v_r along y
+    fa = relative_acceleration([0.0, 0.0, Om], [0.0, v, 0.0],
+                               r=None if r is None else [r, 0.0, 0.0],
+                               alpha=None if al is None else [0.0, 0.0, al],
+                               m=None if mass is None else mass.si)
+    full = r is not None or al is not None
+
+    results = {"a_c": _entry("a_c", _mag(fa.a_c), False)}
+    if fa.F_c is not None:
+        results["F_c"] = _entry("F_c", _mag(fa.F_c), False)
+    if full:
+        for name in ("a_euler", "a_centripetal", "a_transport"):
+            results[name] = _entry(name, _mag(getattr(fa, name)), False)
+
+    def why(term):
+        return _why_zero(term, fa, "scalar")
+
+    lines = [_line("a_c", f"2 Omega v_r = 2 x {_fmt(Om, 'rad/s')} x {_fmt(v, 'm/s')}",
+                   results["a_c"].si, "m/s^2", why("a_c"))]
+    if full:
+        rr = 0.0 if r is None else r
+        aa = 0.0 if al is None else al
+        lines += [
+            _line("a_euler", f"alpha r = {_fmt(aa, 'rad/s^2')} x {_fmt(rr, 'm')}",
+                  results["a_euler"].si, "m/s^2", why("a_euler")),
+            _line("a_centripetal", f"Omega^2 r = ({_fmt(Om, 'rad/s')})^2 x {_fmt(rr, 'm')}",
+                  results["a_centripetal"].si, "m/s^2", why("a_centripetal")),
+            f"a_transport = sqrt((alpha r)^2 + (Omega^2 r)^2) = "
+            f"{_fmt(results['a_transport'].si, 'm/s^2')} (the two are perpendicular; a0 = 0)",
+            "a (absolute): not computed in the scalar form: the direction of v_r relative to r "
+            "is not known; give vectors",
+        ]
+    else:
+        lines.append("a0, alpha x r, Omega x (Omega x r), a_r: not computed (give --r and "
+                     "--alpha for the transport terms, or vectors for the absolute "
+                     "acceleration)")
+    if fa.F_c is not None:
+        lines.append(f"F_c = m a_c = {_fmt(mass.si, 'kg')} x {_fmt(results['a_c'].si, 'm/s^2')}"
+                     f" = {_fmt(results['F_c'].si, 'N')} (directed opposite to a_c)")
+    explanation = Explanation(
+        formula=["|a_c| = 2 Omega v_r (Omega perpendicular to v_r)",
+                 "|alpha x r| = alpha r, |Omega x (Omega x r)| = Omega^2 r (r perpendicular to "
+                 "the axis), |F_c| = m |a_c|"],
+        substituted=lines,
+        assumptions=["scalars are magnitudes of perpendicular vectors: v_r perpendicular to "
+                     "Omega; --r is the distance from the rotation axis and --alpha turns about "
+                     "the same axis; for other angles give vectors (3 components)",
+                     "a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
+                     "the Coriolis force F_c = -m a_c is opposite to it"],
+        reference=REFERENCE)
+    return Result(command="coriolis", results=results, inputs=reader.inputs,
+                  model="magnitudes (perpendicular vectors)", method="closed-form",
+                  warnings=list(fa.warnings), explanation=explanation)
+
+
+def _earth(texts: dict[str, str], strict: bool) -> Result:
+    from .physics.frames import EARTH_RATE, earth_angular_velocity, enu_velocity
+
+    reader = _Reader(texts, strict)
+    warnings: list[str] = []
+    latitude = reader.scalar("latitude")
+    degrees = float(latitude.quantity.to("degree").magnitude)
+    if not -90.0 <= degrees <= 90.0:
+        hint = (f" (a bare number is read in radians; write {latitude.text.strip()}deg for "
+                "degrees)" if latitude.assumed_si else "")
+        raise InputError(f"--latitude must be between -90 deg and 90 deg; got "
+                         f"{format_quantity(latitude.quantity)}{hint}")
+    if latitude.assumed_si and degrees != 0.0:
+        warnings.append(f"--latitude {latitude.text.strip()} has no unit and is read in radians "
+                        f"({format_number(degrees, 6)} deg); write {latitude.text.strip()}deg "
+                        "for degrees")
+
+    rate_text = "Omega_E = 7.2921159e-05 rad/s (the Earth's sidereal rate)"
+    rate = EARTH_RATE
+    if "omega" in texts:
+        omega = reader.vector("omega")
+        if _is_vector(omega):
+            raise InputError("--omega with --latitude is the rotation rate only, a magnitude "
+                             "such as '7.2921159e-5 rad/s'; its direction follows from the "
+                             "latitude (for a vector --omega leave out --latitude)")
+        _refuse_negative("omega", omega)
+        rate = omega.si
+        rate_text = f"Omega_E = {_fmt(rate, 'rad/s')} (given by --omega)"
+
+    motion = [n for n in ("speed", "heading", "vertical") if n in texts]
+    if "vr" in texts and motion:
+        raise InputError(f"give --vr or --{motion[0]}, not both: --speed, --heading and "
+                         "--vertical are another way to give v_r")
+    derived = False
+    if "vr" in texts:
+        vr = reader.vector("vr")
+        if not _is_vector(vr):
+            raise InputError("--vr with --latitude is a vector of east, north, up components, "
+                             "e.g. --vr '0,20,0 m/s' for 20 m/s northward (or give --speed "
+                             "with --heading)")
+        v_r = vr.si
+    elif motion:
+        if ("speed" in texts) != ("heading" in texts):
+            raise InputError("--speed and --heading go together: the horizontal speed and its "
+                             "compass direction (0 = north, 90deg = east)")
+        speed = reader.scalar("speed", "nonnegative")
+        heading = reader.scalar("heading")
+        vertical = reader.scalar("vertical")
+        if heading is not None and heading.assumed_si and heading.si != 0.0:
+            warnings.append(f"--heading {heading.text.strip()} has no unit and is read in "
+                            f"radians; write {heading.text.strip()}deg for compass degrees")
+        v_r = enu_velocity(0.0 if speed is None else speed.quantity,
+                           0.0 if heading is None else heading.quantity,
+                           0.0 if vertical is None else vertical.si)
+        derived = True
+    else:
+        raise InputError("--vr is missing: give the velocity relative to the Earth as east, "
+                         "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
+                         "--heading")
+
+    parsed = {}
+    for name in ("r", "alpha", "a0", "ar"):
+        p = reader.vector(name)
+        if p is not None and not _is_vector(p):
+            raise InputError(f"--{name} with --latitude is a vector of east, north, up "
+                             f"components, e.g. '0,0,1 {OPTIONS[name][0].si}'")
+        parsed[name] = p
+    mass = reader.scalar("mass", "positive")
+
+    Omega = earth_angular_velocity(latitude.quantity, rate)
+    lines = [f"latitude phi = {_latitude_words(degrees)}; axes x east, y north, z up",
+             f"Omega = Omega_E (0, cos phi, sin phi) = {_fmt(Omega, 'rad/s')}, "
+             f"{rate_text}"]
+    if derived:
+        lines.append(f"v_r = (speed sin heading, speed cos heading, vertical) = "
+                     f"{_fmt(v_r, 'm/s')}")
+    else:
+        lines.append(f"v_r = {_fmt(v_r, 'm/s')}")
+    hemisphere = ("northern" if degrees > 0 else "southern" if degrees < 0 else "")
+    assumptions = ["a local frame fixed to the Earth's surface: x east, y north, z up; it "
+                   "turns with Omega = Omega_E (0, cos phi, sin phi)",
+                   "horizontal motion is deflected to the right in the northern hemisphere "
+                   "and to the left in the southern" + (f" (here: {hemisphere})" if hemisphere
+                                                         else " (here: the equator, no "
+                                                              "horizontal deflection of "
+                                                              "horizontal motion)")]
+    if parsed.get("r") is None:
+        assumptions.append("the centrifugal effect of the Earth's spin is part of the measured "
+                           "g; only the Coriolis term is computed")
+    earth = {"lines": lines, "assumptions": assumptions, "warnings": warnings,
+             "derived_v": derived}
+    return _compute(reader, Omega, v_r, parsed, mass, model="Earth, east-north-up",
+                    earth=earth)

@@ -1,0 +1,335 @@
+"""``rolling-onset``: the texts the user typed -> checked quantities -> the physics -> a Result.
+
+The command line stays thin: it hands the option texts to :func:`rolling_onset_result`, which
+reads and checks every quantity (dimension, sign, the rules between options), calls
+:mod:`dyncalc.physics.rolling` and builds the :class:`~dyncalc.result.Result` with its
+explanation and warnings. With ``method="ode"`` it also integrates the equations of motion,
+compares them with the closed form and times both.
+"""
+from __future__ import annotations
+
+import math
+import time
+
+from .errors import InputError, PhysicsError
+from .result import Entry, Explanation, Result, entry_from_parsed, format_number
+from .units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, TIME, VELOCITY,
+                    format_quantity, parse_quantity)
+
+__all__ = ["rolling_onset_result", "METHODS", "DEFAULT_RTOL", "DEFAULT_BODY"]
+
+#: ``--method`` choices: ``auto`` is the closed form (exact to rounding, and the cheapest).
+METHODS = ("auto", "closed-form", "ode")
+DEFAULT_RTOL = 1e-9
+DEFAULT_BODY = "solid-sphere"
+DEFAULT_G = "9.80665 m/s^2"
+
+#: name -> (dimension, display unit, symbol, description)
+_KINDS = {
+    "t_roll": (TIME, "s", "t_roll", "time until it rolls without slipping"),
+    "x_roll": (LENGTH, "m", "x_roll", "displacement along the surface until then"),
+    "v_roll": (VELOCITY, "m/s", "v_roll", "speed of the centre when it starts to roll"),
+    "omega_roll": (ANGULAR_RATE, "rad/s", "ω_roll", "spin when it starts to roll"),
+    "path_roll": (LENGTH, "m", "ℓ_roll", "path length until then (out and back)"),
+    "mu_min": (DIMENSIONLESS, "", "μ_min", "static friction that keeps it rolling on the slope"),
+}
+_LABELS = {"v0": "--v0", "mu": "--mu", "body": "--body", "kappa": "--kappa",
+           "radius": "--radius", "omega0": "--omega0", "g": "--g", "incline": "--incline"}
+_REFERENCE = ("Gross et al., Engineering Mechanics 3, Example 3.45 (bowling ball: v0 = 5 m/s, "
+              "mu = 0.3 gives 0.49 s, 2.08 m, 3.57 m/s)")
+
+
+def _num(value: float) -> str:
+    return format_number(value, 6)
+
+
+def _term(value: float, unit: str = "") -> str:
+    """A value inside a substituted formula: negative ones in parentheses."""
+    text = f"{_num(value)} {unit}".rstrip()
+    return f"({text})" if value < 0 else text
+
+
+def _bodies() -> dict[str, float]:
+    from .physics.bodies import KAPPA
+
+    return KAPPA
+
+
+def _read(texts: dict, name: str, dim, strict: bool, **kw):
+    return parse_quantity(texts[name], dim, label=_LABELS[name], strict=strict, **kw)
+
+
+def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = None,
+                         rtol: float | None = None, strict: bool = False) -> Result:
+    """Compute ``rolling-onset`` from the option texts (``{"v0": "5 m/s", "mu": "0.3"}``).
+
+    Keys: ``v0``, ``mu`` (required), ``body`` or ``kappa``, ``radius``, ``omega0``, ``g``,
+    ``incline``; ``None`` or a missing key means not given. ``method`` is one of
+    :data:`METHODS` (``None``: auto, the closed form); ``rtol`` the ODE's tolerance (default
+    1e-9); ``strict`` is ``--strict-units``.
+
+    >>> r = rolling_onset_result({"v0": "5 m/s", "mu": "0.3"})
+    >>> [(n, round(e.si, 4)) for n, e in r.results.items()]
+    [('t_roll', 0.4856), ('x_roll', 2.0811), ('v_roll', 3.5714)]
+    """
+    from .physics.rolling import onset_closed_form, slope_sin_cos
+
+    texts = {k: v for k, v in texts.items() if v is not None}
+    method = "auto" if method is None else method
+    if method not in METHODS:
+        raise InputError(f"--method must be one of {', '.join(METHODS)}; got {method!r}")
+    for name in ("v0", "mu"):
+        if name not in texts:
+            example = {"v0": "--v0 '5 m/s'", "mu": "--mu 0.3"}[name]
+            raise InputError(f"rolling-onset needs {_LABELS[name]} (e.g. {example}); see "
+                             "'dyncalc rolling-onset --help'")
+
+    inputs: dict[str, Entry] = {}
+    v0 = _read(texts, "v0", VELOCITY, strict)
+    if v0.si < 0:
+        raise InputError(f"--v0 must not be negative: it is the speed, and its direction is "
+                         f"the positive one (spin against it is a negative --omega0, moving "
+                         f"downhill a negative --incline); got {format_quantity(v0.quantity)}")
+    inputs["v0"] = entry_from_parsed("v0", v0, VELOCITY, description="initial speed")
+    mu = _read(texts, "mu", DIMENSIONLESS, strict, constraint="positive")
+    inputs["mu"] = entry_from_parsed("mu", mu, DIMENSIONLESS, description="kinetic friction")
+
+    body = texts.get("body")
+    if body is not None and "kappa" in texts:
+        raise InputError("give --body or --kappa, not both (--kappa is the shape factor "
+                         "J_C/(m r^2) of any body)")
+    if "kappa" in texts:
+        parsed = _read(texts, "kappa", DIMENSIONLESS, strict, constraint="nonnegative")
+        kappa = parsed.si
+        inputs["kappa"] = entry_from_parsed("kappa", parsed, DIMENSIONLESS,
+                                            description="shape factor J_C/(m r^2)")
+        body_name = None
+    else:
+        body_name = DEFAULT_BODY if body is None else body.strip()
+        bodies = _bodies()
+        if body_name not in bodies:
+            raise InputError(f"--body must be one of {', '.join(bodies)}; got "
+                             f"{body_name[:40]!r} (or give the shape factor J_C/(m r^2) with "
+                             "--kappa)")
+        kappa = bodies[body_name]
+        inputs["body"] = Entry("body", body_name, None)
+
+    radius = None
+    if "radius" in texts:
+        parsed = _read(texts, "radius", LENGTH, strict, constraint="positive")
+        radius = parsed.si
+        inputs["radius"] = entry_from_parsed("radius", parsed, LENGTH, description="radius")
+    omega0 = 0.0
+    if "omega0" in texts:
+        parsed = _read(texts, "omega0", ANGULAR_RATE, strict)
+        omega0 = parsed.si
+        if omega0 != 0.0 and radius is None:
+            raise InputError("--omega0 needs --radius: the contact point slips with "
+                             "v0 - r omega0, so the spin counts only with the radius; give "
+                             "--radius (e.g. --radius 0.11m)")
+        inputs["omega0"] = entry_from_parsed("omega0", parsed, ANGULAR_RATE,
+                                             description="initial spin")
+    g = _read({"g": texts.get("g", DEFAULT_G)}, "g", ACCELERATION, strict,
+              constraint="positive")
+    inputs["g"] = entry_from_parsed("g", g, ACCELERATION, description="gravity")
+
+    sin_b, cos_b = 0.0, 1.0
+    incline = None
+    if "incline" in texts:
+        incline = _read(texts, "incline", ANGLE, strict)
+        sin_b, cos_b = slope_sin_cos(incline.quantity)
+        if not cos_b > 0.0:
+            hint = (f"; a bare number is in radians: write {texts['incline'].strip()}deg for "
+                    "degrees" if incline.assumed_si else "")
+            raise InputError("--incline must be between -90 and 90 degrees (a slope, not a "
+                             f"wall); got {format_quantity(incline.quantity)}{hint}")
+        inputs["incline"] = entry_from_parsed("incline", incline, ANGLE,
+                                              description="slope, positive uphill")
+
+    args = (v0.si + 0.0, mu.si, kappa, g.si, radius, omega0, sin_b, cos_b)
+    closed_form_s, onset = _timed(lambda: onset_closed_form(*args))
+
+    values = onset.values()
+    if incline is not None:
+        values["mu_min"] = onset.mu_min
+    warnings = list(onset.warnings)
+    extra: dict = {}
+    used = "closed-form"
+    if method == "ode":
+        values, used, extra, ode_notes = _run_ode(args, onset, values, rtol, closed_form_s)
+        warnings += ode_notes
+
+    results = {}
+    for name, value in values.items():
+        dim, unit, symbol, words = _KINDS[name]
+        entry = Entry(name, float(value), dim, unit=unit, symbol=symbol, description=words)
+        if math.isinf(entry.si):
+            entry.overflowed = True
+            warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
+                            f"{dim.si}); it is left out (null in JSON)")
+        results[name] = entry
+    warnings += _physics_warnings(onset, kappa, mu.si, incline is not None)
+    result = Result(command="rolling-onset", results=results, inputs=inputs, scene=None,
+                    model="coulomb-friction", method=used, warnings=warnings,
+                    explanation=_explain(onset, kappa, body_name, mu.si, g.si, v0.si + 0.0, radius,
+                                         omega0, incline, sin_b, cos_b, used, extra),
+                    extra=extra)
+    return result
+
+
+def _timed(call, repeat: int = 3):
+    """``(seconds, result)``: the best of ``repeat`` runs of ``call()`` (the first run pays
+    for warming caches up; the best is the cost of the computation itself)."""
+    best, result = math.inf, None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = call()
+        best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+def _run_ode(args, onset, values, rtol, closed_form_s):
+    """Integrate the equations of motion; their results, the method, the JSON extras, notes."""
+    from .physics.rolling import ODE_FLOOR, onset_ode
+
+    tol = DEFAULT_RTOL if rtol is None else rtol
+    v0, mu, kappa, g, radius, omega0, sin_b, cos_b = args
+    if onset.sigma == 0 or kappa == 0.0:
+        why = ("the body is set down already rolling, s0 = 0" if onset.sigma == 0 else
+               "kappa = 0 rolls at once")
+        return values, "closed-form", {}, [
+            f"--method ode: there is no sliding phase to integrate ({why}); the closed form "
+            "is given, exact"]
+    import scipy.integrate  # noqa: F401  (imported before the clock starts)
+
+    try:
+        ode_s, ode = _timed(lambda: onset_ode(*args, rtol=tol, horizon=onset.t))
+    except PhysicsError as exc:
+        return values, "closed-form", {}, [f"--method ode: {exc}; the closed form is given"]
+    speed_scale = max(abs(v0), abs(onset.rim0))
+    scales = {"t_roll": onset.t, "x_roll": speed_scale * onset.t, "v_roll": speed_scale,
+              "omega_roll": speed_scale / radius if radius else 0.0}
+    got = {"t_roll": ode.t, "x_roll": ode.x, "v_roll": ode.v, "omega_roll": ode.omega}
+    errors = {}
+    new = dict(values)
+    for name in ("t_roll", "x_roll", "v_roll", "omega_roll"):
+        if name not in values:
+            continue
+        new[name] = got[name]
+        denominator = max(abs(values[name]), scales[name])
+        errors[name] = abs(got[name] - values[name]) / denominator if denominator else 0.0
+    worst = max(errors.values())
+    extra = {"error_estimate": worst, "ode_error": errors,
+             "timing": {"closed_form_s": closed_form_s, "ode_s": ode_s},
+             "ode": {"solver": ode.solver, "rtol": ode.rtol, "atol": ode.atol,
+                     "steps": ode.steps, "nfev": ode.nfev}}
+    notes = []
+    if tol < ODE_FLOOR:
+        notes.append(f"--rtol {tol:g} is below what solve_ivp accepts; the ODE ran at "
+                     f"{ODE_FLOOR:.3g}")
+    if worst > tol:
+        notes.append(f"the ODE result differs from the closed form by {worst:.2g} (relative), "
+                     f"more than --rtol {tol:g}; the closed form is exact to rounding")
+    return new, "ode", extra, notes
+
+
+def _physics_warnings(onset, kappa: float, mu: float, on_slope: bool) -> list[str]:
+    notes = []
+    if onset.sigma == 0:
+        notes.append("v0 = r omega0: the body is set down already rolling (no slip), so "
+                     "t_roll = 0 and x_roll = 0")
+    if kappa == 0.0:
+        notes.append("kappa = 0: a body with no moment of inertia about its centre rolls at "
+                     "once (t_roll = 0, v_roll = v0) whatever its spin; a body that cannot "
+                     "turn (a block) never rolls, it slides until it stops")
+    if on_slope and mu < onset.mu_min:
+        notes.append(f"rolling on this slope needs static friction mu_s >= mu_min = "
+                     f"{_num(onset.mu_min)}; unless the static coefficient reaches it (mu = "
+                     f"{_num(mu)} is below), the slip reverses at t_roll and the body "
+                     "slides on")
+    return notes
+
+
+def _explain(onset, kappa, body_name, mu, g, v0, radius, omega0, incline, sin_b, cos_b,
+             method, extra) -> Explanation:
+    sigma = {1: "+1", -1: "-1", 0: "0"}[onset.sigma]
+    kappa_text = (f"kappa = {_num(kappa)} ({body_name})" if body_name else
+                  f"kappa = {_num(kappa)}")
+    slope = incline is not None and sin_b != 0.0
+    formula = ["slip of the contact point s = v - r omega; while it slips, kinetic friction "
+               "mu m g cos(beta) opposes it (sigma = sign(s0)); the mass cancels"]
+    if slope:
+        formula += [
+            "v' = -g (sin(beta) + sigma mu cos(beta)),  r omega' = sigma mu g cos(beta) / kappa",
+            "t_roll = kappa |s0| / (g (mu (1 + kappa) cos(beta) + sigma kappa sin(beta)))",
+            "v_roll = v0 - g (sin(beta) + sigma mu cos(beta)) t_roll",
+        ]
+    else:
+        formula += [
+            "v' = -sigma mu g,  r omega' = sigma mu g / kappa",
+            "t_roll = kappa |s0| / (mu g (1 + kappa))",
+            "v_roll = (v0 + kappa r omega0) / (1 + kappa)  (angular momentum about the contact "
+            "point is conserved)",
+        ]
+    formula.append("x_roll = (v0 + v_roll) t_roll / 2 = v0 t_roll - a t_roll^2 / 2  (a = -v')")
+    if body_name == "solid-sphere" and omega0 == 0.0 and not slope:
+        formula.append("solid sphere without spin (kappa = 2/5): t_roll = 2 v0 / (7 mu g), "
+                       "x_roll = 12 v0^2 / (49 mu g), v_roll = 5 v0 / 7")
+    if radius is not None:
+        formula.append("omega_roll = v_roll / r")
+    if incline is not None:
+        formula.append("mu_min = kappa |tan(beta)| / (1 + kappa)")
+
+    rim = f"{_num(radius)} m × {_term(omega0, 'rad/s')}" if radius is not None else "0"
+    sub = [f"{kappa_text}, mu = {_num(mu)}, g = {_num(g)} m/s^2"]
+    if incline is not None:
+        sub.append(f"beta = {_num(incline.quantity.magnitude)} {incline.unit_text or 'rad'}: "
+                   f"sin(beta) = {_num(sin_b)}, cos(beta) = {_num(cos_b)}")
+    sub.append(f"s0 = {_num(v0)} m/s - {rim} = {_num(onset.s0)} m/s, sigma = {sigma}")
+    if onset.sigma == 0:
+        sub.append("s0 = 0: set down already rolling, so t_roll = 0, x_roll = 0, v_roll = v0")
+    elif kappa == 0.0:
+        sub.append("kappa = 0: t_roll = 0, x_roll = 0, v_roll = v0")
+    elif slope:
+        sub.append(f"t_roll = {_num(kappa)} × {_num(abs(onset.s0))} m/s / ({_num(g)} m/s^2 × "
+                   f"{_num(onset.drive)}) = {_num(onset.t)} s")
+        sub.append(f"v_roll = {_num(v0)} m/s - {_term(onset.accel, 'm/s^2')} × "
+                   f"{_num(onset.t)} s = {_num(onset.v)} m/s")
+    else:
+        sub.append(f"t_roll = {_num(kappa)} × {_num(abs(onset.s0))} m/s / ({_num(mu)} × "
+                   f"{_num(g)} m/s^2 × {_num(1 + kappa)}) = {_num(onset.t)} s")
+        sub.append(f"v_roll = ({_num(v0)} m/s + {_num(kappa)} × {_term(onset.rim0, 'm/s')}) / "
+                   f"{_num(1 + kappa)} = {_num(onset.v)} m/s")
+    if onset.sigma != 0 and kappa != 0.0:
+        sub.append(f"x_roll = ({_num(v0)} m/s + {_term(onset.v, 'm/s')}) × {_num(onset.t)} s "
+                   f"/ 2 = {_num(onset.x)} m")
+    if radius is not None:
+        sub.append(f"omega_roll = {_term(onset.v, 'm/s')} / {_num(radius)} m = "
+                   f"{_num(onset.omega)} rad/s")
+    if incline is not None:
+        sub.append(f"mu_min = {_num(onset.mu_min)}")
+
+    assumptions = ["rigid round body on a rigid surface, one contact point; Coulomb friction "
+                   "(kinetic mu while it slips); no rolling resistance, no air drag",
+                   "x_roll is the displacement along the surface from the start to where "
+                   "rolling begins (positive in the direction of v0), not the path length"]
+    if onset.reverses:
+        assumptions.append(
+            f"the backspin brings it back: it stops at t = {_num(onset.t_turn)} s, "
+            f"{_num(onset.x_turn)} m from the start, and returns; the path length is "
+            f"path_roll = {_num(onset.path)} m, and v_roll < 0 is motion back toward the start")
+    if incline is not None:
+        assumptions.append("after t_roll it keeps rolling while the static friction "
+                           "coefficient is at least mu_min")
+    else:
+        assumptions.append("after t_roll it rolls on at v_roll (friction then does no work)")
+    if method == "ode":
+        timing = extra["timing"]
+        ode = extra["ode"]
+        assumptions.append(
+            f"method ode: solve_ivp ({ode['solver']}, rtol {ode['rtol']:g}, {ode['steps']} "
+            f"steps) with an event at zero slip; it differs from the closed form by "
+            f"{extra['error_estimate']:.2g} (relative); time {timing['ode_s'] * 1e3:.3g} ms "
+            f"against {timing['closed_form_s'] * 1e3:.3g} ms for the closed form")
+    return Explanation(formula=formula, substituted=sub, assumptions=assumptions,
+                       reference=_REFERENCE)
