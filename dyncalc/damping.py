@@ -455,7 +455,8 @@ def plot_decay(result: Result, path: str) -> str:
     """
     target = Path(path)
     if target.suffix.lower() not in PLOT_FORMATS:
-        raise InputError(f"--plot: {path[:80]!r} must end in {', '.join(PLOT_FORMATS[:-1])} or {PLOT_FORMATS[-1]}")
+        raise InputError(f"--plot: {path[:80]!r} must end in "
+                         f"{', '.join(PLOT_FORMATS[:-1])} or {PLOT_FORMATS[-1]}")
     try:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure

@@ -9,9 +9,6 @@ refusal's exact message.
 """
 import json
 import math
-import re
-import shlex
-from pathlib import Path
 
 import mpmath
 import numpy as np

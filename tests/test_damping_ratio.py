@@ -15,18 +15,17 @@ import sys
 import mpmath
 import numpy as np
 import pytest
-from click.testing import CliRunner
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
-from dyncalc.cli import cli
 from dyncalc.damping import damping_ratio
 from dyncalc.physics.damping import (CRITICAL_BAND, damping_from_coefficients,
                                      damping_from_decrement, damping_from_zeta,
                                      decrement_from_zeta, free_response, zeta_from_decrement)
 from dyncalc.physics.decay_fit import fit_decrement, t_critical
 from dyncalc.units import Q_
+from helpers import error_line, invoke, json_of
 
 mpmath.mp.dps = 50
 TWO_PI = 2 * math.pi
@@ -34,24 +33,17 @@ G = 9.80665
 
 
 def run(*args):
-    return CliRunner().invoke(cli, ["damping-ratio", *args])
+    return invoke("damping-ratio", *args)
 
 
 def run_json(*args):
-    result = run(*args, "--json")
-    assert result.exit_code == 0, result.stderr
-    return json.loads(result.stdout)
+    return json_of("damping-ratio", *args)
 
 
 def results(*args):
     return {k: v["value"] for k, v in run_json(*args)["results"].items()}
 
 
-def error_line(result):
-    assert result.exit_code == 2, (result.stdout, result.stderr)
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
-    return lines[0]
 
 
 def ulps(x, ref) -> float:

@@ -4,17 +4,16 @@ import math
 
 import mpmath
 import pytest
-from click.testing import CliRunner
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from dyncalc.cli import cli
+from helpers import error_line, invoke
 
 TWO_PI = 2 * math.pi
 
 
 def run(*args):
-    return CliRunner().invoke(cli, ["natural-frequency", *args])
+    return invoke("natural-frequency", *args)
 
 
 def results(*args):
@@ -29,11 +28,6 @@ def value(*args):
     return float(result.stdout)
 
 
-def error_line(result):
-    assert result.exit_code == 2
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1 and "Traceback" not in result.stderr
-    return lines[0]
 
 
 def test_contract_smoke_mass_spring():

@@ -6,19 +6,17 @@ period; the elliptic period is cross-checked with scipy's complete elliptic inte
 the equation of motion integrated numerically; the CLI's methods, tolerances and refusals are
 checked with their exact output.
 """
-import json
 import math
 import random
 
 import mpmath
 import pytest
-from click.testing import CliRunner
 from scipy.integrate import solve_ivp
 from scipy.special import ellipkm1
 
-from dyncalc.cli import cli
 from dyncalc.physics.oscillators import ELLIPTIC_ERROR, pendulum, physical_pendulum
 from dyncalc.units import Q_
+from helpers import error_line, invoke, json_of
 
 G = 9.80665
 L = 1.0
@@ -167,20 +165,13 @@ def test_quarter_period_by_integration(degrees):
 # --- the command line ---------------------------------------------------------------------------
 
 def run(*args):
-    return CliRunner().invoke(cli, ["natural-frequency", *args])
+    return invoke("natural-frequency", *args)
 
 
 def run_json(*args):
-    result = run(*args, "--json")
-    assert result.exit_code == 0, result.stderr
-    return json.loads(result.stdout)
+    return json_of("natural-frequency", *args)
 
 
-def error_line(result):
-    assert result.exit_code == 2, result.stdout
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
-    return lines[0]
 
 
 def test_cli_value_near_the_top():

@@ -15,12 +15,13 @@ from dyncalc.physics.bodies import KAPPA
 from dyncalc.physics.rolling import (onset_closed_form, onset_ode, rolling_onset,
                                      shape_factor, slope_sin_cos)
 from dyncalc.units import Q_
+from helpers import error_line, invoke
 
 G = 9.80665
 
 
 def run(*args):
-    return CliRunner().invoke(cli, ["rolling-onset", *args])
+    return invoke("rolling-onset", *args)
 
 
 def data(*args):
@@ -39,11 +40,6 @@ def results(*args):
     return {name: item["value"] for name, item in out.items()}
 
 
-def error_line(result):
-    assert result.exit_code == 2, result.stdout
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1 and "Traceback" not in result.stderr
-    return lines[0]
 
 
 # --- E3.45 ---------------------------------------------------------------------------------------

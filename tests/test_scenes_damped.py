@@ -5,22 +5,20 @@ Each scene: its textbook formula, its worked example, an independent check (the 
 motion set up again from the figure and integrated with scipy; the resonance peak found by
 maximising the steady amplitude numerically), unit invariance and its refusals.
 """
-import json
 import math
 
 import mpmath
 import numpy as np
 import pytest
-from click.testing import CliRunner
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import minimize_scalar
 
-from dyncalc.cli import cli
 from dyncalc.errors import InputError
 from dyncalc.scenes.runner import run_scene
 from dyncalc.units import Q_
+from helpers import error_line, invoke, json_of
 
 G = 9.80665
 TWO_PI = 2 * math.pi
@@ -39,20 +37,13 @@ def si(result, name):
 
 
 def run(*args):
-    return CliRunner().invoke(cli, ["natural-frequency", *args])
+    return invoke("natural-frequency", *args)
 
 
 def run_json(*args):
-    result = run(*args, "--json")
-    assert result.exit_code == 0, result.stderr
-    return json.loads(result.stdout)
+    return json_of("natural-frequency", *args)
 
 
-def error_line(result):
-    assert result.exit_code == 2, result.stdout
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
-    return lines[0]
 
 
 def words(texts):
@@ -253,7 +244,7 @@ def _frame_coefficients(m, k, d):
 
 
 def test_frame_brace_damper_integrated():
-    m, k, d, b0 = 500.0, 2e5, 2e3, 1.0
+    m, k, d = 500.0, 2e5, 2e3
     mass, damping, stiffness = _frame_coefficients(m, k, d)
     period, decay = _damped_motion(mass, damping, stiffness, 0.01)
     out = run_scene(FRAME, FRAME_TEXTS)

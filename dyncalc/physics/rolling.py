@@ -94,8 +94,8 @@ def slope_sin_cos(angle) -> tuple[float, float]:
     near 90 degrees.
 
     Beyond 45 degrees ``cos(beta)`` is computed as ``sin(quarter turn - |beta|)`` with the
-    complement taken in the unit typed (exact in degrees, grads, turns by Sterbenz's lemma; against the
-    double-double pi in radians), so ``89.9999 deg`` keeps its digits. A ``cos`` of zero or
+    complement taken in the unit typed (exact in degrees, grads, turns by Sterbenz's lemma;
+    against the double-double pi in radians), so ``89.9999 deg`` keeps its digits. A ``cos`` of zero or
     less means the angle is 90 degrees or more (the caller refuses it).
 
     >>> from dyncalc.units import Q_
@@ -334,7 +334,8 @@ def onset_ode(v0: float, mu: float, kappa: float, g: float, r: float | None = No
     hybrid system: ``sigma`` is the mode, fixed while the slip keeps its sign, and the event
     ends the mode. (Evaluating ``sign(v - r omega)`` inside the right-hand side instead puts
     the switch inside a step: the error estimate does not see it and the event lands off by
-    far more than the tolerance, 1.5e-4 at ``rtol = 1e-6`` for Example 3.45.) Variables are scaled so that everything is of order one:
+    far more than the tolerance, 1.5e-4 at ``rtol = 1e-6`` for Example 3.45.) Variables are
+    scaled so that everything is of order one:
     speeds by ``V = max(|v0|, |r omega0|)`` and time by ``V / (g M)`` with ``M`` the larger of
     the two accelerations' coefficients (``|sin beta| + mu cos beta`` and
     ``mu cos beta / kappa``), so inputs from 1e-300 to 1e300 integrate the same way.

@@ -1,0 +1,26 @@
+"""Shared test helpers: run a dyncalc command in-process and read what it printed."""
+import json
+
+from click.testing import CliRunner
+
+from dyncalc.cli import cli
+
+
+def invoke(*args):
+    """``dyncalc ARGS`` through the real group (its one-line errors and exit codes)."""
+    return CliRunner().invoke(cli, list(args))
+
+
+def json_of(*args):
+    """The JSON object ``dyncalc ARGS --json`` prints (asserting exit 0)."""
+    result = invoke(*args, "--json")
+    assert result.exit_code == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def error_line(result):
+    """The one stderr line of a refusal, asserting exit 2 and no traceback."""
+    assert result.exit_code == 2, (result.stdout, result.stderr)
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
+    return lines[0]
