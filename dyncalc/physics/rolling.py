@@ -95,8 +95,8 @@ def slope_sin_cos(angle) -> tuple[float, float]:
 
     Beyond 45 degrees ``cos(beta)`` is computed as ``sin(quarter turn - |beta|)`` with the
     complement taken in the unit typed (exact in degrees, grads, turns by Sterbenz's lemma;
-    against the double-double pi in radians), so ``89.9999 deg`` keeps its digits. A ``cos`` of zero or
-    less means the angle is 90 degrees or more (the caller refuses it).
+    against the double-double pi in radians), so ``89.9999 deg`` keeps its digits. A ``cos``
+    of zero or less means the angle is 90 degrees or more (the caller refuses it).
 
     >>> from dyncalc.units import Q_
     >>> slope_sin_cos(Q_(0, "deg"))
