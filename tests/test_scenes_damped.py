@@ -374,11 +374,15 @@ def test_extreme_inputs_match_mpmath():
     assert si(out, "zeta") == pytest.approx(float(mp(beta) / crit), rel=1e-15)
 
 
-def test_overflowing_result_is_refused():
-    with pytest.raises(InputError) as err:
-        run_scene(PSD, {"m": "1e-300", "a": "1", "k": "1e300", "d": "1e300"})
-    assert str(err.value) == ("pendulum-spring-dashpot: xi overflows float64 for these inputs "
-                              "(above 1.8e308 in SI units)")
+def test_overflowing_result_is_null_with_a_warning():
+    """The runner's rule for every scene: an overflowed result is kept as inf (JSON null) with
+    a warning; --value of it is refused."""
+    out = run_scene(PSD, {"m": "1e-300", "a": "1", "k": "1e300", "d": "1e300"})
+    assert math.isinf(out.results["xi"].si) and out.results["xi"].overflowed
+    assert ("xi overflows float64 at these inputs (beyond 1.8e308 1/s); it is left out (null "
+            "in JSON)") in out.warnings
+    result = run("--scene", PSD, "m=1e-300", "a=1", "k=1e300", "d=1e300", "--value", "xi")
+    assert error_line(result) == "Error: --value xi: xi overflows float64 at these inputs"
 
 
 # --- properties --------------------------------------------------------------------------------
