@@ -15,7 +15,6 @@ from hypothesis import strategies as st
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import minimize_scalar
 
-from dyncalc.errors import InputError
 from dyncalc.scenes.runner import run_scene
 from dyncalc.units import Q_
 from helpers import error_line, invoke, json_of

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import math
 
-from ..errors import PhysicsError
 from ..units import Q_
 from .numerics import Wide, monomial, root_monomial, sqrt_ratio, two_product
 from .outcome import Outcome, damped, periodic
