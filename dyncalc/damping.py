@@ -291,10 +291,10 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         if fit.delta_se is not None:
             results["delta_se"] = _entry("delta_se", fit.delta_se)
     warnings = list(outcome.warnings) + (fit.warnings if fit is not None else [])
-    warnings += _overflow_warnings(results)
     result = Result(command="damping-ratio", results=results, inputs=inputs, scene=None,
                     model="linear", method=fit_method or "closed-form", warnings=warnings,
                     extra=extra)
+    result.add_overflow_warnings()
     result.explanation = _explain(formula, inputs, results, reference, fit)
     result.add_underflow_warnings(exact_zeros)
     return result
@@ -344,18 +344,6 @@ def _entry(name: str, value) -> Entry:
     if hasattr(value, "units"):
         value = value.to(dim.si.replace("^", "**")).magnitude
     return Entry(name, float(value), dim, unit=unit, symbol=symbol, description=description)
-
-
-def _overflow_warnings(results: dict[str, Entry]) -> list[str]:
-    """Results beyond float64 are kept as inf (null in JSON) with a warning (as the scenes)."""
-    warnings = []
-    for name, entry in results.items():
-        if isinstance(entry.si, float) and math.isinf(entry.si):
-            entry.overflowed = True
-            warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
-                            f"{entry.dim.si if entry.dim else ''}); it is left out (null in "
-                            "JSON)")
-    return warnings
 
 
 def _shown(entry: Entry) -> str:

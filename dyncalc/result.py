@@ -106,6 +106,22 @@ class Result:
                                      f"{entry.dim.si if entry.dim else ''}) although no input "
                                      f"is zero")
 
-    def infinite_results(self) -> list[str]:
-        return [e.name for e in self.results.values()
-                if isinstance(e.si, float) and math.isinf(e.si)]
+    def add_overflow_warnings(self) -> None:
+        """Mark results that overflowed float64 (a finite true value beyond 1.8e308) and warn.
+
+        They stay ``inf`` (JSON ``null``), so the results that did not overflow are still
+        given; ``--value`` of such a result is refused. The one meaningful infinity, a period
+        ``T...`` of a mode whose frequency is exactly zero (a drift, a bifurcation), is not an
+        overflow.
+        """
+        for name, entry in self.results.items():
+            if not (isinstance(entry.si, float) and math.isinf(entry.si)):
+                continue
+            if name.startswith("T"):
+                omega = self.results.get("omega" + name[1:])
+                if omega is not None and omega.si == 0.0:
+                    continue
+            entry.overflowed = True
+            self.warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
+                                 f"{entry.dim.si if entry.dim else ''}); it is left out (null "
+                                 "in JSON)")

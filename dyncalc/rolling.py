@@ -162,18 +162,15 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
     results = {}
     for name, value in values.items():
         dim, unit, symbol, words = _KINDS[name]
-        entry = Entry(name, float(value), dim, unit=unit, symbol=symbol, description=words)
-        if math.isinf(entry.si):
-            entry.overflowed = True
-            warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
-                            f"{dim.si}); it is left out (null in JSON)")
-        results[name] = entry
+        results[name] = Entry(name, float(value), dim, unit=unit, symbol=symbol,
+                              description=words)
     warnings += _physics_warnings(onset, kappa, mu.si, incline is not None)
     result = Result(command="rolling-onset", results=results, inputs=inputs, scene=None,
                     model="coulomb-friction", method=used, warnings=warnings,
                     explanation=_explain(onset, kappa, body_name, mu.si, g.si, v0.si + 0.0, radius,
                                          omega0, incline, sin_b, cos_b, used, extra),
                     extra=extra)
+    result.add_overflow_warnings()
     return result
 
 

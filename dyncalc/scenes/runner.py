@@ -7,7 +7,6 @@ exactly one; relations between parameters (``R > r``) are checked before any phy
 """
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -151,35 +150,14 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
         warnings += notes
 
     results = {name: _entry(name, value) for name, value in values.items()}
-    warnings += _overflow_warnings(results)
     result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
                     model=outcome.model, method=outcome.method, warnings=warnings,
                     explanation=_explain(scene, inputs, results, outcome))
+    result.add_overflow_warnings()
     if outcome.error_estimate is not None:
         result.extra["error_estimate"] = outcome.error_estimate
     result.add_underflow_warnings(outcome.exact_zeros)
     return result
-
-
-def _overflow_warnings(results: dict[str, Entry]) -> list[str]:
-    """Results that overflowed float64 (their true value is finite but beyond 1.8e308).
-
-    They are kept as ``inf`` (JSON ``null``) with a warning, so that the results that did not
-    overflow are still given; ``--value`` of such a result is refused. The one meaningful
-    infinity, a period ``T...`` of a mode whose frequency is exactly zero, is not an overflow.
-    """
-    warnings = []
-    for name, entry in results.items():
-        if not (isinstance(entry.si, float) and math.isinf(entry.si)):
-            continue
-        if name.startswith("T"):
-            omega = results.get("omega" + name[1:])
-            if omega is not None and omega.si == 0.0:
-                continue
-        entry.overflowed = True
-        warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
-                        f"{entry.dim.si if entry.dim else ''}); it is left out (null in JSON)")
-    return warnings
 
 
 def _entry(name: str, value) -> Entry:
