@@ -232,8 +232,13 @@ def test_cli_elliptic_reports_omega_0():
     (["--amplitude", "-5deg"], "Error: --amplitude must not be negative; got -5 degree"),
     (["--method", "elliptic"], "Error: --method elliptic needs an amplitude (--amplitude or "
                                "amplitude=); without one the pendulum is linear"),
-    (["--method", "ode", "--amplitude", "30deg"],
-     "Error: --method ode is not offered by pendulum; it offers auto, small-angle, elliptic"),
+    (["--method", "quadrature", "--amplitude", "30deg"],
+     "Error: --method quadrature is not offered by pendulum; it offers auto, small-angle, "
+     "series, elliptic, ode"),
+    (["--method", "series"], "Error: --method series needs an amplitude (--amplitude or "
+                             "amplitude=); without one the pendulum is linear"),
+    (["--method", "ode"], "Error: --method ode needs an amplitude (--amplitude or "
+                          "amplitude=); without one the pendulum is linear"),
 ])
 def test_cli_refusals(args, message):
     assert error_line(run("--length", "1m", *args)) == message
@@ -274,3 +279,147 @@ def test_amplitude_in_milliradians():
     """Units without an exact half turn (mrad, urad) are converted to radians first."""
     degrees = elliptic_period(90.0, "degree")
     assert elliptic_period(500 * math.pi, "milliradian") == pytest.approx(degrees, rel=1e-14)
+
+
+# --- the amplitude series and the integrated equation of motion ---------------------------------
+
+def true_relative_error(period, degrees):
+    with mpmath.workdps(40):
+        reference = mp_period(mpmath.mpf(degrees) * mpmath.pi / 180)
+        return float(abs(mpmath.mpf(period) / reference - 1))
+
+
+@pytest.mark.parametrize("degrees", [1e-4, 1.0, 30.0, 90.0, 150.0])
+@pytest.mark.parametrize("rtol", ["1e-3", "1e-6", "1e-9", "1e-12"])
+def test_series_meets_rtol_and_its_bound_holds(degrees, rtol):
+    """The series stops at the order rtol needs: its true error (mpmath) is within the
+    error_estimate it reports (tail bound plus rounding bound), which is within rtol."""
+    data = run_json("--length", "1m", "--amplitude", f"{degrees!r}deg", "--method", "series",
+                    "--rtol", rtol)
+    assert data["method"] == "series" and data["model"] == "nonlinear"
+    assert data["warnings"] == []
+    error = true_relative_error(data["results"]["T"]["value"], degrees)
+    assert error <= data["error_estimate"] <= float(rtol)
+    assert data["results"]["omega_0"]["value"] == pytest.approx(math.sqrt(G), rel=1e-15)
+
+
+def test_series_terms_grow_with_the_amplitude():
+    """The series' order is reported in the assumptions: one term more for a tighter rtol,
+    many more toward 180 degrees (its terms fall like sin^(2n)(theta0/2))."""
+    def terms(amplitude, rtol):
+        data = run_json("--length", "1m", "--amplitude", amplitude, "--method", "series",
+                        "--rtol", rtol, "--explain")
+        text = " ".join(data["explanation"]["assumptions"])
+        return int(text.split(" terms; tail bound")[0].rsplit("(", 1)[1])
+    assert terms("1deg", "1e-3") == 1                 # T0 alone: theta^2/16 = 2e-5
+    assert terms("1deg", "1e-6") == 2
+    assert terms("90deg", "1e-9") == 26
+    assert terms("170deg", "1e-3") > 100
+
+
+def test_series_near_the_top_misses_rtol_and_says_so():
+    data = run_json("--length", "1m", "--amplitude", "179.9deg", "--method", "series")
+    error = true_relative_error(data["results"]["T"]["value"], 179.9)
+    assert data["error_estimate"] == pytest.approx(error, rel=1e-6)
+    assert data["warnings"] == [
+        "the series misses the requested tolerance 1e-09: after 1001 terms its period is "
+        "still 39% short at 179.9 deg (its terms fall like sin^(2n)(theta0/2)); use --method "
+        "elliptic"]
+
+
+def test_series_below_the_rounding_floor_warns():
+    data = run_json("--length", "1m", "--amplitude", "60deg", "--method", "series", "--rtol",
+                    "1e-17")
+    assert len(data["warnings"]) == 1
+    assert data["warnings"][0].startswith("the series misses the requested tolerance 1e-17: "
+                                          "the rounding of its ")
+    assert true_relative_error(data["results"]["T"]["value"], 60.0) <= data["error_estimate"]
+
+
+def test_elliptic_below_float64_accuracy_warns():
+    data = run_json("--length", "1m", "--amplitude", "60deg", "--method", "elliptic", "--rtol",
+                    "1e-16")
+    assert data["warnings"] == ["the requested tolerance 1e-16 is below the accuracy of float64 "
+                                "arithmetic: the elliptic period is within 1e-15 (a few ulp)"]
+
+
+@pytest.mark.parametrize("amplitude, degrees", [
+    ("1e-6deg", 1e-6), ("10deg", 10.0), ("90deg", 90.0), ("170deg", 170.0),
+    ("179.999999deg", 179.999999),
+])
+@pytest.mark.parametrize("rtol", ["1e-6", "1e-10"])
+def test_ode_reaches_rtol_against_mpmath(amplitude, degrees, rtol):
+    """solve_ivp (DOP853) to the bottom, a quarter period; beyond 90 degrees in the angle from
+    the top, so 179.999999 deg integrates as well as 10 deg. Its error_estimate is its
+    difference from the elliptic period (plus the elliptic period's own 1e-15)."""
+    data = run_json("--length", "1m", "--amplitude", amplitude, "--method", "ode", "--rtol",
+                    rtol)
+    assert data["method"] == "ode" and data["model"] == "nonlinear"
+    assert data["warnings"] == []
+    error = true_relative_error(data["results"]["T"]["value"], degrees)
+    assert error <= float(rtol)
+    assert error == pytest.approx(data["error_estimate"], abs=2e-15)
+
+
+def test_ode_in_radians_a_hair_below_pi():
+    value = 3.14159265
+    out = pendulum(Q_(L, "m"), Q_(G, "m/s^2"), Q_(value, "rad"), method="ode", rtol=1e-9)
+    with mpmath.workdps(40):
+        error = abs(out.values["T"].magnitude / mp_period(mpmath.mpf(value)) - 1)
+    assert error <= 1e-9 and out.warnings == []
+
+
+def test_ode_below_the_solver_floor_warns():
+    data = run_json("--length", "1m", "--amplitude", "45deg", "--method", "ode", "--rtol",
+                    "1e-13")
+    assert data["warnings"] == ["--rtol 1e-13 is below what solve_ivp accepts; the ODE ran at "
+                                "2.22e-14"]
+
+
+def test_ode_imports_scipy_only_when_used():
+    import subprocess
+    import sys
+
+    code = ("import sys; from dyncalc.units import Q_; "
+            "from dyncalc.physics.oscillators import pendulum; "
+            "pendulum(Q_(1, 'm'), Q_(9.8, 'm/s^2'), Q_(30, 'deg'), method='series'); "
+            "print('scipy.integrate' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("amplitude", ["1e-6deg", "0.01deg", "1deg", "30deg", "179deg"])
+@pytest.mark.parametrize("rtol", ["1e-2", "1e-6", "1e-12"])
+def test_auto_never_takes_series_or_ode(amplitude, rtol):
+    """The AGM costs about what the series' first term costs and auto has it in hand already
+    (it decides on the exact small-angle error), so auto is small-angle or elliptic."""
+    data = run_json("--length", "1m", "--amplitude", amplitude, "--rtol", rtol)
+    assert data["method"] in ("small-angle", "elliptic")
+    assert data["error_estimate"] <= float(rtol) and data["warnings"] == []
+
+
+@pytest.mark.parametrize("method", ["series", "ode"])
+def test_physical_pendulum_offers_every_method(method):
+    data = run_json("--scene", "physical-pendulum", "m=2kg", "a=0.5m", "J=0.125 kg*m^2",
+                    "--amplitude", "120deg", "--method", method)
+    elliptic = run_json("--scene", "physical-pendulum", "m=2kg", "a=0.5m", "J=0.125 kg*m^2",
+                        "--amplitude", "120deg")
+    assert data["method"] == method and data["warnings"] == []
+    assert data["results"]["T"]["value"] == pytest.approx(elliptic["results"]["T"]["value"],
+                                                          rel=1e-9)
+
+
+def test_physical_pendulum_frequency_squared_beyond_float64():
+    """omega_0^2 = m g a / J_A of 1e400 (or 1e-400) is out of float64 although omega_0 is
+    not: the root is taken of the scaled monomial (root_monomial), never of its overflow."""
+    huge = physical_pendulum(Q_(1e-100, "kg"), Q_(1e-100, "m"), Q_(1e300, "m/s^2"),
+                             J_A=Q_(1e-300, "kg*m^2"))
+    tiny = physical_pendulum(Q_(1e-300, "kg"), Q_(1.0, "m"), Q_(1e-100, "m/s^2"),
+                             J_A=Q_(1.0, "kg*m^2"), amplitude=Q_(90, "deg"))
+    with mpmath.workdps(40):
+        big_ref = mpmath.sqrt(mpmath.mpf(1e-100) * mpmath.mpf(1e-100) * mpmath.mpf(1e300)
+                              / mpmath.mpf(1e-300))
+        small_ref = mpmath.sqrt(mpmath.mpf(1e-300) * mpmath.mpf(1e-100))
+        assert ulp_error(huge.values["omega"].magnitude, big_ref) <= 2.0
+        assert ulp_error(tiny.values["omega_0"].magnitude, small_ref) <= 2.0

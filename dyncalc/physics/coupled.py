@@ -14,13 +14,14 @@ import math
 import numpy as np
 
 from ..errors import PhysicsError
+from .numerics import sqrt_ratio
 from .oscillators import _si
 from .outcome import Outcome, periodic
 
 __all__ = ["coupled_blocks", "two_by_two_modes"]
 
 
-def two_by_two_modes(k1: float, k2: float, k3: float, m1: float,
+def _scaled_modes(k1: float, k2: float, k3: float, m1: float,
                      m2: float) -> tuple[float, float, np.ndarray, np.ndarray]:
     """Eigenvalues ``lambda_1 <= lambda_2`` of ``K v = lambda M v`` and their mode shapes, for
     ``K = [[k1 + k3, -k3], [-k3, k2 + k3]]`` and ``M = diag(m1, m2)``.
@@ -52,11 +53,13 @@ def two_by_two_modes(k1: float, k2: float, k3: float, m1: float,
 
     Returns
     -------
-    ``(lambda_1, lambda_2, mode_1, mode_2)``: eigenvalues in 1/s^2, modes as numpy arrays.
+    ``(lambda_1, lambda_2, ks, ms, mode_1, mode_2)``: the eigenvalues of the problem with the
+    stiffnesses divided by ``ks`` (the largest) and the masses by ``ms`` (the largest), so the
+    true eigenvalues are ``lambda ks/ms``; modes as numpy arrays.
 
-    >>> l1, l2, v1, v2 = two_by_two_modes(1.0, 1.0, 1.0, 1.0, 1.0)
-    >>> l1, l2, v1.round(12).tolist(), v2.round(12).tolist()
-    (1.0, 3.0, [0.707106781187, 0.707106781187], [0.707106781187, -0.707106781187])
+    >>> l1, l2, ks, ms, v1, v2 = _scaled_modes(2.0, 2.0, 2.0, 4.0, 4.0)
+    >>> l1, l2, ks, ms
+    (1.0, 3.0, 2.0, 4.0)
     """
     ks = max(k1, k2, k3)
     ms = max(m1, m2)
@@ -75,9 +78,29 @@ def two_by_two_modes(k1: float, k2: float, k3: float, m1: float,
         u1, u2 = b, 0.5 * (d - a) + radius        # (b, lam2 - a)
     if u1 == 0.0 and u2 == 0.0:                   # a == d and no coupling: any basis
         u1 = 1.0
-    scale = ks / ms
-    return (lam1 * scale, lam2 * scale, _unit_mode(-u2, u1, m1, m2),
-            _unit_mode(u1, u2, m1, m2))
+    return (lam1, lam2, ks, ms, _unit_mode(-u2, u1, m1, m2), _unit_mode(u1, u2, m1, m2))
+
+
+def two_by_two_modes(k1, k2, k3, m1, m2):
+    """``(lambda_1, lambda_2, mode_1, mode_2)`` of ``K v = lambda M v`` (see
+    :func:`_scaled_modes`); the eigenvalues in 1/s^2, which can leave float64 where the
+    frequencies do not (:func:`coupled_blocks` takes their roots scaled, not these).
+
+    >>> l1, l2, v1, v2 = two_by_two_modes(1.0, 1.0, 1.0, 1.0, 1.0)
+    >>> l1, l2, v1.round(12).tolist(), v2.round(12).tolist()
+    (1.0, 3.0, [0.707106781187, 0.707106781187], [0.707106781187, -0.707106781187])
+    """
+    lam1, lam2, ks, ms, mode1, mode2 = _scaled_modes(k1, k2, k3, m1, m2)
+    return lam1 * (ks / ms), lam2 * (ks / ms), mode1, mode2
+
+
+def _root(lam: float, ks: float, ms: float) -> float:
+    """``sqrt(lam ks / ms)``: directly where ``lam ks/ms`` is a normal float (one rounding
+    fewer), else ``sqrt(lam) sqrt_ratio(ks, ms)`` so that omega fits where omega^2 does not."""
+    square = lam * (ks / ms)
+    if 2.2250738585072014e-308 <= square < math.inf:
+        return math.sqrt(square)
+    return math.sqrt(lam) * sqrt_ratio(ks, ms)
 
 
 def _unit_mode(u1: float, u2: float, m1: float, m2: float) -> np.ndarray:
@@ -129,8 +152,8 @@ def coupled_blocks(m1, m2, k1, k2, k3) -> Outcome:
     if min(k1_, k2_, k3_) < 0.0 or (k1_ > 0.0) + (k2_ > 0.0) + (k3_ > 0.0) < 2:
         raise PhysicsError("coupled-blocks needs k1, k2, k3 >= 0 with at least two of them "
                            "positive; otherwise a block drifts freely (a zero-frequency mode)")
-    lam1, lam2, mode1, mode2 = two_by_two_modes(k1_, k2_, k3_, m1_, m2_)
-    values = {**periodic(math.sqrt(lam1), "_1"), **periodic(math.sqrt(lam2), "_2"),
+    lam1, lam2, ks, ms, mode1, mode2 = _scaled_modes(k1_, k2_, k3_, m1_, m2_)
+    values = {**periodic(_root(lam1, ks, ms), "_1"), **periodic(_root(lam2, ks, ms), "_2"),
               "mode_1": mode1, "mode_2": mode2}
     return Outcome(values, model="linear", method="closed-form",
                    assumptions=["linear springs, frictionless floor, no damping; mode shapes "

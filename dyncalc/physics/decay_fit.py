@@ -285,7 +285,15 @@ def _nonlinear(x: np.ndarray, delta0: float, x00: float, rtol: float):
     start = np.array([x00 / scale, delta0])
     sol = least_squares(residuals, start, jac=jacobian, method="lm", xtol=tol, ftol=tol,
                         gtol=tol)
-    amp, delta = float(sol.x[0]), float(sol.x[1])
+    # scipy's LM stops on its cost-change test near sqrt(eps) in delta whatever the tolerance;
+    # two Gauss-Newton steps from its answer reach the least-squares point to rounding
+    params = np.array(sol.x, dtype=float)
+    for _ in range(2):
+        step = np.linalg.lstsq(jacobian(params), -residuals(params), rcond=None)[0]
+        if not np.all(np.isfinite(step)):
+            break
+        params = params + step
+    amp, delta = float(params[0]), float(params[1])
     ok = bool(sol.success) and sol.status > 0
     se = None
     if n > 2:

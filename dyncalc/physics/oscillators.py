@@ -12,16 +12,23 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
-from .numerics import HALF_TURN, half_complement_sin, monomial, pendulum_period_factor, sqrt_ratio
+from .numerics import (HALF_TURN, PI_HI, PI_LO, SERIES_MAX_TERMS, UNIT_ROUNDOFF, agm,
+                       agm_compensated, half_complement_sin, monomial, pendulum_series,
+                       root_monomial, sqrt_ratio)
 from .outcome import Outcome, periodic
 
 __all__ = ["mass_spring", "torsional", "pendulum", "physical_pendulum", "large_amplitude",
-           "SMALL_ANGLE_METHODS"]
+           "PENDULUM_METHODS", "SMALL_ANGLE_METHODS", "ELLIPTIC_ERROR", "ODE_FLOOR"]
 
-#: The methods a pendulum-like scene offers besides ``auto``.
-SMALL_ANGLE_METHODS = ("small-angle", "elliptic")
-#: Relative accuracy claimed for the elliptic (AGM) period: a few ulp (tests/test_pendulum.py).
+#: The methods a pendulum-like scene offers besides ``auto``, cheapest model first.
+PENDULUM_METHODS = ("small-angle", "series", "elliptic", "ode")
+#: The former name of :data:`PENDULUM_METHODS`.
+SMALL_ANGLE_METHODS = PENDULUM_METHODS
+#: Relative accuracy claimed for the elliptic (AGM) period: a few ulp (tests/test_pendulum.py,
+#: tests/test_accuracy.py).
 ELLIPTIC_ERROR = 1e-15
+#: The smallest relative tolerance asked of solve_ivp (DOP853 refuses less than 100 eps).
+ODE_FLOOR = 100.0 * 2.0 ** -52
 _SHORT = {"degree": "deg", "radian": "rad", "grade": "grad", "arcminute": "arcmin",
           "arcsecond": "arcsec"}
 
@@ -87,6 +94,63 @@ def _amplitude_parts(amplitude) -> tuple[float, str, float]:
     return radians, "radian", radians
 
 
+def _complement_radians(magnitude: float, unit: str) -> float:
+    """``pi - theta0`` in radians, formed in the unit typed (exact there for degrees, grads,
+    ...; against the double-double pi for radians), as :func:`half_complement_sin` does."""
+    if unit in HALF_TURN:
+        return (HALF_TURN[unit] - magnitude) * (math.pi / HALF_TURN[unit])
+    return (PI_HI - magnitude) + PI_LO
+
+
+def _pendulum_ode(theta0: float, complement: float, rtol: float, horizon: float) -> float:
+    """``T / T0`` from ``theta'' = -sin(theta)`` (time scaled by ``omega0``) integrated from
+    rest at ``theta0`` to the bottom, ``theta = 0`` (a quarter period), with solve_ivp
+    (DOP853, a terminal event), imported here.
+
+    Up to 90 degrees the state is ``y = theta / theta0`` (``y'' = -sin(theta0 y) / theta0``,
+    from 1 to 0), of order one for any amplitude down to the subnormal ones. Beyond, it is the
+    angle from the top, ``psi = pi - theta`` (``psi'' = sin(psi)``, from ``psi0`` = the
+    complement formed in the unit typed, up to ``psi = pi``): a hair below 180 degrees
+    ``psi0`` keeps its digits where ``theta0`` as a float near pi does not, and the slow climb
+    away from the top is integrated with a relative error control on a small number.
+    ``horizon`` is a generous end time (scaled); ``rtol / 10`` (at least :data:`ODE_FLOOR`) is
+    the solver's tolerance.
+    """
+    from scipy.integrate import solve_ivp
+
+    tol = max(0.1 * rtol, ODE_FLOOR)
+    if theta0 <= 0.5 * math.pi:
+        start, sense = 1.0, -1.0
+
+        if theta0 < 1e-8:    # sin(x)/theta0 = y (1 - x^2/6), x = theta0 y, to 1e-34
+            def rhs(_t, y):
+                x = theta0 * y[0]
+                return [y[1], -y[0] * (1.0 - x * x / 6.0)]
+        else:
+            def rhs(_t, y):
+                return [y[1], -math.sin(theta0 * y[0]) / theta0]
+
+        def bottom(_t, y):
+            return y[0]
+    else:
+        start, sense = complement, 1.0
+
+        def rhs(_t, y):
+            return [y[1], math.sin(y[0])]
+
+        def bottom(_t, y):
+            return (y[0] - PI_HI) - PI_LO
+
+    bottom.terminal = True
+    bottom.direction = sense
+    sol = solve_ivp(rhs, (0.0, horizon), [start, 0.0], method="DOP853", rtol=tol,
+                    atol=1e-3 * tol * min(start, 1.0), events=bottom)
+    if not sol.t_events[0].size:
+        raise PhysicsError("the integration of the pendulum's equation of motion did not reach "
+                           "the bottom; use --method elliptic")
+    return float(sol.t_events[0][0]) / (0.5 * math.pi)
+
+
 def large_amplitude(omega0: float, amplitude, method: str = "auto", rtol: float = 1e-9,
                     what: str = "pendulum") -> Outcome:
     """Period of a pendulum-like oscillator ``theta'' + omega0^2 sin(theta) = 0`` at amplitude
@@ -94,6 +158,8 @@ def large_amplitude(omega0: float, amplitude, method: str = "auto", rtol: float 
 
     .. math:: T = \\frac{2\\pi}{\\omega_0\\,\\mathrm{AGM}(1, \\cos(\\theta_0/2))}
               = \\frac{4 K(\\sin(\\theta_0/2))}{\\omega_0}
+              = T_0 \\sum_{n \\ge 0} \\left(\\frac{(2n)!}{2^{2n} (n!)^2}\\right)^2
+                \\sin^{2n}(\\theta_0/2)
 
     ``cos(theta0/2)`` is taken as ``sin`` of half the complement, in the unit typed
     (:func:`~dyncalc.physics.numerics.half_complement_sin`), so the period is within a few ulp
@@ -105,35 +171,58 @@ def large_amplitude(omega0: float, amplitude, method: str = "auto", rtol: float 
         Small-oscillation angular frequency, rad/s.
     amplitude : Quantity or None
         Angle ``[angle]``, 0 <= amplitude < 180 deg. ``None``: small oscillations.
-    method : {"auto", "small-angle", "elliptic"}
-        ``auto`` takes the small-angle model when its true relative period error
-        ``1 - AGM(1, cos(theta0/2))`` (about ``theta0^2/16``) meets ``rtol``, otherwise the
-        elliptic period; the AGM costs a handful of float operations, so the choice is made on
-        the exact error rather than on a bound.
+    method : {"auto", "small-angle", "series", "elliptic", "ode"}
+        ``small-angle``: ``T = T0``; its error ``1 - AGM(1, cos(theta0/2))`` (about
+        ``theta0^2/16``) is computed exactly and reported.
+        ``series``: the amplitude series ``T/T0 = 1 + k^2/4 + 9 k^4/64 + ...`` in
+        ``k^2 = sin^2(theta0/2)`` (``1 + theta0^2/16 + 11 theta0^4/3072 + ...``), summed to the
+        order ``rtol`` needs by its rigorous tail bound ``a_(N+1) / ((1 - k^2) S_N)``
+        (:func:`~dyncalc.physics.numerics.pendulum_series`); at most
+        :data:`~dyncalc.physics.numerics.SERIES_MAX_TERMS` terms, which near 180 degrees is
+        not enough (the terms fall like ``k^(2n)``): a warning then gives the error left and
+        suggests elliptic.
+        ``elliptic``: the exact period by the AGM (within a few ulp).
+        ``ode``: the equation of motion integrated with scipy's solve_ivp (DOP853) to the
+        bottom (a quarter period); its error is reported against the elliptic period.
+        ``auto`` takes ``small-angle`` when its exact error meets ``rtol``, otherwise
+        ``elliptic``, and never ``ode``. It skips ``series``: the plain AGM costs about what
+        the series' first terms cost (1 to 2 microseconds, each further term about 0.15 more)
+        and the compensated AGM of the elliptic value a few microseconds more, against a few
+        hundred microseconds for the whole call (``benchmarks/results/speed_accuracy.md``):
+        no order of the series saves more than a few per cent, and the elliptic period is
+        exact to 2 ulp where the series is only within ``rtol``.
     rtol : float
         Relative tolerance on the period.
 
     Returns
     -------
     Outcome with ``omega``, ``f``, ``T`` at the amplitude and ``omega_0``; ``error_estimate``
-    is the relative period error of the model chosen, ``(T_model - T) / T`` in magnitude.
+    is the relative period error of the model chosen, ``|T_model - T| / T``: exact for
+    small-angle, the tail plus rounding bound for series (the true error against the elliptic
+    period when the series stops short of ``rtol``), :data:`ELLIPTIC_ERROR` for elliptic, and
+    for ode its difference from the elliptic period plus :data:`ELLIPTIC_ERROR`. A method whose
+    error exceeds ``rtol`` says so in ``warnings``.
     """
     if amplitude is None:
-        if method == "elliptic":
-            raise PhysicsError(f"--method elliptic needs an amplitude (--amplitude or "
+        if method in ("series", "elliptic", "ode"):
+            raise PhysicsError(f"--method {method} needs an amplitude (--amplitude or "
                                f"amplitude=); without one the {what} is linear")
         out = Outcome(periodic(omega0), model="linear", method="closed-form")
         out.assumptions.append("small oscillations (sin theta = theta); give --amplitude for "
                                "the exact large-amplitude period")
         return out
     magnitude, unit, radians = _amplitude_parts(amplitude)
-    shown = f"{magnitude:.6g} {_SHORT.get(unit, unit)}"
+    digits = f"{magnitude:.6g}"
+    if radians < math.pi and float(digits) * (math.pi / HALF_TURN.get(unit, math.pi)) >= math.pi:
+        digits = repr(magnitude)    # 179.999999999 deg, not "180 deg"
+    shown = f"{digits} {_SHORT.get(unit, unit)}"
     if radians >= math.pi:
         raise PhysicsError(f"the amplitude must be below 180 degrees; at {shown} the {what} "
                            "goes over the top and does not swing back")
     cos_half = half_complement_sin(magnitude, unit)
-    factor = pendulum_period_factor(cos_half)        # T / T0 = 1 / AGM(1, cos(theta0/2))
-    small_error = 1.0 - 1.0 / factor                  # (T - T0) / T: the small-angle error
+    mean = agm(1.0, cos_half)          # omega / omega_0 = AGM(1, cos(theta0/2)) = T0 / T
+    factor = 1.0 / mean                # T / T0, to a few ulp: enough to judge the models
+    small_error = 1.0 - mean           # (T - T0) / T: the small-angle error
     if method == "auto":  # the AGM is cheaper than any bound, so decide on the true error
         method = "small-angle" if small_error <= rtol else "elliptic"
     assumption = (f"the small-angle period is {100 * small_error:.3g}% short at an amplitude "
@@ -148,11 +237,74 @@ def large_amplitude(omega0: float, amplitude, method: str = "auto", rtol: float 
                                 f"{rtol:g}: its period is {100 * small_error:.3g}% short at "
                                 f"{shown}; use --method elliptic")
         return out
-    values = periodic(omega0 / factor)
-    values["omega_0"] = periodic(omega0)["omega"]
+    omega_0 = periodic(omega0)["omega"]
+    if method == "series":
+        return _series_outcome(omega0, omega_0, radians, cos_half, factor, rtol, shown,
+                               assumption)
+    if method == "ode":
+        return _ode_outcome(omega0, omega_0, radians, _complement_radians(magnitude, unit),
+                            factor, rtol, shown, assumption)
+    # the period itself: the AGM correctly rounded, then one rounding (omega0 / factor would
+    # take two, and the plain AGM rounds at every step: 3.5 ulp against 0.5)
+    values = periodic(omega0 * agm_compensated(1.0, cos_half))
+    values["omega_0"] = omega_0
     out = Outcome(values, model="nonlinear", method="elliptic", error_estimate=ELLIPTIC_ERROR,
                   assumptions=[f"exact period of theta'' + omega_0^2 sin(theta) = 0 (complete "
                                f"elliptic integral by the AGM); {assumption}"])
+    if ELLIPTIC_ERROR > rtol:
+        out.warnings.append(f"the requested tolerance {rtol:g} is below the accuracy of "
+                            f"float64 arithmetic: the elliptic period is within "
+                            f"{ELLIPTIC_ERROR:g} (a few ulp)")
+    return out
+
+
+def _series_outcome(omega0, omega_0, radians, cos_half, factor, rtol, shown, assumption):
+    k2 = math.sin(0.5 * radians) ** 2
+    total, terms, tail, rounding = pendulum_series(k2, cos_half * cos_half, rtol)
+    rounding += 6.0 * UNIT_ROUNDOFF    # omega_0 = sqrt(g/l), omega_0 / S, T = 2 pi / omega
+    values = periodic(omega0 / total)
+    values["omega_0"] = omega_0
+    order = f"through k^{2 * terms}" if terms else "its leading term only"
+    out = Outcome(values, model="nonlinear", method="series",
+                  assumptions=[f"amplitude series of the exact period in k^2 = "
+                               f"sin^2(theta0/2), {order} ({terms + 1} terms; tail bound "
+                               f"{tail:.2g}, rounding bound {rounding:.2g}); {assumption}"])
+    if tail + rounding <= rtol:
+        out.error_estimate = tail + rounding
+        return out
+    actual = abs(1.0 - total / factor) + ELLIPTIC_ERROR + rounding  # against the AGM
+    out.error_estimate = min(tail + rounding, actual)
+    if terms >= SERIES_MAX_TERMS:
+        out.warnings.append(f"the series misses the requested tolerance {rtol:g}: after "
+                            f"{terms + 1} terms its period is still "
+                            f"{100 * out.error_estimate:.2g}% short at {shown} (its terms fall "
+                            "like sin^(2n)(theta0/2)); use --method elliptic")
+    else:
+        out.warnings.append(f"the series misses the requested tolerance {rtol:g}: the rounding "
+                            f"of its {terms + 1} terms may reach {rounding:.2g}; use --method "
+                            "elliptic")
+    return out
+
+
+def _ode_outcome(omega0, omega_0, radians, complement, factor, rtol, shown, assumption):
+    if radians > 0.0:
+        ode_factor = _pendulum_ode(radians, complement, rtol, horizon=math.pi * factor + 1.0)
+    else:
+        ode_factor = 1.0      # at rest: the period is the small-oscillation one
+    error = abs(ode_factor / factor - 1.0) + ELLIPTIC_ERROR
+    values = periodic(omega0 / ode_factor)
+    values["omega_0"] = omega_0
+    out = Outcome(values, model="nonlinear", method="ode", error_estimate=error,
+                  assumptions=[f"theta'' + omega_0^2 sin(theta) = 0 integrated with DOP853 "
+                               f"from rest to the bottom, a quarter period (error: against "
+                               f"the elliptic period); {assumption}"])
+    if rtol < ODE_FLOOR * 10.0:
+        out.warnings.append(f"--rtol {rtol:g} is below what solve_ivp accepts; the ODE ran at "
+                            f"{ODE_FLOOR:.3g}")
+    if error > rtol:
+        out.warnings.append(f"the ode method reached a relative error of {error:.2g} at "
+                            f"{shown}, more than the requested tolerance {rtol:g}; use "
+                            "--method elliptic")
     return out
 
 
@@ -230,7 +382,7 @@ def physical_pendulum(m, a, g, J=None, J_A=None, amplitude=None, method: str = "
                            "kg*m^2, which no body can have (J_A = J + m a^2 with J >= 0)")
     if not math.isfinite(ja):
         raise PhysicsError("J_A = J + m a^2 overflows float64")
-    omega0 = math.sqrt(monomial(1.0, [(m_, 1), (g_, 1), (a_, 1), (ja, -1)]))
+    omega0 = root_monomial(1.0, [(m_, 1), (g_, 1), (a_, 1), (ja, -1)])  # no overflow midway
     out = large_amplitude(omega0, amplitude, method, rtol, what="physical pendulum")
     from ..units import Q_
 

@@ -61,7 +61,7 @@ register(Scene(
     example="dyncalc natural-frequency --length 1m --amplitude 90deg",
     example_result={"T": "2.36824634628600988 s", "omega": "2.65309616840881415 rad/s",
                     "omega_0": "3.13155712066696941 rad/s"},
-    methods=("small-angle", "elliptic"),
+    methods=("small-angle", "series", "elliptic", "ode"),
 ))
 
 register(Scene(
@@ -81,5 +81,5 @@ register(Scene(
     example='dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=2/12 kg*m^2"',
     example_result={"omega": "3.83535852300668236 rad/s", "T": "1.63822632734056901 s",
                     "J_A": "0.6666666666666667 kg*m^2"},
-    methods=("small-angle", "elliptic"),
+    methods=("small-angle", "series", "elliptic", "ode"),
 ))
