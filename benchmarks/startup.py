@@ -2,62 +2,175 @@
 
 The floor is ``python -c`` importing pint and numpy, loading the registry from pint's cache and
 computing one quantity: dyncalc cannot answer faster than its stack loads. Each round runs
-every command once, in turn, so the machine's drift hits them alike; the table gives medians,
-the spread (interquartile range) and the ratio of medians to the floor.
+every command once, in a fresh random order, so the machine's drift and any order effect hit
+them alike; the tables give, per command, the median wall time and CPU time (user + system of
+the child) with their interquartile ranges, and the paired ratio to the floor: the median over
+rounds of (this command's time / the floor's time in the same round), with its IQR.
 
-    python benchmarks/startup.py [--rounds 21]
+GNU units and qalc (``apt-get install units qalc``), when installed, do the same calculation
+(omega = sqrt(k/m) for k = 100 N/m, m = 2 kg) for comparison; they are skipped when absent.
 
-Run it from the project root with the project's virtual environment active (or its python).
+    python benchmarks/startup.py [--rounds 41] [--out benchmarks/results/startup.md]
+    python benchmarks/startup.py --before /tmp/old   # also an older checkout, side by side
+
+``--before DIR`` adds the one-off target run from the dyncalc package in DIR (a checkout of an
+earlier commit, e.g. ``git archive HEAD~3 | tar -x -C /tmp/old``; put first on PYTHONPATH), in
+the same paired rounds, so before and after are measured under the same conditions.
+
+Run it with the project's virtual environment's python (dyncalc installed in it). The children
+run without ``PYTHONDONTWRITEBYTECODE``, so dyncalc's modules load from their bytecode cache,
+as pint's and numpy's do (an installed program has its bytecode compiled at install time).
 """
 from __future__ import annotations
 
 import argparse
+import os
+import platform
+import random
+import shutil
 import statistics
-import subprocess
 import sys
 import time
+from pathlib import Path
 
+ROOT = Path(__file__).resolve().parent.parent
+BIN = Path(sys.executable).parent
 FLOOR = ("import pint, numpy; u = pint.UnitRegistry(cache_folder=':auto:'); "
          "print((u.Quantity(100, 'N/m') / u.Quantity(2, 'kg')) ** 0.5)")
-
-COMMANDS = {
-    "floor: python -c 'import pint, numpy; registry; one quantity'": [sys.executable, "-c",
-                                                                       FLOOR],
-    "dyncalc natural-frequency --k 100N/m --m 2kg --json": [
-        sys.executable, "-m", "dyncalc", "natural-frequency", "--k", "100N/m", "--m", "2kg",
-        "--json"],
-    "dyncalc spring-series 200N/m 300N/m --value k_eq": [
-        sys.executable, "-m", "dyncalc", "spring-series", "200N/m", "300N/m", "--value",
-        "k_eq"],
-    "dyncalc --help": [sys.executable, "-m", "dyncalc", "--help"],
-}
+FLOOR_NAME = "floor: python -c 'import pint, numpy; registry; one quantity'"
+TARGET = "dyncalc natural-frequency --k 100N/m --m 2kg --json"
+COMPLETE_VAR = "_DYNCALC_COMPLETE"
 
 
-def timed(argv: list[str]) -> float:
+def commands(before: str | None = None) -> dict[str, list[str]]:
+    """name -> argv; the first is the floor, the second the target of issue 8."""
+    script = BIN / "dyncalc"
+    dyncalc = [str(script)] if script.exists() else [sys.executable, "-m", "dyncalc"]
+    cmds = {
+        FLOOR_NAME: [sys.executable, "-c", FLOOR],
+        TARGET: [*dyncalc, "natural-frequency", "--k", "100N/m", "--m", "2kg", "--json"],
+        "python -m dyncalc natural-frequency --k 100N/m --m 2kg --json": [
+            sys.executable, "-m", "dyncalc", "natural-frequency", "--k", "100N/m", "--m", "2kg",
+            "--json"],
+        "dyncalc spring-series 200N/m 300N/m --value k_eq": [
+            *dyncalc, "spring-series", "200N/m", "300N/m", "--value", "k_eq"],
+        "dyncalc --help": [*dyncalc, "--help"],
+        "dyncalc shell completion (`_DYNCALC_COMPLETE=bash_complete`)": (dyncalc, {
+            COMPLETE_VAR: "bash_complete", "COMP_WORDS": "dyncalc spring-", "COMP_CWORD": "1"}),
+        "python -c 'import pint, numpy' (imports only)": [sys.executable, "-c",
+                                                          "import pint, numpy"],
+    }
+    if before:
+        cmds[f"before ({before}): {TARGET}"] = (
+            [*dyncalc, "natural-frequency", "--k", "100N/m", "--m", "2kg", "--json"],
+            {"PYTHONPATH": before})
+    units = shutil.which("units")
+    if units:
+        cmds["GNU units -t 'sqrt(100 N/m / (2 kg))' 1/s"] = [
+            units, "-t", "sqrt(100 N/m / (2 kg))", "1/s"]
+    qalc = shutil.which("qalc")
+    if qalc:
+        cmds["qalc -t 'sqrt((100 N/m)/(2 kg)) to 1/s'"] = [
+            qalc, "-t", "sqrt((100 N/m)/(2 kg)) to 1/s"]
+    return cmds
+
+
+def child_env() -> dict[str, str]:
+    env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    env.pop(COMPLETE_VAR, None)
+    env["NO_COLOR"] = "1"
+    return env
+
+
+def run_once(argv, env: dict[str, str]) -> tuple[float, float]:
+    """(wall seconds, CPU seconds of the child: user + system); ``argv`` may come with extra
+    environment variables, as ``(argv, {NAME: VALUE})``."""
+    if isinstance(argv, tuple):
+        argv, extra = argv
+        env = {**env, **extra}
     start = time.perf_counter()
-    subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
-    return time.perf_counter() - start
+    pid = os.posix_spawn(argv[0], argv, env, file_actions=[
+        (os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0),
+        (os.POSIX_SPAWN_OPEN, 2, os.devnull, os.O_WRONLY, 0)])
+    _pid, status, usage = os.wait4(pid, 0)
+    wall = time.perf_counter() - start
+    code = os.waitstatus_to_exitcode(status)
+    if code != 0:
+        raise SystemExit(f"{' '.join(argv)} exited {code}")
+    return wall, usage.ru_utime + usage.ru_stime
+
+
+def quartiles(values: list[float]) -> tuple[float, float, float]:
+    q1, q2, q3 = statistics.quantiles(values, n=4, method="inclusive")
+    return q1, statistics.median(values), q3
+
+
+def measure(cmds: dict[str, list[str]], rounds: int, seed: int = 8):
+    env = child_env()
+    for argv in cmds.values():  # warm up: pint's registry cache, bytecode, the page cache
+        for _ in range(2):
+            run_once(argv, env)
+    rng = random.Random(seed)
+    wall: dict[str, list[float]] = {name: [] for name in cmds}
+    cpu: dict[str, list[float]] = {name: [] for name in cmds}
+    names = list(cmds)
+    for _ in range(rounds):
+        rng.shuffle(names)
+        for name in names:
+            w, c = run_once(cmds[name], env)
+            wall[name].append(w)
+            cpu[name].append(c)
+    return wall, cpu
+
+
+def table(cmds, wall, cpu, rounds: int) -> str:
+    floor_wall, floor_cpu = wall[FLOOR_NAME], cpu[FLOOR_NAME]
+    lines = [f"{rounds} paired rounds; Python {platform.python_version()}, "
+             f"{os.cpu_count()} CPUs, {platform.machine()}; "
+             f"{time.strftime('%Y-%m-%d %H:%M')}",
+             "",
+             "| command | wall median (ms) | wall IQR (ms) | CPU median (ms) | "
+             "wall / floor (paired median) | ratio IQR | CPU / floor (paired median) |",
+             "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for name in cmds:
+        q1, med, q3 = quartiles(wall[name])
+        ratios = [a / b for a, b in zip(wall[name], floor_wall)]
+        r1, rmed, r3 = quartiles(ratios)
+        cpu_ratio = statistics.median(a / b for a, b in zip(cpu[name], floor_cpu))
+        lines.append(f"| `{name}` | {1000 * med:.0f} | {1000 * (q3 - q1):.0f} | "
+                     f"{1000 * statistics.median(cpu[name]):.0f} | {rmed:.3f} | "
+                     f"{r3 - r1:.3f} | {cpu_ratio:.3f} |")
+    return "\n".join(lines)
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--rounds", type=int, default=21)
-    rounds = parser.parse_args().rounds
-    for argv in COMMANDS.values():  # warm the caches (pint's registry cache, the page cache)
-        timed(argv)
-    samples: dict[str, list[float]] = {name: [] for name in COMMANDS}
-    for _ in range(rounds):
-        for name, argv in COMMANDS.items():
-            samples[name].append(timed(argv))
-    floor = statistics.median(next(iter(samples.values())))
-    print(f"{rounds} rounds, {sys.version.split()[0]}\n")
-    print("| command | median (ms) | IQR (ms) | / floor |")
-    print("| --- | ---: | ---: | ---: |")
-    for name, times in samples.items():
-        q1, _q2, q3 = statistics.quantiles(times, n=4)
-        median = statistics.median(times)
-        print(f"| `{name}` | {1000 * median:.0f} | {1000 * (q3 - q1):.0f} | "
-              f"{median / floor:.2f} |")
+    parser.add_argument("--rounds", type=int, default=41)
+    parser.add_argument("--before", metavar="DIR",
+                        help="also time the one-off from the dyncalc package in DIR")
+    parser.add_argument("--out", default=str(ROOT / "benchmarks" / "results" / "startup.md"),
+                        help="markdown file for the table ('-': do not write one)")
+    args = parser.parse_args()
+    cmds = commands(args.before)
+    missing = [tool for tool in ("units", "qalc") if not shutil.which(tool)]
+    wall, cpu = measure(cmds, args.rounds)
+    text = table(cmds, wall, cpu, args.rounds)
+    if args.before:
+        old = wall[f"before ({args.before}): {TARGET}"]
+        ratio = statistics.median(a / b for a, b in zip(wall[TARGET], old))
+        text += (f"\n\nAfter / before, paired median of the rounds: {ratio:.3f} "
+                 f"(`{TARGET}`; before = the package in {args.before})")
+    if missing:
+        text += (f"\n\n(not installed, skipped: {', '.join(missing)}; "
+                 "`apt-get install units qalc`)")
+    print(text)
+    if args.out != "-":
+        out = Path(args.out)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text("## Start-up (`python benchmarks/startup.py`)\n\n" + text + "\n",
+                       encoding="utf-8")
+        print(f"\nwritten to {out}", file=sys.stderr)
 
 
 if __name__ == "__main__":

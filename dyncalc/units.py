@@ -43,7 +43,7 @@ from __future__ import annotations
 import math
 import re
 import unicodedata
-from dataclasses import dataclass
+from dataclasses import FrozenInstanceError
 from typing import Any
 
 from .errors import InputError
@@ -88,11 +88,49 @@ def Q_(value: Any, unit: Any = ""):
 
 
 # --------------------------------------------------------------------------------------------
+# Records
+#
+# Dim and Parsed behave as frozen dataclasses (the same constructor, repr, equality, hash and
+# immutability), and _Tok and _Reading as plain ones; they are written out by hand because
+# @dataclass generates and compiles their methods at import, which every run of the program
+# would pay for (start-up, issue 8).
+
+
+class _Frozen:
+    """Equality, hash, repr and immutability of a frozen dataclass, from ``__slots__``."""
+
+    __slots__ = ()
+
+    def _values(self) -> tuple:
+        return tuple(getattr(self, name) for name in self.__slots__)
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__slots__)
+        return f"{type(self).__qualname__}({fields})"
+
+    def __eq__(self, other):
+        if other.__class__ is self.__class__:
+            return self._values() == other._values()
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self._values())
+
+    def __setattr__(self, name, value):
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name):
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+
+    def __reduce__(self):  # copy and pickle: rebuilt through the constructor
+        return type(self), self._values()
+
+
+# --------------------------------------------------------------------------------------------
 # Dimensions
 
 
-@dataclass(frozen=True)
-class Dim:
+class Dim(_Frozen):
     """A physical dimension a parameter or result has.
 
     ``name`` is the word in messages ("stiffness"), ``display`` the dimension as shown
@@ -101,11 +139,15 @@ class Dim:
     dimensionless.
     """
 
-    name: str
-    display: str
-    check: str
-    si: str
-    kind: str = "plain"
+    __slots__ = ("name", "display", "check", "si", "kind")
+
+    def __init__(self, name: str, display: str, check: str, si: str, kind: str = "plain"):
+        setattr_ = object.__setattr__
+        setattr_(self, "name", name)
+        setattr_(self, "display", display)
+        setattr_(self, "check", check)
+        setattr_(self, "si", si)
+        setattr_(self, "kind", kind)
 
 
 STIFFNESS = Dim("stiffness", "[force]/[length]", "[force]/[length]", "N/m")
@@ -146,9 +188,20 @@ def _base_name(name: str) -> str:
         return name
 
 
+_UNIT_CLASSES: dict[str, str] = {}
+
+
 def _unit_class(name: str) -> str:
     """``turn`` (revolutions), ``angle`` (radian, degree, ...), ``cycle`` (hertz), ``rate``
-    (a plain 1/time such as 1/s, 1/min) or ``other``."""
+    (a plain 1/time such as 1/s, 1/min) or ``other``. Remembered per name: asking pint costs
+    a fraction of a millisecond each time, and a quantity asks for every unit it names."""
+    known = _UNIT_CLASSES.get(name)
+    if known is None:
+        known = _UNIT_CLASSES[name] = _classify_unit(name)
+    return known
+
+
+def _classify_unit(name: str) -> str:
     base = _base_name(name)
     if base in _TURN_UNITS:
         return "turn"
@@ -169,8 +222,7 @@ def _is_angle_unit(name: str) -> bool:
 # Reading text
 
 
-@dataclass(frozen=True)
-class Parsed:
+class Parsed(_Frozen):
     """A quantity read from the user's text.
 
     ``quantity`` is the pint quantity (rates already normalised to rad/s or Hz, see
@@ -179,11 +231,15 @@ class Parsed:
     the user wrote it (``""`` when none), ``text`` the original text.
     """
 
-    quantity: Any
-    si: Any
-    assumed_si: bool
-    unit_text: str
-    text: str
+    __slots__ = ("quantity", "si", "assumed_si", "unit_text", "text")
+
+    def __init__(self, quantity: Any, si: Any, assumed_si: bool, unit_text: str, text: str):
+        setattr_ = object.__setattr__
+        setattr_(self, "quantity", quantity)
+        setattr_(self, "si", si)
+        setattr_(self, "assumed_si", assumed_si)
+        setattr_(self, "unit_text", unit_text)
+        setattr_(self, "text", text)
 
 
 _NUMBER_RE = re.compile(r"(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
@@ -231,12 +287,18 @@ def _check_characters(text: str, label: str) -> None:
                                        f"U+{ord(ch):04X}")
 
 
-@dataclass
 class _Tok:
-    kind: str       # NUM, NAME, OP
-    value: Any      # float for NUM, str otherwise
-    pos: int
-    exponent: bool = False  # a number that is a power (m^2, s**-1, m²), not a magnitude
+    """A token: ``kind`` NUM, NAME or OP; ``value`` a float for NUM, text otherwise; ``pos``
+    where it starts; ``exponent`` a number that is a power (m^2, s**-1, m²), not a magnitude."""
+
+    __slots__ = ("kind", "value", "pos", "exponent")
+
+    def __init__(self, kind: str, value: Any, pos: int, exponent: bool = False):
+        self.kind, self.value, self.pos, self.exponent = kind, value, pos, exponent
+
+    def __repr__(self) -> str:
+        return (f"_Tok(kind={self.kind!r}, value={self.value!r}, pos={self.pos!r}, "
+                f"exponent={self.exponent!r})")
 
 
 def _tokenize(text: str, label: str) -> list[_Tok]:
@@ -512,17 +574,17 @@ class _Parser:
                                 f"reads powers up to {MAX_UNIT_POWER}")
 
 
-@dataclass
 class _Reading:
     """What the parser read: the quantity, whether a unit was named, the unit as typed, the
     canonical names of every unit mentioned, and whether it adds revolutions to non-revolutions
     (``1 turn/s + 1 Hz``, which pint sums through radians)."""
 
-    quantity: Any
-    named: bool
-    unit_text: str
-    names: list[str]
-    mixed_turns: bool
+    __slots__ = ("quantity", "named", "unit_text", "names", "mixed_turns")
+
+    def __init__(self, quantity: Any, named: bool, unit_text: str, names: list[str],
+                 mixed_turns: bool):
+        self.quantity, self.named, self.unit_text = quantity, named, unit_text
+        self.names, self.mixed_turns = names, mixed_turns
 
 
 def _evaluate(text: str, label: str) -> _Reading:

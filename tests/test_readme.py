@@ -37,7 +37,8 @@ def test_readme_has_examples():
 
 
 @pytest.mark.parametrize("command, expected", EXAMPLES, ids=[c for c, _ in EXAMPLES])
-def test_readme_example(command, expected):
+def test_readme_example(command, expected, monkeypatch):
+    monkeypatch.chdir(README.parent)  # examples read files such as docs/examples/*.csv
     words = shlex.split(command)
     assert words[0] == "dyncalc"
     result = CliRunner().invoke(cli, words[1:])

@@ -2,10 +2,13 @@
 one ``Error:`` line on stderr (a traceback only with ``--debug``).
 
 Importing this package imports click and nothing heavy: pint, numpy and rich load only when a
-command computes or draws, so ``--help`` and shell completion stay fast.
+command computes or draws, so ``--help`` and shell completion stay fast. A command's module is
+imported only when that command is run, completed or listed (``--help``), so a one-off pays
+for its own command alone.
 """
 from __future__ import annotations
 
+import importlib
 import sys
 
 import click
@@ -20,8 +23,71 @@ def _one_line(text: str) -> str:
     return " ".join(str(text).split())
 
 
+#: Command name -> the module under ``dyncalc.cli`` that defines it (in its ``COMMANDS``).
+COMMAND_MODULES = {
+    "spring-series": "springs", "spring-parallel": "springs",
+    "natural-frequency": "frequency", "damping-ratio": "damping",
+    "rolling-onset": "rolling", "coriolis": "coriolis", "scenes": "scenes",
+}
+
+
+class _LazyCommands(dict):
+    """The group's commands by name, each module imported when its command is first looked up;
+    listing or iterating imports them all (``--help`` shows every command's summary)."""
+
+    def _load(self, name: str) -> None:
+        module = importlib.import_module(f"{__name__}.{COMMAND_MODULES[name]}")
+        for command in module.COMMANDS:
+            dict.setdefault(self, command.name, command)
+
+    def _load_all(self) -> None:
+        for name in COMMAND_MODULES:
+            if not dict.__contains__(self, name):
+                self._load(name)
+
+    def __missing__(self, name):
+        if name not in COMMAND_MODULES:
+            raise KeyError(name)
+        self._load(name)
+        return dict.__getitem__(self, name)
+
+    def __contains__(self, name) -> bool:
+        return dict.__contains__(self, name) or name in COMMAND_MODULES
+
+    def get(self, name, default=None):
+        try:
+            return self[name]
+        except KeyError:
+            return default
+
+    def __iter__(self):
+        self._load_all()
+        return dict.__iter__(self)
+
+    def __len__(self) -> int:
+        self._load_all()
+        return dict.__len__(self)
+
+    def keys(self):
+        self._load_all()
+        return dict.keys(self)
+
+    def values(self):
+        self._load_all()
+        return dict.values(self)
+
+    def items(self):
+        self._load_all()
+        return dict.items(self)
+
+
 class DyncalcGroup(click.Group):
-    """A click group that turns every failure into the contract's exit status and message."""
+    """A click group that turns every failure into the contract's exit status and message,
+    and imports each command's module when that command is first looked up."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.commands = _LazyCommands(self.commands)
 
     def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True,
              **extra):
@@ -87,9 +153,3 @@ def main(argv=None):
     """Console-script entry point."""
     return cli.main(args=argv, prog_name="dyncalc")
 
-
-from . import coriolis, damping, frequency, rolling, scenes, springs  # noqa: E402
-
-for _module in (springs, frequency, damping, rolling, coriolis, scenes):  # register them
-    for _command in _module.COMMANDS:
-        cli.add_command(_command)

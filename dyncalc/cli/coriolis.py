@@ -62,6 +62,11 @@ def coriolis(out, **options):
       dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
       dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
     """
+    if out.batch is not None:
+        from ..batch import CoriolisRows
+
+        return out.run_batch(CoriolisRows(strict=out.strict),
+                             {f"--{o}": v for o, v in options.items()})
     from ..frames import coriolis_result
 
     return out.emit(coriolis_result(options, strict=out.strict))

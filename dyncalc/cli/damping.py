@@ -3,8 +3,7 @@ from __future__ import annotations
 
 import click
 
-from .options import output_options
-from .scenes import _complete_scene
+from .options import complete_scene, output_options
 
 
 @click.command("damping-ratio")
@@ -23,7 +22,7 @@ from .scenes import _complete_scene
 @click.option("--amplitudes", metavar='"x0,x1,..."',
               help='Successive peaks, one per cycle, one optional unit at the end, e.g. '
                    '"12.1, 8.3, 5.9 mV": the decrement is fitted to all of them.')
-@click.option("--scene", metavar="NAME", shell_complete=_complete_scene,
+@click.option("--scene", metavar="NAME", shell_complete=complete_scene,
               help="A scene with a damper (rod-in-fluid, pendulum-spring-dashpot, "
                    "frame-brace-damper), its parameters as NAME=QUANTITY words.")
 @click.option("--omega", metavar="OMEGA",
@@ -58,6 +57,14 @@ def damping_ratio(parameters, c, k, m, decrement, ratio, cycles, amplitudes, sce
           --plot decay.png
       dyncalc damping-ratio --scene rod-in-fluid m=1.5kg l=0.8m "beta=2 N*s/m^2"  # E5.14
     """
+    if out.batch is not None:
+        from ..batch import DampingRows
+
+        options = {"--c": c, "--k": k, "--m": m, "--decrement": decrement, "--ratio": ratio,
+                   "--cycles": cycles, "--amplitudes": amplitudes, "--omega": omega, "--g": g,
+                   "--plot": plot, "": parameters}
+        return out.run_batch(DampingRows(scene=scene, method=method, rtol=out.rtol,
+                                         strict=out.strict), options)
     from ..damping import damping_ratio as compute, plot_decay
 
     result = compute(c=c, k=k, m=m, omega=omega, decrement=decrement, ratio=ratio,

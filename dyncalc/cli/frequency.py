@@ -4,8 +4,7 @@ from __future__ import annotations
 import click
 
 from ..errors import InputError
-from .options import output_options
-from .scenes import _complete_scene
+from .options import complete_scene, output_options
 
 #: Standard options and the scene parameter each one is (SPEC.md).
 STANDARD = {"k": "k", "m": "m", "kt": "kt", "inertia": "J", "length": "l",
@@ -14,8 +13,6 @@ STANDARD = {"k": "k", "m": "m", "kt": "kt", "inertia": "J", "length": "l",
 
 def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
     """Standard options and NAME=QUANTITY words -> (texts by parameter, labels by parameter)."""
-    from ..checks import split_assignment
-
     texts: dict[str, str] = {}
     labels: dict[str, str] = {}
     for option, param in STANDARD.items():
@@ -23,6 +20,8 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
             texts[param] = options[option]
             labels[param] = f"--{option}"
     for word in words:
+        from ..checks import split_assignment
+
         name, text = split_assignment(word, "a scene parameter")
         if name in texts:
             raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
@@ -33,7 +32,7 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
 
 @click.command("natural-frequency")
 @click.argument("parameters", nargs=-1, metavar="[NAME=QUANTITY]...")
-@click.option("--scene", metavar="NAME", shell_complete=_complete_scene,
+@click.option("--scene", metavar="NAME", shell_complete=complete_scene,
               help="The set-up (dyncalc scenes lists them); default: chosen by the "
                    "parameters given (k, m: mass-spring; kt, J: torsional; l: pendulum).")
 @click.option("--k", metavar="K", help="Stiffness, e.g. '2 kN/m' (k=).")
@@ -47,7 +46,8 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
 @click.option("--g", metavar="G", help="Gravitational acceleration (default 9.80665 m/s^2).")
 @click.option("--method", metavar="METHOD",
               help="auto (default: the cheapest model meeting --rtol), or one the scene offers "
-                   "(dyncalc scenes NAME lists them; pendulums: small-angle, elliptic; "
+                   "(dyncalc scenes NAME lists them; pendulums: small-angle, series, elliptic, "
+                   "ode; "
                    "half-cylinder-shell: linear, quadrature, ode).")
 @output_options
 def natural_frequency(parameters, scene, method, out, **options):
@@ -63,7 +63,14 @@ def natural_frequency(parameters, scene, method, out, **options):
       dyncalc natural-frequency --length 1m --amplitude 170deg
       dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=2/12 kg*m^2"
       dyncalc natural-frequency --k 100N/m --m 2kg --check f=1.13Hz
+      dyncalc natural-frequency --batch rows.csv     # header: k [N/m],m [kg]
     """
+    if out.batch is not None:
+        from ..batch import NaturalFrequencyRows
+
+        return out.run_batch(NaturalFrequencyRows(STANDARD, scene=scene, method=method,
+                                                  rtol=out.rtol, strict=out.strict),
+                             {**{f"--{o}": v for o, v in options.items()}, "": parameters})
     from ..scenes.runner import infer_scene, run_scene
 
     texts, labels = collect_parameters(options, parameters)

@@ -1,38 +1,46 @@
 """The output contract every computing command shares, as one decorator.
 
 ``@output_options`` adds ``--json``, ``--value``, ``--unit``, ``--digits``, ``--check``,
-``--rtol``, ``--explain``, ``--strict-units`` and ``--debug`` and hands the command an
-:class:`Output` whose :meth:`Output.emit` renders a :class:`~dyncalc.result.Result` and returns
-the exit status.
+``--rtol``, ``--explain``, ``--strict-units``, ``--batch``, ``--on-error`` and ``--debug`` and
+hands the command an :class:`Output` whose :meth:`Output.emit` renders a
+:class:`~dyncalc.result.Result` and returns the exit status, and whose :meth:`Output.run_batch`
+runs the command over the rows of a ``--batch`` file (:mod:`dyncalc.batch`).
 """
 from __future__ import annotations
 
 import functools
 import os
 import sys
-from dataclasses import dataclass, field
 
 import click
 
 from ..errors import EXIT_CHECK_FAILED, EXIT_OK, InputError
 
-__all__ = ["Output", "output_options"]
+__all__ = ["Output", "output_options", "complete_scene"]
 
 MAX_DIGITS = 17
 
 
-@dataclass
 class Output:
-    """How the user asked to see the result."""
+    """How the user asked to see the result (and, with ``--batch``, where the rows come from)."""
 
-    as_json: bool = False
-    value: str | None = None
-    units: list[str] = field(default_factory=list)
-    digits: int = 6
-    checks: list[str] = field(default_factory=list)
-    rtol: float | None = None
-    explain: bool = False
-    strict: bool = False
+    __slots__ = ("as_json", "value", "units", "digits", "checks", "rtol", "explain", "strict",
+                 "batch", "on_error", "debug")
+
+    def __init__(self, as_json: bool = False, value: str | None = None,
+                 units: list[str] | None = None, digits: int = 6,
+                 checks: list[str] | None = None, rtol: float | None = None,
+                 explain: bool = False, strict: bool = False, batch: str | None = None,
+                 on_error: str = "stop", debug: bool = False):
+        self.as_json, self.value, self.digits = as_json, value, digits
+        self.units = list(units or [])
+        self.checks = list(checks or [])
+        self.rtol, self.explain, self.strict = rtol, explain, strict
+        self.batch, self.on_error, self.debug = batch, on_error, debug
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__slots__)
+        return f"Output({fields})"
 
     def unit_map(self, result) -> dict[str, str]:
         from ..checks import split_assignment
@@ -51,11 +59,14 @@ class Output:
 
     def emit(self, result) -> int:
         """Print ``result`` in the chosen form; the exit status (1 if a check failed)."""
-        from ..checks import run_checks
         from . import render
 
-        units = self.unit_map(result)
-        checks = run_checks(result, self.checks, self.rtol) if self.checks else []
+        units = self.unit_map(result) if self.units else {}
+        checks = []
+        if self.checks:
+            from ..checks import run_checks
+
+            checks = run_checks(result, self.checks, self.rtol)
         if self.value is not None:
             text = render.bare_value(result, self.value, units)
             for w in result.warnings:
@@ -74,6 +85,40 @@ class Output:
             click.echo(render.plain_text(result, units, self.digits, checks, self.explain))
         return EXIT_CHECK_FAILED if any(not c.passed for c in checks) else EXIT_OK
 
+    def run_batch(self, spec, given: dict[str, object] | None = None) -> int:
+        """Run the command described by ``spec`` (a :class:`dyncalc.batch.RowSpec`) over the
+        rows of ``--batch``; ``given`` maps the command's parameter options (``--k``) and
+        words to what was typed, all of which must be empty: the file gives the parameters."""
+        from ..batch import run_batch
+        from ..checks import split_assignment
+
+        for option, used in (("--value", self.value is not None), ("--check", self.checks),
+                             ("--explain", self.explain)):
+            if used:
+                raise InputError(f"{option} does not go with --batch: {_BATCH_REFUSALS[option]}")
+        for label, value in (given or {}).items():
+            if not value:
+                continue
+            if label in _BATCH_REFUSALS:
+                raise InputError(f"{label} does not go with --batch: {_BATCH_REFUSALS[label]}")
+            shown = label if label.startswith("-") else " ".join(value)
+            raise InputError(f"{shown[:80]} and --batch do not go together: with --batch "
+                             "every parameter comes from a column of the file")
+        units = {}
+        for spec_text in self.units:
+            name, unit = split_assignment(spec_text, "--unit")
+            units[name] = unit.strip()
+        return run_batch(spec, self.batch, as_json=self.as_json, units=units,
+                         on_error=self.on_error, debug=self.debug)
+
+
+_BATCH_REFUSALS = {
+    "--value": "every result is a column of the output (--unit NAME=UNIT sets its unit)",
+    "--check": "compare the output's columns with your answers instead",
+    "--explain": "run one row on its own with --explain",
+    "--plot": "draw one row's decay on its own with --plot",
+}
+
 
 def _is_terminal() -> bool:
     if os.environ.get("DYNCALC_PLAIN"):
@@ -82,6 +127,14 @@ def _is_terminal() -> bool:
         return sys.stdout.isatty()
     except (AttributeError, ValueError):
         return False
+
+
+def complete_scene(ctx, param, incomplete):
+    """Shell completion of ``--scene``: the scene names (``dyncalc.cli.scenes`` is imported
+    only when completing, not on every run of the commands that take ``--scene``)."""
+    from .scenes import _complete_scene
+
+    return _complete_scene(ctx, param, incomplete)
 
 
 def _positive_rtol(ctx, param, value):
@@ -95,9 +148,10 @@ def output_options(command):
 
     @functools.wraps(command)
     def wrapper(*args, as_json, value, units, digits, checks, rtol, explain, strict_units,
-                debug, **kwargs):
+                batch, on_error, debug, **kwargs):
         out = Output(as_json=as_json, value=value, units=list(units), digits=digits,
-                     checks=list(checks), rtol=rtol, explain=explain, strict=strict_units)
+                     checks=list(checks), rtol=rtol, explain=explain, strict=strict_units,
+                     batch=batch, on_error=on_error, debug=debug)
         return command(*args, out=out, **kwargs)
 
     decorators = [
@@ -119,6 +173,14 @@ def output_options(command):
                      help="Show the formula, the values substituted and the assumptions."),
         click.option("--strict-units", is_flag=True,
                      help="Refuse bare numbers: every quantity needs its unit."),
+        click.option("--batch", metavar="FILE",
+                     help="Compute every row of a CSV file ('-': standard input) whose header "
+                          "names the parameters ('k [N/m],m [kg]'); print CSV with a column "
+                          "per result, or JSON lines with --json."),
+        click.option("--on-error", type=click.Choice(["stop", "skip"]), default="stop",
+                     show_default=True,
+                     help="With --batch: at a bad row, stop, or skip it and go on (exit 2 "
+                          "either way)."),
         click.option("--debug", is_flag=True, help="Show a traceback on internal errors."),
     ]
     for decorate in reversed(decorators):

@@ -1,4 +1,5 @@
-"""Results -> text: a rich table on a terminal, plain aligned text when piped, JSON, a bare value.
+"""Results -> text: a rich table on a terminal, plain aligned text when piped, JSON, a bare value,
+the cells of a batch CSV row.
 
 Nothing here computes physics; it converts units for display (``--unit``) and formats numbers.
 rich is imported only when a table is drawn on a terminal.
@@ -7,12 +8,16 @@ from __future__ import annotations
 
 import json
 import math
+from typing import TYPE_CHECKING
 
-from ..checks import Check
 from ..errors import InputError
 from ..result import Entry, Result, format_number
 
-__all__ = ["to_json", "bare_value", "plain_text", "rich_text", "format_number"]
+if TYPE_CHECKING:
+    from ..checks import Check
+
+__all__ = ["to_json", "json_data", "bare_value", "batch_cell", "plain_text", "rich_text",
+           "format_number"]
 
 
 def _shown(entry: Entry, units: dict[str, str]):
@@ -46,6 +51,12 @@ def _json_entries(entries: dict[str, Entry], units: dict[str, str]) -> dict:
 def to_json(result: Result, units: dict[str, str], checks: list[Check],
             explain: bool) -> str:
     """The JSON object of SPEC.md (extra keys: ``checks``, ``explanation``, ``extra``)."""
+    return json.dumps(json_data(result, units, checks, explain), indent=2, allow_nan=False)
+
+
+def json_data(result: Result, units: dict[str, str], checks: list[Check],
+              explain: bool) -> dict:
+    """The object :func:`to_json` prints, as a dict (a batch JSON line is this object)."""
     data = {
         "command": result.command,
         "scene": result.scene,
@@ -60,7 +71,7 @@ def to_json(result: Result, units: dict[str, str], checks: list[Check],
         data["checks"] = [c.as_dict() for c in checks]
     if explain and result.explanation is not None:
         data["explanation"] = result.explanation.as_dict()
-    return json.dumps(data, indent=2, allow_nan=False)
+    return data
 
 
 def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
@@ -72,6 +83,19 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
     if entry.overflowed:
         raise InputError(f"--value {name}: {name} overflows float64 at these inputs")
     value, _unit = _shown(entry, units)
+    if isinstance(value, str):
+        return value
+    if hasattr(value, "__len__"):
+        return ",".join(repr(float(v)) for v in value)
+    return repr(float(value))
+
+
+def batch_cell(entry: Entry, unit: str) -> str:
+    """A result in a batch CSV cell, in the column's ``unit``: what ``--value`` prints
+    (``repr`` of the float, ``inf``, vectors comma-separated); empty when it overflowed."""
+    if entry.overflowed:
+        return ""
+    value = entry.value_in(unit)
     if isinstance(value, str):
         return value
     if hasattr(value, "__len__"):

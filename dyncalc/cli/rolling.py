@@ -58,6 +58,11 @@ def rolling_onset(method, out, **options):
       dyncalc rolling-onset --v0 "3 m/s" --mu 0.25 --body hoop --incline -10deg
       dyncalc rolling-onset --v0 15mph --mu 0.2 --method ode --json
     """
+    if out.batch is not None:
+        from ..batch import RollingRows
+
+        return out.run_batch(RollingRows(method=method, rtol=out.rtol, strict=out.strict),
+                             {f"--{o}": v for o, v in options.items()})
     from ..rolling import rolling_onset_result
 
     return out.emit(rolling_onset_result(options, method=method, rtol=out.rtol,

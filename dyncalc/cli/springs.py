@@ -30,6 +30,10 @@ def _network_command(how: str, summary: str, examples: str):
     @click.argument("elements", nargs=-1, metavar="ELEMENT...")
     @output_options
     def command(elements, out):
+        if out.batch is not None:
+            from ..batch import SpringRows
+
+            return out.run_batch(SpringRows(how, strict=out.strict), {"": elements})
         from ..networks import network_stiffness
 
         return out.emit(network_stiffness(how, list(elements), strict=out.strict))

@@ -1,0 +1,157 @@
+"""Batch throughput: ``dyncalc natural-frequency --batch FILE`` for 10^3 .. 10^7 rows.
+
+Each size's CSV (``k [N/m],m [kg]``, random values) is generated on the fly into a temporary
+file; dyncalc runs as a child process writing to /dev/null, and the table gives the wall time
+end to end (start-up included), rows per second, and the child's peak memory (``ru_maxrss``
+from ``wait4``). Further rows: JSON lines output, cells that carry their own (mixed) units, the
+generic row-by-row path (``DYNCALC_BATCH_GENERIC=1``, what every command other than
+natural-frequency's closed-form scenes uses), and the loop of one-off calls a shell script
+would run instead (100 calls, extrapolated).
+
+    python benchmarks/batch.py [--max-rows 10000000] [--repeat 3] [--out benchmarks/results/batch.md]
+
+Run it with the project's virtual environment's python (dyncalc installed in it).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import random
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+BIN = Path(sys.executable).parent
+
+
+def dyncalc() -> list[str]:
+    script = BIN / "dyncalc"
+    return [str(script)] if script.exists() else [sys.executable, "-m", "dyncalc"]
+
+
+def child_env(**extra) -> dict[str, str]:
+    env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)  # dyncalc's bytecode cached, as pint's and numpy's
+    env.pop(extra.pop("unset", ""), None)
+    env.update(extra)
+    return env
+
+
+def write_rows(path: Path, n: int, *, units: bool = False, seed: int = 8) -> None:
+    """``n`` rows of (k, m), written in blocks so that 10^7 rows take little memory here."""
+    rng = random.Random(seed)
+    k_units = ("N/m", "kN/m", "lbf/in")
+    m_units = ("kg", "g", "lb")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("k,m\n" if units else "k [N/m],m [kg]\n")
+        block = 100_000
+        for start in range(0, n, block):
+            count = min(block, n - start)
+            if units:
+                lines = [f"{rng.uniform(1, 1000):.6g} {rng.choice(k_units)},"
+                         f"{rng.uniform(0.1, 10):.4g} {rng.choice(m_units)}\n"
+                         for _ in range(count)]
+            else:
+                lines = [f"{rng.uniform(1, 1000):.6g},{rng.uniform(0.1, 10):.4g}\n"
+                         for _ in range(count)]
+            f.write("".join(lines))
+
+
+def run(argv: list[str], env: dict[str, str]) -> tuple[float, int]:
+    """(wall seconds, peak resident memory of the child in MB)."""
+    start = time.perf_counter()
+    pid = os.posix_spawn(argv[0], argv, env, file_actions=[
+        (os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0),
+        (os.POSIX_SPAWN_OPEN, 2, os.devnull, os.O_WRONLY, 0)])
+    _pid, status, usage = os.wait4(pid, 0)
+    wall = time.perf_counter() - start
+    code = os.waitstatus_to_exitcode(status)
+    if code != 0:
+        raise SystemExit(f"{' '.join(argv)} exited {code}")
+    return wall, usage.ru_maxrss // 1024  # Linux: kilobytes
+
+
+def measure(label: str, argv: list[str], env: dict[str, str], rows: int, repeat: int):
+    times, peaks = [], []
+    for _ in range(repeat):
+        wall, peak = run(argv, env)
+        times.append(wall)
+        peaks.append(peak)
+    wall = statistics.median(times)
+    spread = (max(times) - min(times)) if repeat > 1 else 0.0
+    row = (f"| {label} | {rows:,} | {wall:.2f} | {spread:.2f} | {rows / wall:,.0f} | "
+           f"{max(peaks)} |")
+    print(row, flush=True)
+    return row
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--max-rows", type=int, default=10_000_000)
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="runs per size up to 10^6 rows (the median is shown)")
+    parser.add_argument("--out", default=str(ROOT / "benchmarks" / "results" / "batch.md"),
+                        help="markdown file for the table ('-': do not write one)")
+    args = parser.parse_args()
+    exe = dyncalc()
+    env = child_env()
+    lines = [f"Python {platform.python_version()}, {os.cpu_count()} CPUs, "
+             f"{platform.machine()}; {time.strftime('%Y-%m-%d %H:%M')}; wall time end to end "
+             "(start-up included), median of the runs, spread = max - min",
+             "",
+             "| run | rows | wall (s) | spread (s) | rows/s | peak memory (MB) |",
+             "| --- | ---: | ---: | ---: | ---: | ---: |"]
+    print("\n".join(lines), flush=True)
+    with tempfile.TemporaryDirectory(prefix="dyncalc-batch-") as tmp:
+        path = Path(tmp) / "rows.csv"
+        sizes = [n for n in (10**3, 10**4, 10**5, 10**6, 10**7) if n <= args.max_rows]
+        for n in sizes:
+            write_rows(path, n)
+            repeat = args.repeat if n <= 10**6 else 1
+            lines.append(measure("`natural-frequency --batch` (CSV)",
+                                 [*exe, "natural-frequency", "--batch", str(path)], env, n,
+                                 repeat))
+            if n == 10**5:
+                lines.append(measure("`natural-frequency --batch --json` (JSON lines)",
+                                     [*exe, "natural-frequency", "--batch", str(path),
+                                      "--json"], env, n, args.repeat))
+        n = min(10**5, args.max_rows)
+        write_rows(path, n, units=True)
+        lines.append(measure("cells with mixed units (`2 kN/m`, `12 lbf/in`, ...)",
+                             [*exe, "natural-frequency", "--batch", str(path)], env, n,
+                             args.repeat))
+        n = min(10**3, args.max_rows)
+        write_rows(path, n)
+        lines.append(measure("generic path, row by row (`DYNCALC_BATCH_GENERIC=1`)",
+                             [*exe, "natural-frequency", "--batch", str(path)],
+                             child_env(DYNCALC_BATCH_GENERIC="1"), n, args.repeat))
+    # the loop a shell script would run instead: 100 one-off calls, extrapolated
+    rng = random.Random(8)
+    calls = 100
+    start = time.perf_counter()
+    for _ in range(calls):
+        run([*exe, "natural-frequency", "--k", f"{rng.uniform(1, 1000):.6g}N/m", "--m",
+             f"{rng.uniform(0.1, 10):.4g}kg", "--json"], env)
+    each = (time.perf_counter() - start) / calls
+    row = (f"| loop of one-off calls (`dyncalc natural-frequency --k ... --m ... --json`), "
+           f"{calls} calls | {calls} | {each * calls:.2f} | | {1 / each:,.1f} | |")
+    print(row)
+    lines.append(row)
+    lines += ["", f"A loop of one-off calls takes {each:.3f} s a row: 10^5 rows would take "
+                  f"{each * 1e5 / 3600:.1f} hours (extrapolated from {calls} calls)."]
+    text = "\n".join(lines)
+    print(lines[-1])
+    if args.out != "-":
+        out = Path(args.out)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text("## Batch (`python benchmarks/batch.py`)\n\n" + text + "\n",
+                       encoding="utf-8")
+        print(f"\nwritten to {out}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
