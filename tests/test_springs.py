@@ -378,3 +378,12 @@ def test_element_functions_show_k_eq_in_si():
                                          "5kN/m", "EI=2e4 N*m^2"]).results["k_eq"]
     assert (entry.unit, entry.value_in()) == ("N/m", pytest.approx(4655.172413793103,
                                                                    rel=1e-15))
+
+
+def test_series_with_an_element_that_underflowed_to_zero_warns():
+    """3 EI/l^3 with l = 1e300 m underflows to 0: the series is 0, with the underflow warning
+    (it used to divide by zero; found by the fuzz suite, issue 9)."""
+    result = network_stiffness("series", ["cantilever(l=1e300 m, EI=1 N*m^2)", "1 N/m"])
+    assert result.results["k_eq"].si == 0.0
+    assert ("k_eq underflows to zero (below 4.9e-324 N/m) although no input is zero"
+            in result.warnings)

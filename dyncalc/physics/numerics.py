@@ -78,6 +78,8 @@ def series_sum(values) -> float:
     if not finite:
         return math.inf
     smallest = min(finite)
+    if smallest == 0.0:  # an element that underflowed to zero: the series carries nothing
+        return 0.0
     terms = []
     for k in finite:
         m, e = math.frexp(k)             # k = m 2**e, 0.5 <= m < 1
