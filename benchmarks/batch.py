@@ -8,7 +8,8 @@ generic row-by-row path (``DYNCALC_BATCH_GENERIC=1``, what every command other t
 natural-frequency's closed-form scenes uses), and the loop of one-off calls a shell script
 would run instead (100 calls, extrapolated).
 
-    python benchmarks/batch.py [--max-rows 10000000] [--repeat 3] [--out benchmarks/results/batch.md]
+    python benchmarks/batch.py [--max-rows 10000000] [--repeat 3]
+                               [--out benchmarks/results/batch.md]
 
 Run it with the project's virtual environment's python (dyncalc installed in it).
 """
@@ -100,8 +101,9 @@ def main() -> None:
     exe = dyncalc()
     env = child_env()
     lines = [f"Python {platform.python_version()}, {os.cpu_count()} CPUs, "
-             f"{platform.machine()}; {time.strftime('%Y-%m-%d %H:%M')}; wall time end to end "
-             "(start-up included), median of the runs, spread = max - min",
+             f"{platform.machine()}; {time.strftime('%Y-%m-%d %H:%M')}; load average "
+             f"{os.getloadavg()[0]:.2f} at the start; wall time end to end (start-up "
+             "included), median of the runs, spread = max - min",
              "",
              "| run | rows | wall (s) | spread (s) | rows/s | peak memory (MB) |",
              "| --- | ---: | ---: | ---: | ---: | ---: |"]

@@ -106,7 +106,11 @@ def quartiles(values: list[float]) -> tuple[float, float, float]:
     return q1, statistics.median(values), q3
 
 
+LOAD = [0.0]
+
+
 def measure(cmds: dict[str, list[str]], rounds: int, seed: int = 8):
+    LOAD[0] = os.getloadavg()[0]
     env = child_env()
     for argv in cmds.values():  # warm up: pint's registry cache, bytecode, the page cache
         for _ in range(2):
@@ -128,7 +132,8 @@ def table(cmds, wall, cpu, rounds: int) -> str:
     floor_wall, floor_cpu = wall[FLOOR_NAME], cpu[FLOOR_NAME]
     lines = [f"{rounds} paired rounds; Python {platform.python_version()}, "
              f"{os.cpu_count()} CPUs, {platform.machine()}; "
-             f"{time.strftime('%Y-%m-%d %H:%M')}",
+             f"{time.strftime('%Y-%m-%d %H:%M')}; load average {LOAD[0]:.2f} at the start "
+             f"(other processes on the machine widen the spread)",
              "",
              "| command | wall median (ms) | wall IQR (ms) | CPU median (ms) | "
              "wall / floor (paired median) | ratio IQR | CPU / floor (paired median) |",
@@ -154,6 +159,7 @@ def main() -> None:
     args = parser.parse_args()
     cmds = commands(args.before)
     missing = [tool for tool in ("units", "qalc") if not shutil.which(tool)]
+    args.rounds = max(2, args.rounds)  # quartiles need two
     wall, cpu = measure(cmds, args.rounds)
     text = table(cmds, wall, cpu, args.rounds)
     if args.before:

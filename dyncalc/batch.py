@@ -70,12 +70,17 @@ _UNIT_CHAR_RE = re.compile(r"[^\W\d]|[%°]")
 _PLAIN_RE = re.compile(rf"[+-]?{_LITERAL}")
 #: A unit the vectorised path may read once for a whole column: names, ``*``, ``/``, and
 #: numbers only as exponents (so ``X unit`` is ``X`` times the unit, exactly, in floats).
-_NAME = r"[A-Za-z_µμΩΩÅ°%][A-Za-z0-9_µμΩΩÅ°]*(?:\s*(?:\*\*|\^)\s*[+-]?[0-9]+(?:\.[0-9]+)?|[²³])?"
-_SIMPLE_UNIT = rf"{_NAME}(?:\s*[*/·×]?\s*{_NAME})*"
+#: (Only spaces and tabs separate tokens, as in dyncalc's tokenizer, which refuses others.)
+_NAME = (r"[A-Za-z_µμΩΩÅ°%][A-Za-z0-9_µμΩΩÅ°]*"
+         r"(?:[ \t]*(?:\*\*|\^)[ \t]*[+-]?[0-9]+(?:\.[0-9]+)?|[²³])?")
+_SIMPLE_UNIT = rf"{_NAME}(?:[ \t]*[*/·×]?[ \t]*{_NAME})*"
 _SIMPLE_UNIT_RE = re.compile(_SIMPLE_UNIT)
 #: A cell the vectorised path reads: a plain number and perhaps a simple unit. The number is
 #: an atomic group, so it is the literal dyncalc's tokenizer would read, never a shorter one.
-_CELL_RE = re.compile(rf"\s*([+-]?(?>{_LITERAL}))\s*({_SIMPLE_UNIT})?\s*")
+_CELL_RE = re.compile(rf"[ \t]*([+-]?(?>{_LITERAL}))[ \t]*({_SIMPLE_UNIT})?[ \t]*")
+#: Every line of a column joined by line breaks, split in one pass into the number and the
+#: rest (which must then be a simple unit, checked once per distinct unit).
+_CELL_LINE_RE = re.compile(rf"^[ \t]*([+-]?(?>{_LITERAL}))[ \t]*(.*)$", re.M)
 
 
 def has_own_unit(cell: str) -> bool:
@@ -459,17 +464,39 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
     if plain is not None:
         groups[header_unit] = (None, plain, cells)
     else:
-        members: dict[str, list[int]] = {}
-        literals: list[str] = [""] * n
-        for i, cell in enumerate(cells):
-            m = _CELL_RE.fullmatch(cell)
-            if m is None:
-                continue
-            literals[i] = m.group(1)
-            members.setdefault((m.group(2) or "").strip() or header_unit, []).append(i)
-        for unit, rows in members.items():
-            lits = [literals[i] for i in rows]
-            groups[unit] = (rows, np.array(list(map(float, lits)), dtype=float), lits)
+        joined = "\n".join(cells)
+        pairs = _CELL_LINE_RE.findall(joined) if n else []
+        if len(pairs) == n and joined.count("\n") == n - 1:  # one pass over the column
+            literals, raw_units = zip(*pairs)
+            values = np.fromiter(map(float, literals), dtype=float, count=n)
+            # the unit each cell is in: its own (trailing blanks off), or the header's
+            code_of = {raw: raw.rstrip(" \t") or header_unit for raw in set(raw_units)}
+            distinct = sorted(set(code_of.values()))
+            if len(distinct) == 1:
+                unit = distinct[0]
+                if not unit or _SIMPLE_UNIT_RE.fullmatch(unit):
+                    groups[unit] = (None, values, literals)
+            else:
+                index = {unit: k for k, unit in enumerate(distinct)}
+                codes = np.fromiter(map(index.__getitem__, map(code_of.__getitem__, raw_units)),
+                                    dtype=np.intp, count=n)
+                for k, unit in enumerate(distinct):
+                    if unit and not _SIMPLE_UNIT_RE.fullmatch(unit):
+                        continue  # not a plain unit: those cells go to the generic path
+                    rows = np.flatnonzero(codes == k).tolist()
+                    groups[unit] = (rows, values[rows], [literals[i] for i in rows])
+        else:
+            members: dict[str, list[int]] = {}
+            literals = [""] * n
+            for i, cell in enumerate(cells):
+                m = _CELL_RE.fullmatch(cell)
+                if m is None:
+                    continue
+                literals[i] = m.group(1)
+                members.setdefault((m.group(2) or "").strip() or header_unit, []).append(i)
+            for unit, rows in members.items():
+                lits = [literals[i] for i in rows]
+                groups[unit] = (rows, np.array(list(map(float, lits)), dtype=float), lits)
     ureg = registry()
     for unit, (rows, values, literals) in groups.items():
         info = _unit_info(unit, param.dim, strict, cache)

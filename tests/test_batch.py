@@ -120,7 +120,8 @@ def test_empty_cell_means_not_given(tmp_path):
     result = run_file(tmp_path, "natural-frequency", text)
     assert result.exit_code == 0, result.stderr
     rows = csv_rows(result)
-    assert rows[0] == ["k [N/m]", "m [kg]", "zeta", "omega [rad/s]", "f [Hz]", "T [s]", "zeta_result",
+    assert rows[0] == ["k [N/m]", "m [kg]", "zeta", "omega [rad/s]", "f [Hz]", "T [s]",
+                       "zeta_result",
                        "omega_d [rad/s]", "f_d [Hz]", "T_d [s]"]
     assert rows[1][3:] == [value("natural-frequency", "--k", "100", "--m", "2", name=n)
                            for n in ("omega", "f", "T")] + ["", "", "", ""]
@@ -527,6 +528,15 @@ def test_a_percent_unit_in_json_lines(tmp_path):
     first = json.loads(fast[1].splitlines()[0])
     assert first["inputs"]["zeta"] == {"value": 5.0, "unit": "%"}
     assert first["results"]["zeta"]["unit"] == "%"
+
+
+@pytest.mark.parametrize("cell", ["2\u00a0kN/m", "2 kN\u2009/m", "2 kN/m\u200b", "2\tkN/m",
+                                  "２ kN/m", "2 kN//m", "2 kN/m/", "+-2 kN/m"])
+def test_odd_cells_read_as_the_one_off_reads_them(tmp_path, cell):
+    path = tmp_path / "rows.csv"
+    path.write_text(f"k,m\n{cell},2\n2 kN/m,{cell.replace('kN/m', 'kg')}\n")
+    for as_json in (False, True):
+        assert _run(path, True, as_json) == _run(path, False, as_json)
 
 
 def test_the_vectorised_path_is_taken():
