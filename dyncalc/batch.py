@@ -19,8 +19,8 @@ Two paths give the same numbers:
 * a vectorised path (:func:`_natural_frequency_fast`) computes whole chunks of
   ``natural-frequency`` rows of the closed-form linear scenes (mass-spring, torsional, the
   pendulum without an amplitude) at once with numpy, with the same kernels written for arrays
-  (:func:`sqrt_ratio_array`: the binary exponents split off with ``np.frexp``, as
-  :func:`dyncalc.physics.numerics.sqrt_ratio` does with ``math.frexp``). A unit is read once
+  (:func:`~dyncalc.physics.numerics.sqrt_ratio_array`: the binary exponents split off with
+  ``np.frexp``, as :func:`~dyncalc.physics.numerics.sqrt_ratio` does with ``math.frexp``). A unit is read once
   per chunk and column (pint converts the whole array), not once per cell. Any row it cannot
   take exactly as the one-off would (a cell that is not a plain number with a plain unit, a
   value out of range, a result that is zero, infinite or needs a warning) goes to the generic
@@ -47,9 +47,11 @@ from typing import Any
 import numpy as np
 
 from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError
+from .physics.numerics import sqrt_ratio_array
+from .physics.outcome import damped_arrays, periodic_arrays
 
 __all__ = ["run_batch", "NaturalFrequencyRows", "SpringRows", "DampingRows", "RollingRows",
-           "CoriolisRows", "sqrt_ratio_array", "CHUNK_ROWS", "ON_ERROR"]
+           "CoriolisRows", "CHUNK_ROWS", "ON_ERROR"]
 
 #: Rows read, computed and written at a time; the result columns of CSV output are those of
 #: the first chunk's rows.
@@ -336,42 +338,6 @@ class CoriolisRows(RowSpec):
 # --------------------------------------------------------------------------------------------
 # The vectorised kernels (the careful scalar kernels of physics/numerics.py, for arrays)
 
-TWO_PI = 2.0 * math.pi
-
-
-def sqrt_ratio_array(a, b):
-    """``sqrt(a / b)`` elementwise for positive finite arrays, as
-    :func:`dyncalc.physics.numerics.sqrt_ratio` computes it for floats: the binary exponents
-    are split off (``np.frexp``) and halved exactly, so ``a / b`` may lie far outside float64;
-    a result beyond it is ``inf``.
-
-    >>> sqrt_ratio_array(np.array([100.0, 1e300]), np.array([2.0, 1e-300])).tolist()
-    [7.0710678118654755, 1e+300]
-    """
-    ma, ea = np.frexp(np.asarray(a, dtype=float))
-    mb, eb = np.frexp(np.asarray(b, dtype=float))
-    shift = ea.astype(np.int64) - eb
-    odd = (shift % 2).astype(bool)
-    ma = np.where(odd, ma * 2.0, ma)
-    shift = shift - odd
-    with np.errstate(over="ignore", under="ignore"):
-        return np.ldexp(np.sqrt(ma / mb), (shift // 2).astype(np.int32))
-
-
-def periodic_arrays(omega, suffix: str = "") -> dict[str, Any]:
-    """``omega``, ``f = omega / 2 pi``, ``T = 2 pi / omega`` for positive ``omega`` (as
-    :func:`dyncalc.physics.outcome.periodic`)."""
-    with np.errstate(over="ignore", under="ignore", divide="ignore"):
-        return {f"omega{suffix}": omega, f"f{suffix}": omega / TWO_PI,
-                f"T{suffix}": TWO_PI / omega}
-
-
-def damped_arrays(omega, zeta) -> dict[str, Any]:
-    """``zeta``, ``omega_d = omega sqrt((1 - zeta)(1 + zeta))``, ``f_d``, ``T_d`` for
-    ``0 <= zeta < 1`` (as :func:`dyncalc.physics.outcome.damped`)."""
-    values = {"zeta": zeta}
-    values.update(periodic_arrays(omega * np.sqrt((1.0 - zeta) * (1.0 + zeta)), "_d"))
-    return values
 
 
 #: The natural-frequency scenes the vectorised path computes: scene -> (the two parameters of

@@ -11,8 +11,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm", "half_complement_sin",
-           "pendulum_period_factor", "sqrt_ratio", "root_monomial", "Wide", "agm_array",
+__all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm",
+           "half_complement_sin", "pendulum_period_factor", "sqrt_ratio", "sqrt_ratio_array",
+           "root_monomial", "Wide", "agm_array",
            "agm_compensated", "pendulum_series", "one_minus_square", "guarded_acos",
            "bracketed_root", "Root", "cross_product"]
 
@@ -781,3 +782,22 @@ def cross_product(a, b) -> np.ndarray:
 
     return np.array([difference(a2, b3, a3, b2), difference(a3, b1, a1, b3),
                      difference(a1, b2, a2, b1)])
+
+
+def sqrt_ratio_array(a, b):
+    """``sqrt(a / b)`` elementwise for positive finite arrays, as
+    :func:`dyncalc.physics.numerics.sqrt_ratio` computes it for floats: the binary exponents
+    are split off (``np.frexp``) and halved exactly, so ``a / b`` may lie far outside float64;
+    a result beyond it is ``inf``.
+
+    >>> sqrt_ratio_array(np.array([100.0, 1e300]), np.array([2.0, 1e-300])).tolist()
+    [7.0710678118654755, 1e+300]
+    """
+    ma, ea = np.frexp(np.asarray(a, dtype=float))
+    mb, eb = np.frexp(np.asarray(b, dtype=float))
+    shift = ea.astype(np.int64) - eb
+    odd = (shift % 2).astype(bool)
+    ma = np.where(odd, ma * 2.0, ma)
+    shift = shift - odd
+    with np.errstate(over="ignore", under="ignore"):
+        return np.ldexp(np.sqrt(ma / mb), (shift // 2).astype(np.int32))

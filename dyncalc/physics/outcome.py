@@ -10,9 +10,11 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
 from ..units import Q_
 
-__all__ = ["Outcome", "periodic", "damped"]
+__all__ = ["Outcome", "periodic", "damped", "periodic_arrays", "damped_arrays"]
 
 
 @dataclass
@@ -69,3 +71,22 @@ def damped(omega_si: float, zeta: float) -> tuple[dict[str, Any], list[str]]:
     regime = "critically damped" if zeta == 1.0 else "overdamped"
     return values, [f"zeta = {zeta:.6g}: the system is {regime}; it does not oscillate, so "
                     "there is no damped frequency"]
+
+
+_TWO_PI = 2.0 * math.pi
+
+
+def periodic_arrays(omega, suffix: str = "") -> dict[str, Any]:
+    """``omega``, ``f = omega / 2 pi``, ``T = 2 pi / omega`` for positive ``omega`` arrays (the
+    array form of :func:`periodic`, used by batch mode)."""
+    with np.errstate(over="ignore", under="ignore", divide="ignore"):
+        return {f"omega{suffix}": omega, f"f{suffix}": omega / _TWO_PI,
+                f"T{suffix}": _TWO_PI / omega}
+
+
+def damped_arrays(omega, zeta) -> dict[str, Any]:
+    """``zeta``, ``omega_d = omega sqrt((1 - zeta)(1 + zeta))``, ``f_d``, ``T_d`` for
+    ``0 <= zeta < 1`` (the array form of :func:`damped`)."""
+    values = {"zeta": zeta}
+    values.update(periodic_arrays(omega * np.sqrt((1.0 - zeta) * (1.0 + zeta)), "_d"))
+    return values
