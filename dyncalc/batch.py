@@ -20,8 +20,8 @@ Two paths give the same numbers:
   ``natural-frequency`` rows of the closed-form linear scenes (mass-spring, torsional, the
   pendulum without an amplitude) at once with numpy, with the same kernels written for arrays
   (:func:`~dyncalc.physics.numerics.sqrt_ratio_array`: the binary exponents split off with
-  ``np.frexp``, as :func:`~dyncalc.physics.numerics.sqrt_ratio` does with ``math.frexp``). A unit is read once
-  per chunk and column (pint converts the whole array), not once per cell. Any row it cannot
+  ``np.frexp``, as :func:`~dyncalc.physics.numerics.sqrt_ratio` does with ``math.frexp``).
+  A unit is read once per chunk and column (pint converts the whole array), not once per cell. Any row it cannot
   take exactly as the one-off would (a cell that is not a plain number with a plain unit, a
   value out of range, a result that is zero, infinite or needs a warning) goes to the generic
   path, so refusals and warnings are the one-off's own.
