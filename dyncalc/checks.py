@@ -35,15 +35,19 @@ class Check:
     unit: str
     rel_diff: float
     rtol: float
+    diagnosis: str | None = None  # the common slip the given answer matches, if one does
 
     @property
     def passed(self) -> bool:
         return self.rel_diff <= self.rtol
 
     def as_dict(self) -> dict:
-        return {"name": self.name, "expected": self.expected, "given": self.given,
+        data = {"name": self.name, "expected": self.expected, "given": self.given,
                 "unit": self.unit, "rel_diff": self.rel_diff, "rtol": self.rtol,
                 "pass": self.passed}
+        if self.diagnosis is not None:
+            data["diagnosis"] = self.diagnosis
+        return data
 
 
 def run_checks(result: Result, specs: list[str], rtol: float | None) -> list[Check]:
@@ -76,5 +80,74 @@ def run_checks(result: Result, specs: list[str], rtol: float | None) -> list[Che
             label = f"--check {name}"
             shown_expected = float(convert(expected, entry.dim, unit, label=label, name=name))
             shown_given = float(convert(given, entry.dim, unit, label=label, name=name))
-        checks.append(Check(name, shown_expected, shown_given, unit, rel, tol))
+        check = Check(name, shown_expected, shown_given, unit, rel, tol)
+        if not check.passed:
+            check.diagnosis = diagnose(result, name, given, tol)
+        checks.append(check)
     return checks
+
+
+TWO_PI = 2.0 * math.pi
+_FAMILY_RE = re.compile(r"^(omega|f|T)(_\w+)?$")
+
+
+def slips(result: Result, name: str) -> list[tuple[str, float]]:
+    """The values (SI) that common slips give for result ``name``, each with its words.
+
+    The list of SPEC.md and issue 10: omega given for f (a factor 2 pi) and f for omega, the
+    damped omega_d for the undamped omega_n and back, degrees for radians (180/pi), a mass in
+    grams read as kilograms (a factor 1000, or its square root where the result goes as
+    m^(1/2)), the decrement per cycle for the one per radian (a factor 2 pi, or delta given as
+    zeta), and series for parallel (the slips the command itself computed,
+    :attr:`Result.slips`)."""
+    value = result.results[name].si
+    out: list[tuple[str, float]] = []
+    family = _FAMILY_RE.match(name)
+    if family:
+        stem, suffix = family.group(1), family.group(2) or ""
+        omega, f = f"omega{suffix}", f"f{suffix}"
+        if stem == "f":
+            out.append((f"that is {omega} in rad/s, not {name} in Hz: {name} = {omega} / 2 pi",
+                        value * TWO_PI))
+        elif stem == "omega":
+            out.append((f"that is {f} in Hz, not {name} in rad/s: {name} = 2 pi {f}",
+                        value / TWO_PI))
+        else:
+            out.append((f"that is 1/{omega}: the period is {name} = 2 pi / {omega}",
+                        value / TWO_PI))
+            out.append((f"that is 2 pi/{f}: the period is {name} = 1 / {f}", value * TWO_PI))
+        other = f"{stem}_d" if suffix == "" else stem if suffix == "_d" else None
+        if other is not None and other in result.results:
+            what = ("the damped frequency " if suffix == "" else "the undamped natural ")
+            out.append((f"that is {what}{other}, not {name}" + (
+                f" ({other} = {name} sqrt(1 - zeta^2))" if suffix == "" else ""),
+                result.results[other].si))
+    if name == "zeta" and "delta" in result.results:
+        out.append(("that is the logarithmic decrement per cycle (delta); zeta is about "
+                    "delta / 2 pi (exactly delta / sqrt(4 pi^2 + delta^2))",
+                    result.results["delta"].si))
+    if name == "delta":
+        out.append(("that is the decrement per radian (delta / 2 pi); delta is per cycle",
+                    value / TWO_PI))
+    out.append(("a factor 180/pi: degrees and radians mixed up", value * 180.0 / math.pi))
+    out.append(("a factor pi/180: degrees and radians mixed up", value * math.pi / 180.0))
+    for factor, words in ((1e3, "1000"), (1e-3, "1/1000"), (1e3 ** 0.5, "sqrt(1000) = 31.6"),
+                          (1e-3 ** 0.5, "1/sqrt(1000)")):
+        out.append((f"a factor {words}: a mass in grams taken as kilograms (or the reverse)",
+                    value * factor))
+    out += list(result.slips.get(name, {}).items())
+    return out
+
+
+def diagnose(result: Result, name: str, given: float, rtol: float) -> str | None:
+    """The first slip of :func:`slips` whose value matches ``given`` (SI) within ``rtol``;
+    ``None`` if none does or the expected value itself matches (a right answer never has a
+    diagnosis)."""
+    expected = result.results[name].si
+    if not math.isfinite(given) or abs(given - expected) <= rtol * abs(expected):
+        return None
+    for words, value in slips(result, name):
+        if (isinstance(value, float) and math.isfinite(value) and value != 0
+                and abs(given - value) <= rtol * abs(value)):
+            return words
+    return None

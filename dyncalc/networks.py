@@ -391,6 +391,13 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
                     model="network" if _is_nested(root) else how, warnings=warnings,
                     explanation=_explain(root, stiffness, dim))
     result.add_underflow_warnings()
+    if len(root.children) > 1:
+        parts = [combine(c) for c in root.children]
+        swap = series_stiffness if root.how == "parallel" else parallel_stiffness
+        other = "series" if root.how == "parallel" else "parallel"
+        swapped = float(swap(parts).to(si).magnitude)
+        result.slips["k_eq"] = {f"the elements combined in {other}, not in {root.how}":
+                                swapped}
     return result
 
 

@@ -45,6 +45,17 @@ class Entry:
     assumed_si: bool = False
     exact: Any = None  # the magnitude in ``unit`` exactly as typed or computed
     overflowed: bool = False  # a finite true value beyond float64: shown as inf / null
+    uncertainty: Any = None  # standard uncertainty in ``dim.si`` (float or array), if any
+
+    def uncertainty_in(self, unit: str | None = None):
+        """The standard uncertainty in ``unit`` (default: the display unit), or ``None``."""
+        if self.uncertainty is None or self.dim is None:
+            return None
+        target = self.unit if unit is None else unit
+        if target == self.dim.si or (not target and not self.dim.si):
+            return self.uncertainty
+        return convert(self.uncertainty, self.dim, target, label=f"--unit {self.name}",
+                       name=self.name)
 
     def value_in(self, unit: str | None = None):
         """The magnitude in ``unit`` (default: this entry's display unit)."""
@@ -63,7 +74,8 @@ def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:
     typed = bool(parsed.unit_text) and dim.kind not in ("angular-rate", "cycle-rate")
     return Entry(name, parsed.si, dim, unit=parsed.unit_text or dim.si,
                  assumed_si=parsed.assumed_si,
-                 exact=float(parsed.quantity.magnitude) if typed else None, **kw)
+                 exact=float(parsed.quantity.magnitude) if typed else None,
+                 uncertainty=parsed.uncertainty, **kw)
 
 
 @dataclass
@@ -93,6 +105,9 @@ class Result:
     warnings: list[str] = field(default_factory=list)
     explanation: Explanation | None = None
     extra: dict[str, Any] = field(default_factory=dict)
+    #: result name -> {a common slip, in words: the value (SI) that slip gives}, for the
+    #: diagnosis of a failed ``--check`` (see :mod:`dyncalc.checks`); never printed as such
+    slips: dict[str, dict[str, float]] = field(default_factory=dict)
 
     def add_underflow_warnings(self, exact_zeros: set[str] = frozenset()) -> None:
         """Warn about a result that underflowed to zero from non-zero inputs (SPEC.md);

@@ -10,8 +10,10 @@ Everything the user types as a quantity passes through :func:`parse_quantity` or
   float64 is refused rather than read as infinity;
 * text that pint would read silently wrong is refused: a comma in a scalar (``1,5 m`` is 15 m to
   pint), hexadecimal/octal/binary literals, leading-zero integers (``007``), two numbers side by
-  side (``1 000`` is 0 to pint), a unit with no number (``N/mm``), comments, ``@``, uncertainty
-  signs, control and zero-width characters;
+  side (``1 000`` is 0 to pint), a unit with no number (``N/mm``), comments, ``@``,
+  control and zero-width characters;
+* a standard uncertainty may follow the value once, at the top: ``2.0+/-0.1 kg``,
+  ``(100 ± 5) N/m``, ``2 kg ± 100 g`` (see :func:`parse_quantity`);
 * nothing runaway is ever computed: the text is limited to :data:`MAX_TEXT` characters, nesting
   to :data:`MAX_DEPTH`, powers cannot be chained, unit exponents are bounded, and every number
   is a float (so ``9**9**9`` overflows at once instead of building a huge integer).
@@ -228,18 +230,21 @@ class Parsed(_Frozen):
     ``quantity`` is the pint quantity (rates already normalised to rad/s or Hz, see
     :func:`convert`), ``si`` its magnitude in the SI unit of its dimension (a float, or a numpy
     array for vectors), ``assumed_si`` whether a bare number was given, ``unit_text`` the unit as
-    the user wrote it (``""`` when none), ``text`` the original text.
+    the user wrote it (``""`` when none), ``text`` the original text, ``uncertainty`` the
+    standard uncertainty in the same SI unit when the text carried one (``2.0+/-0.1 kg``).
     """
 
-    __slots__ = ("quantity", "si", "assumed_si", "unit_text", "text")
+    __slots__ = ("quantity", "si", "assumed_si", "unit_text", "text", "uncertainty")
 
-    def __init__(self, quantity: Any, si: Any, assumed_si: bool, unit_text: str, text: str):
+    def __init__(self, quantity: Any, si: Any, assumed_si: bool, unit_text: str, text: str,
+                 uncertainty: float | None = None):
         setattr_ = object.__setattr__
         setattr_(self, "quantity", quantity)
         setattr_(self, "si", si)
         setattr_(self, "assumed_si", assumed_si)
         setattr_(self, "unit_text", unit_text)
         setattr_(self, "text", text)
+        setattr_(self, "uncertainty", uncertainty)
 
 
 _NUMBER_RE = re.compile(r"(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
@@ -372,7 +377,8 @@ def _tokenize(text: str, label: str) -> list[_Tok]:
             i += 2
             continue
         if ch == "+" and text.startswith("+/-", i) or ch == "±":
-            raise _refuse(label, text, "uncertainties (+/- or ±) are not supported yet")
+            raise _refuse(label, text, "an uncertainty (+/- or ±) goes once, at the top: "
+                                       "2.0+/-0.1 kg or (100 ± 5) N/m")
         if ch in "*/^+-()":
             toks.append(_Tok("OP", ch, i))
             i += 1
@@ -749,7 +755,15 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     >>> p.si, p.assumed_si, p.unit_text
     (2000.0, False, 'kN/m')
     """
-    reading = _evaluate(text, label)
+    split = _split_uncertainty(text, label)
+    if split is not None:
+        return _parse_uncertain(text, split, dim, label, strict, allow_inf, constraint)
+    return _finish(_evaluate(text, label), text, dim, label, strict, allow_inf, constraint)
+
+
+def _finish(reading: _Reading, text: str, dim: Dim, label: str, strict: bool, allow_inf: bool,
+            constraint: str | None) -> Parsed:
+    """The checks of :func:`parse_quantity` after the text was read."""
     quantity = reading.quantity
     assumed = False
     if not reading.named and dim.kind != "dimensionless":
@@ -763,6 +777,67 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     si = to_si(quantity, dim, label)
     _check_value(si, dim, label, allow_inf, constraint, quantity)
     return Parsed(quantity, float(si), assumed, reading.unit_text, text)
+
+
+_PLUS_MINUS_RE = re.compile(r"\+/-|±")
+
+
+def _split_uncertainty(text: str, label: str) -> tuple[str, str, str] | None:
+    """``(value, uncertainty, shared unit)`` texts of ``2.0+/-0.1 kg`` (``("2.0", "0.1 kg",
+    "")``) or ``(100 ± 5) N/m`` (``("100", "5", "N/m")``); ``None`` without ``±``/``+/-``."""
+    if not isinstance(text, str) or len(text) > MAX_TEXT:
+        return None  # _evaluate refuses it with its own message
+    marks = list(_PLUS_MINUS_RE.finditer(text))
+    if not marks:
+        return None
+    if len(marks) > 1:
+        raise _refuse(label, text, "it has more than one uncertainty (+/- or ±)")
+    left, right = text[:marks[0].start()], text[marks[0].end():]
+    if left.lstrip().startswith("("):
+        inner = left.lstrip()[1:]
+        depth = inner.count("(") - inner.count(")")
+        for i, ch in enumerate(right):
+            depth += (ch == "(") - (ch == ")")
+            if depth < 0:
+                return inner, right[:i], right[i + 1:]
+    return left, right, ""
+
+
+def _with_unit(reading: _Reading, unit_text: str, label: str, text: str) -> _Reading:
+    """``reading`` (a plain number) times the unit ``unit_text``, as if typed together."""
+    unit, names = _read_unit(unit_text, label)
+    if reading.named:
+        raise _refuse(label, text, "give the unit once, after the parentheses: (100 ± 5) N/m")
+    return _Reading(reading.quantity * unit, True, unit_text.strip(), names,
+                    reading.mixed_turns)
+
+
+def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: str,
+                     strict: bool, allow_inf: bool, constraint: str | None) -> Parsed:
+    """A quantity with its standard uncertainty; a side without a unit takes the other's."""
+    value_text, sigma_text, shared = split
+    if not value_text.strip() or not sigma_text.strip():
+        raise _refuse(label, text, "write the value, then +/- or ±, then its standard "
+                                   "uncertainty: 2.0+/-0.1 kg or (100 ± 5) N/m")
+    value = _evaluate(value_text, label)
+    sigma = _evaluate(sigma_text, label)
+    if shared.strip():
+        value = _with_unit(value, shared, label, text)
+        sigma = _with_unit(sigma, shared, label, text)
+    elif value.named and not sigma.named:
+        sigma = _Reading(sigma.quantity * value.quantity.units, True, value.unit_text,
+                         value.names, value.mixed_turns)
+    elif sigma.named and not value.named:
+        value = _Reading(value.quantity * sigma.quantity.units, True, sigma.unit_text,
+                         sigma.names, sigma.mixed_turns)
+    parsed = _finish(value, text, dim, label, strict, allow_inf, constraint)
+    spread = _finish(sigma, text, dim, f"{label} (its uncertainty)", strict, False,
+                     "nonnegative")
+    parsed = Parsed(parsed.quantity, parsed.si, parsed.assumed_si, parsed.unit_text, text,
+                    uncertainty=spread.si)
+    from .uncertainty import traced_input
+
+    return traced_input(parsed, dim, label, allow_inf, constraint)
 
 
 _VECTOR_RE = re.compile(r"^\s*[\(\[]([^\)\]]*)[\)\]]\s*(.*)$")

@@ -215,7 +215,9 @@ def _cannot(text, why, label="--x"):
 
 HEX = "hexadecimal, octal and binary literals are not read; write the number in decimal"
 CONTROL = "it holds an invisible or control character"
-UNCERTAIN = "uncertainties (+/- or \u00b1) are not supported yet"
+UNCERTAIN_TWICE = "it has more than one uncertainty (+/- or \u00b1)"
+UNCERTAIN_FORM = ("write the value, then +/- or \u00b1, then its standard uncertainty: "
+                  "2.0+/-0.1 kg or (100 \u00b1 5) N/m")
 NAN = "NaN is not a number dyncalc accepts"
 OVERFLOW = "its value overflows float64 (the largest is 1.8e308)"
 SIDE_BY_SIDE = "two numbers side by side; write 1000, not 1 000, and use * to multiply"
@@ -259,9 +261,15 @@ SIDE_BY_SIDE = "two numbers side by side; write 1000, not 1 000, and use * to mu
     ("5\r", LENGTH, "--x: cannot read '5\\u000d': " + CONTROL + " U+000D"),
     ("\u0663 m", LENGTH, _cannot("\u0663 m", "the digit '\u0663' is not an ASCII digit 0-9")),
     ("\uff11 m", LENGTH, _cannot("\uff11 m", "the digit '\uff11' is not an ASCII digit 0-9")),
-    ("2 \u00b1 1 kg", MASS, _cannot("2 \u00b1 1 kg", UNCERTAIN)),
-    ("(100 \u00b1 5) N/m", STIFFNESS, _cannot("(100 \u00b1 5) N/m", UNCERTAIN)),
-    ("2.0+/-0.1 kg", MASS, _cannot("2.0+/-0.1 kg", UNCERTAIN)),
+    ("2 \u00b1 1 \u00b1 1 kg", MASS, _cannot("2 \u00b1 1 \u00b1 1 kg", UNCERTAIN_TWICE)),
+    ("2+/-0.1+/-0.1 kg", MASS, _cannot("2+/-0.1+/-0.1 kg", UNCERTAIN_TWICE)),
+    ("\u00b1 5 N/m", STIFFNESS, _cannot("\u00b1 5 N/m", UNCERTAIN_FORM)),
+    ("2.0+/-", MASS, _cannot("2.0+/-", UNCERTAIN_FORM)),
+    ("2 kg+/-(-0.1)", MASS, "--x (its uncertainty) must not be negative; got -0.1 kilogram"),
+    ("2 kg+/-0.1 m", MASS, "--x (its uncertainty) must be a mass [mass]; got 0.1 meter "
+                           "([length])"),
+    ("(2 kg \u00b1 1) kg", MASS, _cannot("(2 kg \u00b1 1) kg", "give the unit once, after the "
+                                                              "parentheses: (100 \u00b1 5) N/m")),
     ("nan", DIMENSIONLESS, _cannot("nan", NAN)),
     ("NaN", DIMENSIONLESS, _cannot("NaN", NAN)),
     ("NAN", DIMENSIONLESS, _cannot("NAN", NAN)),

@@ -69,7 +69,7 @@ def coriolis(out, **options):
                              {f"--{o}": v for o, v in options.items()})
     from ..frames import coriolis_result
 
-    return out.emit(coriolis_result(options, strict=out.strict))
+    return out.emit(out.compute(lambda: coriolis_result(options, strict=out.strict)))
 
 
 COMMANDS = [coriolis]

@@ -67,9 +67,10 @@ def damping_ratio(parameters, c, k, m, decrement, ratio, cycles, amplitudes, sce
                                          strict=out.strict), options)
     from ..damping import damping_ratio as compute, plot_decay
 
-    result = compute(c=c, k=k, m=m, omega=omega, decrement=decrement, ratio=ratio,
-                     cycles=cycles, amplitudes=amplitudes, scene=scene, params=parameters, g=g,
-                     method=method, rtol=out.rtol, strict=out.strict)
+    result = out.compute(lambda: compute(
+        c=c, k=k, m=m, omega=omega, decrement=decrement, ratio=ratio, cycles=cycles,
+        amplitudes=amplitudes, scene=scene, params=parameters, g=g, method=method,
+        rtol=out.rtol, strict=out.strict))
     if plot is not None:
         plot_decay(result, plot)
     return out.emit(result)

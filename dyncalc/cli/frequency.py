@@ -75,8 +75,8 @@ def natural_frequency(parameters, scene, method, out, **options):
 
     texts, labels = collect_parameters(options, parameters)
     name = scene if scene is not None else infer_scene(set(texts))
-    return out.emit(run_scene(name, texts, labels=labels, method=method, rtol=out.rtol,
-                              strict=out.strict))
+    return out.emit(out.compute(lambda: run_scene(name, texts, labels=labels, method=method,
+                                                  rtol=out.rtol, strict=out.strict)))
 
 
 COMMANDS = [natural_frequency]

@@ -57,6 +57,13 @@ class Output:
             units[name] = unit
         return units
 
+    def compute(self, run):
+        """``run()`` (a Result), with the uncertainties of inputs typed with ``±`` propagated
+        to its results (:func:`dyncalc.uncertainty.propagate`)."""
+        from ..uncertainty import propagate
+
+        return propagate(run)
+
     def emit(self, result) -> int:
         """Print ``result`` in the chosen form; the exit status (1 if a check failed)."""
         from . import render

@@ -42,6 +42,9 @@ def _json_entries(entries: dict[str, Entry], units: dict[str, str]) -> dict:
     for name, entry in entries.items():
         value, unit = _shown(entry, units)
         item = {"value": _json_value(value), "unit": unit}
+        if entry.uncertainty is not None:
+            item = {"value": item["value"],
+                    "uncertainty": _json_value(entry.uncertainty_in(unit)), "unit": unit}
         if entry.assumed_si:
             item["assumed_si"] = True
         out[name] = item
@@ -111,14 +114,27 @@ def _header(result: Result) -> str:
         parts.append(f"model: {result.model}")
     if result.method:
         parts.append(f"method: {result.method}")
+    inverse = result.extra.get("inverse")
+    if inverse:
+        parts.append(f"solved for {inverse['unknown']}: {inverse['method']}")
     return "   ".join(parts)
+
+
+def _with_uncertainty(entry: Entry, value, unit: str, digits: int) -> str:
+    """``7.07107 ± 0.18``: the value to ``digits`` figures, its uncertainty to two."""
+    text = format_number(value, digits)
+    sigma = entry.uncertainty_in(unit) if entry.uncertainty is not None else None
+    if sigma is None or isinstance(value, str):
+        return text
+    return f"{text} ± {format_number(sigma, 2)}"
 
 
 def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str, ...]]:
     rows = []
     for entry in result.results.values():
         value, unit = _shown(entry, units)
-        rows.append((entry.name, entry.symbol or entry.name, format_number(value, digits), unit))
+        rows.append((entry.name, entry.symbol or entry.name,
+                     _with_uncertainty(entry, value, unit, digits), unit))
     return rows
 
 
@@ -126,7 +142,8 @@ def _inputs_line(result: Result, digits: int) -> str:
     parts = []
     for entry in result.inputs.values():
         value, unit = _shown(entry, {})
-        text = f"{entry.name} = {format_number(value, digits)}{' ' + unit if unit else ''}"
+        shown = _with_uncertainty(entry, value, unit, digits)
+        text = f"{entry.name} = {shown}{' ' + unit if unit else ''}"
         if entry.assumed_si:
             text += " (assumed SI)"
         parts.append(text)
@@ -138,7 +155,8 @@ def _check_line(check: Check, digits: int) -> str:
     unit = f" {check.unit}" if check.unit else ""
     return (f"check {check.name}: expected {format_number(check.expected, digits)}{unit}, "
             f"given {format_number(check.given, digits)}{unit}, relative difference "
-            f"{check.rel_diff:.2g} (tolerance {check.rtol:g}): {verdict}")
+            f"{check.rel_diff:.2g} (tolerance {check.rtol:g}): {verdict}"
+            + (f"; likely slip: {check.diagnosis}" if check.diagnosis else ""))
 
 
 def _explanation_lines(result: Result) -> list[str]:

@@ -65,8 +65,8 @@ def rolling_onset(method, out, **options):
                              {f"--{o}": v for o, v in options.items()})
     from ..rolling import rolling_onset_result
 
-    return out.emit(rolling_onset_result(options, method=method, rtol=out.rtol,
-                                         strict=out.strict))
+    return out.emit(out.compute(lambda: rolling_onset_result(options, method=method,
+                                                             rtol=out.rtol, strict=out.strict)))
 
 
 COMMANDS = [rolling_onset]

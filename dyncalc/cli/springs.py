@@ -36,7 +36,8 @@ def _network_command(how: str, summary: str, examples: str):
             return out.run_batch(SpringRows(how, strict=out.strict), {"": elements})
         from ..networks import network_stiffness
 
-        return out.emit(network_stiffness(how, list(elements), strict=out.strict))
+        return out.emit(out.compute(
+            lambda: network_stiffness(how, list(elements), strict=out.strict)))
 
     return command
 

@@ -17,7 +17,8 @@ from ..units import DIMENSIONLESS, parse_quantity, to_si
 from . import Scene, get_scene
 from .results import result_kind
 
-__all__ = ["run_scene", "infer_scene", "DEFAULT_RTOL"]
+__all__ = ["run_scene", "infer_scene", "is_result_name", "read_inputs", "compute_values",
+           "make_result", "DEFAULT_RTOL"]
 
 DEFAULT_RTOL = 1e-9
 
@@ -26,8 +27,9 @@ INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum
 
 
 def infer_scene(names: set[str]) -> str:
-    """The scene the parameter names fit: mass-spring (the default), torsional or pendulum."""
-    given = set(names) - {"zeta"}
+    """The scene the parameter names fit: mass-spring (the default), torsional or pendulum
+    (results given to solve for, ``f=5Hz``, do not choose)."""
+    given = {n for n in names if n != "zeta" and not is_result_name(n)}
     if not given:
         return "mass-spring"
     for scene_name, keys in INFERENCE:
@@ -41,11 +43,13 @@ def _parameter_list(scene: Scene) -> str:
     return f"the parameters of {scene.name} are: {scene.signature()}"
 
 
-def _resolve_groups(scene: Scene, texts: dict[str, str]) -> set[str]:
-    """Check the one-of groups; return the names left out on purpose (the other alternative)."""
+def _resolve_groups(scene: Scene, texts: dict[str, str], unknown: tuple[str, ...] = ()
+                    ) -> set[str]:
+    """Check the one-of groups; return the names left out on purpose (the other alternative).
+    A name in ``unknown`` (solved for) counts as given."""
     skipped = set()
     for group in scene.one_of:
-        given = [n for n in group if n in texts]
+        given = [n for n in group if n in texts or n in unknown]
         if len(given) > 1:
             raise InputError(f"{scene.name}: give {' or '.join(group)}, not both; "
                              f"{_parameter_list(scene)}")
@@ -63,6 +67,9 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
               command: str = "natural-frequency") -> Result:
     """Compute ``scene`` from the parameter texts the user gave.
 
+    A result given as an input (``f=5Hz``) with one parameter missing (or given as
+    ``NAME=?``) makes it an inverse problem, solved by :func:`dyncalc.scenes.inverse.solve`.
+
     Parameters
     ----------
     scene : Scene or str
@@ -79,7 +86,49 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
     """
     if isinstance(scene, str):
         scene = get_scene(scene)
-    labels = labels or {}
+    if any(scene.param(name) is None and is_result_name(name) for name in texts):
+        from .inverse import solve
+
+        return solve(scene, texts, labels=labels or {}, method=method, rtol=rtol,
+                     strict=strict, command=command)
+    prepared = read_inputs(scene, texts, labels or {}, strict)
+    if prepared.missing:
+        raise InputError(f"{scene.name} needs {', '.join(prepared.missing)}; "
+                         f"{_parameter_list(scene)}")
+    check_constraints(scene, prepared.si)
+    outcome, values, warnings = compute_values(scene, prepared.kwargs, prepared.zeta,
+                                               method, rtol)
+    return make_result(scene, prepared.inputs, outcome, values, warnings, command)
+
+
+def is_result_name(name: str) -> bool:
+    """Whether ``name`` names a result some scene gives (``f``, ``omega_d``, ``zeta``)."""
+    try:
+        result_kind(name)
+    except KeyError:
+        return False
+    return not name.startswith("mode_")
+
+
+class Prepared:
+    """The parameters read: the physics function's keyword arguments, the input entries, the
+    SI values by name, the damping ratio given as ``zeta``, and the required names missing."""
+
+    __slots__ = ("kwargs", "inputs", "si", "zeta", "missing")
+
+    def __init__(self):
+        self.kwargs: dict[str, Any] = {}
+        self.inputs: dict[str, Entry] = {}
+        self.si: dict[str, Any] = {}
+        self.zeta: float | None = None
+        self.missing: list[str] = []
+
+
+def read_inputs(scene: Scene, texts: dict[str, str], labels: dict[str, str],
+                strict: bool, unknown: tuple[str, ...] = ()) -> Prepared:
+    """Check the names in ``texts`` against the scene and read every parameter it gives
+    (or its default); parameters required but not given are listed in ``missing``, and the
+    ``unknown`` ones (to be solved for) are left out altogether."""
     names = {p.name for p in scene.params}
     for name in texts:
         if name == "zeta" and not scene.accepts_zeta:
@@ -87,20 +136,17 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
                              f"{_parameter_list(scene)}")
         if name not in names:
             raise InputError(f"{scene.name} has no parameter {name!r}; {_parameter_list(scene)}")
-    skipped = _resolve_groups(scene, texts)
-
-    kwargs: dict[str, Any] = {}
-    inputs: dict[str, Entry] = {}
-    si: dict[str, Any] = {}
-    missing = []
-    zeta = None
+    skipped = _resolve_groups(scene, texts, unknown)
+    prepared = Prepared()
     for param in scene.params:
+        if param.name in unknown:
+            continue
         text = texts.get(param.name)
         if text is None and param.name not in skipped:
             text = param.default
         if text is None:
             if not param.optional and param.name not in skipped:
-                missing.append(param.name)
+                prepared.missing.append(param.name)
             continue
         label = labels.get(param.name, f"{param.name}=")
         label = label[:-1] if label.endswith("=") else label
@@ -109,31 +155,45 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
             if word not in param.choices:
                 raise InputError(f"{label} must be one of {', '.join(param.choices)}; got "
                                  f"{word[:40]!r}")
-            kwargs["kappa" if param.name == "body" else param.name] = param.choices[word]
-            inputs[param.name] = Entry(param.name, word, None)
+            prepared.kwargs["kappa" if param.name == "body" else param.name] = \
+                param.choices[word]
+            prepared.inputs[param.name] = Entry(param.name, word, None)
             continue
         parsed = parse_quantity(text, param.dim, label=label, strict=strict,
                                 constraint=param.constraint)
-        si[param.name] = parsed.si
-        inputs[param.name] = entry_from_parsed(param.name, parsed, param.dim,
-                                               description=param.description)
-        if param.name == "zeta" and scene.accepts_zeta:
-            zeta = parsed.si
-        elif param.dim is DIMENSIONLESS:
-            kwargs[param.name] = parsed.si
-        else:
-            kwargs[param.name] = parsed.quantity
-    if missing:
-        raise InputError(f"{scene.name} needs {', '.join(missing)}; {_parameter_list(scene)}")
+        prepared.inputs[param.name] = entry_from_parsed(param.name, parsed, param.dim,
+                                                        description=param.description)
+        set_parameter(scene, prepared, param.name, parsed.si, parsed.quantity)
+    return prepared
+
+
+def set_parameter(scene: Scene, prepared: Prepared, name: str, si: float, quantity) -> None:
+    """Hand one parameter's value to the physics (``quantity`` in any unit of its dimension)."""
+    param = scene.param(name)
+    prepared.si[name] = si
+    if name == "zeta" and scene.accepts_zeta:
+        prepared.zeta = si
+    elif param.dim is DIMENSIONLESS:
+        prepared.kwargs[name] = si
+    else:
+        prepared.kwargs[name] = quantity
+
+
+def check_constraints(scene: Scene, si: dict[str, Any]) -> None:
     for constraint in scene.constraints:
         if not constraint.holds(si):
             raise InputError(f"{scene.name} needs {constraint.text}{constraint.why}")
 
+
+def compute_values(scene: Scene, kwargs: dict[str, Any], zeta: float | None,
+                   method: str | None, rtol: float | None):
+    """Run the scene's physics: ``(outcome, values by name, warnings)``."""
     allowed = ("auto", *scene.methods)
     if method not in (None, "auto") and method not in scene.methods:
         offered = ", ".join(allowed) if scene.methods else "auto (a closed form only)"
         raise InputError(f"--method {method} is not offered by {scene.name}; it offers "
                          f"{offered}")
+    kwargs = dict(kwargs)
     if scene.methods:
         kwargs["method"] = method or "auto"
         kwargs["rtol"] = DEFAULT_RTOL if rtol is None else rtol
@@ -148,8 +208,16 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
         extra, notes = damped(float(omega), zeta)
         values.update(extra)
         warnings += notes
+    return outcome, values, warnings
 
-    results = {name: _entry(name, value) for name, value in values.items()}
+
+def make_result(scene: Scene, inputs: dict[str, Entry], outcome, values: dict[str, Any],
+                warnings: list[str], command: str,
+                solved: dict[str, Entry] | None = None) -> Result:
+    """The Result of a scene: ``solved`` entries (an inverse problem) come first."""
+    results = dict(solved or {})
+    results.update((name, _entry(name, value)) for name, value in values.items()
+                   if name not in results)
     result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
                     model=outcome.model, method=outcome.method, warnings=warnings,
                     explanation=_explain(scene, inputs, results, outcome))

@@ -1,0 +1,283 @@
+"""Inverse problems: a result given (``f=5Hz``), one parameter unknown; solve for it.
+
+``dyncalc natural-frequency f=5Hz m=2kg`` gives ``k = 1973.92 N/m``. The unknown is the one
+required parameter left out, or the one given as ``NAME=?`` (which also frees a parameter that
+has a default or is optional: ``g=?``, ``amplitude=?``).
+
+How (decided here, SPEC.md "Inverse problems"):
+
+1. **Closed form** when the result is a power of the unknown, ``y = C x^a`` (every scene that
+   is a product of powers: ``omega^2 = k/m``, ``g/l``, ``kt/J``, ...). The exponent is read off
+   the scene itself (log-slopes at three points six decades apart must agree to 1e-9 and ``a``
+   must be a simple fraction p/q, q <= 4), then ``x = x1 (y / y1)^(1/a)``, the exact inversion
+   of the monomial, checked by computing the scene at ``x``.
+2. Otherwise a **bracketed root find**: the scene is computed on a grid of the unknown's range
+   (every fifth decade from 1e-300 to 1e300 for a positive parameter, both signs and zero for
+   a signed one, 1/4 degree steps for an angle below 180 degrees), refined to 10 points a
+   decade next to every sign change and turning point; each sign change of ``y(x) - target`` is a
+   guaranteed bracket, refined by Brent's method (scipy) to full precision. Every root found is
+   reported (``k_1``, ``k_2``, ... ascending) with a warning that there are several; none is
+   refused with the range the result takes.
+
+Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
+catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
+spring), far enough apart.
+"""
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from ..errors import InputError
+from ..result import Entry
+from ..units import ANGLE, DIMENSIONLESS, parse_quantity, registry
+from . import Scene
+from .results import result_kind
+from .runner import (Prepared, check_constraints, compute_values, is_result_name,
+                     make_result, read_inputs, set_parameter, _entry, _parameter_list)
+
+__all__ = ["solve"]
+
+#: Positive parameters are searched from 10^LOW to 10^HIGH (in SI), every STEP decades.
+LOW, HIGH, STEP = -300, 300, 5
+#: Points in each coarse interval next to a sign change or a turning point (10 a decade).
+FINE = 50
+
+
+def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method, rtol,
+          strict: bool, command: str):
+    """The Result of the inverse problem ``texts`` poses (see the module docstring)."""
+    targets = {n: t for n, t in texts.items() if scene.param(n) is None and is_result_name(n)}
+    asked = [n for n, t in texts.items() if scene.param(n) is not None and t.strip() == "?"]
+    known = {n: t for n, t in texts.items() if n not in targets and n not in asked}
+    if len(targets) > 1:
+        raise InputError(f"give one result to solve from, not {len(targets)} "
+                         f"({', '.join(targets)}); compare the others with --check")
+    (target, target_text), = targets.items()
+    for group in scene.one_of:
+        if not any(n in known or n in asked or scene.param(n).default is not None
+                   for n in group):
+            raise InputError(f"{target}= leaves {' or '.join(group)} unknown: give one of "
+                             f"them, or one as NAME=? to solve for it")
+    prepared = read_inputs(scene, known, labels, strict, unknown=tuple(asked))
+    unknowns = asked + [n for n in prepared.missing if n not in asked]
+    if len(asked) > 1:
+        raise InputError(f"give one unknown (NAME=?), not {len(asked)} ({', '.join(asked)})")
+    if not unknowns:
+        if target == "zeta" and not scene.accepts_zeta:
+            raise InputError(f"{scene.name} takes no zeta: {scene.no_zeta_because}; "
+                             f"{_parameter_list(scene)}")
+        raise InputError(f"{target}= is a result of {scene.name} and every parameter is "
+                         f"given: leave out the one to solve for (or give it as NAME=?), or "
+                         f"compare with --check {target}=...")
+    if len(unknowns) > 1:
+        raise InputError(f"{scene.name}: {target}= leaves {len(unknowns)} parameters unknown "
+                         f"({', '.join(unknowns)}); give all but one")
+    unknown = scene.param(unknowns[0])
+    if unknown.dim is None or unknown.name == "body":
+        raise InputError(f"{unknown.name} is a choice, not a number to solve for; give "
+                         f"kappa=? for the shape factor")
+    label = labels.get(target, f"{target}=").rstrip("=")
+    kind = result_kind(target)
+    goal = parse_quantity(target_text, kind.dim, label=label, strict=strict).si
+    problem = _Problem(scene, prepared, unknown, target, method, rtol)
+
+    roots, how = problem.roots(goal)
+    if not roots:
+        raise InputError(problem.no_root_message(goal, kind))
+    inputs = dict(prepared.inputs)
+    inputs[target] = Entry(target, goal, kind.dim, unit=kind.unit, symbol=kind.symbol,
+                           description=kind.description)
+    unit = "deg" if unknown.dim is ANGLE else unknown.dim.si
+    describe = f"{unknown.description} (solved from {target})"
+    if len(roots) == 1:
+        x = roots[0]
+        solved = {unknown.name: Entry(unknown.name, x, unknown.dim, unit=unit,
+                                      symbol=unknown.name, description=describe)}
+        outcome, values, warnings = problem.evaluate(x)
+        result = make_result(scene, inputs, outcome, values, warnings, command, solved)
+    else:
+        solved = {f"{unknown.name}_{i}": Entry(f"{unknown.name}_{i}", x, unknown.dim,
+                                               unit=unit, symbol=f"{unknown.name}{i}",
+                                               description=describe)
+                  for i, x in enumerate(roots, 1)}
+        outcome, _values, warnings = problem.evaluate(roots[0])
+        result = make_result(scene, inputs, outcome, {}, warnings, command, solved)
+        shown = ", ".join(f"{x:.6g} {unit}" for x in (_shown(x, unknown) for x in roots))
+        result.warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
+                               f"{_number(goal)} {kind.unit}: {shown}; each is a result")
+    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
+    return result
+
+
+def _shown(x: float, param) -> float:
+    return math.degrees(x) if param.dim is ANGLE else x
+
+
+def _number(x: float) -> str:
+    return f"{x:.6g}"
+
+
+class _Problem:
+    """The scene as a function of the unknown alone: ``y(x)`` in SI, NaN where refused."""
+
+    def __init__(self, scene: Scene, prepared: Prepared, param, target: str, method, rtol):
+        self.scene, self.prepared, self.param, self.target = scene, prepared, param, target
+        self.method, self.rtol = method, rtol
+        self.unit = param.dim.si.replace("^", "**") if param.dim.si else ""
+        self.calls = 0
+
+    def evaluate(self, x: float):
+        """``(outcome, values, warnings)`` of the scene at ``x``; InputError when refused."""
+        prepared = Prepared()
+        prepared.kwargs = dict(self.prepared.kwargs)
+        prepared.si = dict(self.prepared.si)
+        prepared.zeta = self.prepared.zeta
+        quantity = registry().Quantity(x, self.unit) if self.param.dim is not DIMENSIONLESS \
+            else x
+        set_parameter(self.scene, prepared, self.param.name, x, quantity)
+        check_constraints(self.scene, prepared.si)
+        return compute_values(self.scene, prepared.kwargs, prepared.zeta, self.method,
+                              self.rtol)
+
+    def y(self, x: float) -> float:
+        """The target result at ``x`` in SI; NaN where the scene refuses ``x`` or has no such
+        result (a bead below its bifurcation has no ``theta_eq``)."""
+        self.calls += 1
+        if not self._admissible(x):
+            return math.nan
+        try:
+            with np.errstate(all="ignore"):
+                _outcome, values, _warnings = self.evaluate(x)
+        except (InputError, ArithmeticError, ValueError):
+            return math.nan
+        value = values.get(self.target)
+        if value is None:
+            return math.nan
+        entry = _entry(self.target, value)
+        return float(entry.si) if isinstance(entry.si, float) else math.nan
+
+    def _admissible(self, x: float) -> bool:
+        constraint = self.param.constraint
+        return not (constraint == "positive" and x <= 0 or constraint == "nonnegative" and x < 0
+                    or constraint == "nonzero" and x == 0)
+
+    # -- the grid ------------------------------------------------------------------------
+
+    def grid(self) -> list[float]:
+        if self.param.dim is ANGLE:
+            return [math.radians(d / 4) for d in range(0, 720)]
+        decades = [10.0 ** e for e in range(LOW, HIGH + 1, STEP)]
+        if self.param.constraint == "positive":
+            return decades
+        if self.param.constraint == "nonnegative":
+            return [0.0, *decades]
+        return [-d for d in reversed(decades)] + [0.0] + decades
+
+    # -- solving ---------------------------------------------------------------------------
+
+    def roots(self, goal: float) -> tuple[list[float], tuple[str, str]]:
+        """Every ``x`` with ``y(x) = goal``, ascending, and how they were found."""
+        if not math.isfinite(goal):
+            return [], ("none", "")
+        power = self._power_law() if self.param.constraint == "positive" \
+            and self.param.dim is not ANGLE else None
+        if power is not None:
+            x1, y1, a = power
+            if goal > 0 and y1 > 0:
+                with np.errstate(all="ignore"):
+                    x = x1 * math.exp(math.log(goal / y1) / float(a)) if goal != y1 else x1
+                if math.isfinite(x) and x > 0 and self._close(self.y(x), goal):
+                    return [x], ("closed-form", f"{self.target} is proportional to "
+                                                f"{self.param.name}^({a}): inverted exactly")
+            return [], ("closed-form", "")
+        return self._bracketed(goal), ("bracketed-root", "a sign change on a grid of "
+                                                         f"{self.param.name}, refined by "
+                                                         "Brent's method")
+
+    @staticmethod
+    def _close(y: float, goal: float) -> bool:
+        return math.isfinite(y) and abs(y - goal) <= 1e-12 * abs(goal)
+
+    def _power_law(self):
+        """``(x1, y1, a)`` when ``y = C x^a`` with a simple fraction ``a``, else ``None``."""
+        xs = (1e-3, 1.0, 1e3)
+        ys = [self.y(x) for x in xs]
+        if not all(math.isfinite(y) and y > 0 for y in ys):
+            return None
+        slopes = [math.log(ys[i + 1] / ys[i]) / math.log(xs[i + 1] / xs[i]) for i in (0, 1)]
+        if abs(slopes[0] - slopes[1]) > 1e-9 or abs(slopes[0]) < 1e-9:
+            return None
+        a = Fraction(slopes[0]).limit_denominator(4)
+        if abs(float(a) - slopes[0]) > 1e-9:
+            return None
+        return xs[1], ys[1], a
+
+    def _bracketed(self, goal: float) -> list[float]:
+        xs = self.grid()
+        gs = [self.y(x) - goal for x in xs]
+        xs, gs = self._refine(xs, gs, goal)
+        self.samples = [(x, g + goal) for x, g in zip(xs, gs) if math.isfinite(g)]
+        from scipy.optimize import brentq
+
+        roots = []
+        for (x0, g0), (x1, g1) in zip(zip(xs, gs), zip(xs[1:], gs[1:])):
+            if not (math.isfinite(g0) and math.isfinite(g1)):
+                continue
+            if g0 == 0:
+                roots.append(x0)
+            elif g0 * g1 < 0:
+                f = lambda x: self.y(x) - goal  # noqa: E731
+                try:
+                    roots.append(brentq(f, x0, x1, xtol=1e-300, rtol=4 * np.finfo(float).eps,
+                                        maxiter=200))
+                except (ValueError, RuntimeError):
+                    continue
+        if gs and math.isfinite(gs[-1]) and gs[-1] == 0:
+            roots.append(xs[-1])
+        return _distinct(roots)
+
+    def _refine(self, xs: list[float], gs: list[float], goal: float):
+        """Add FINE points a decade in every interval where ``y - goal`` changes sign or
+        turns (so two roots in one decade are both bracketed)."""
+        if self.param.dim is ANGLE:
+            return xs, gs
+        marked = set()
+        for i in range(1, len(xs) - 1):
+            a, b, c = gs[i - 1], gs[i], gs[i + 1]
+            if not all(math.isfinite(v) for v in (a, b, c)):
+                if math.isfinite(b):
+                    marked.update((i - 1, i))
+                continue
+            if a * b <= 0 or b * c <= 0 or (b - a) * (c - b) < 0:
+                marked.update((i - 1, i))
+        out_x, out_g = [], []
+        for i, x in enumerate(xs):
+            out_x.append(x)
+            out_g.append(gs[i])
+            if i in marked and i + 1 < len(xs) and xs[i] > 0 and xs[i + 1] > 0:
+                for j in range(1, FINE):
+                    xj = x * (xs[i + 1] / x) ** (j / FINE)
+                    out_x.append(xj)
+                    out_g.append(self.y(xj) - goal)
+        return out_x, out_g
+
+    def no_root_message(self, goal: float, kind) -> str:
+        samples = [y for _x, y in getattr(self, "samples", [])]
+        span = ""
+        if samples:
+            span = (f"; over the values of {self.param.name} tried it ranges from "
+                    f"{min(samples):.6g} to {max(samples):.6g} {kind.dim.si}".rstrip())
+        return (f"no value of {self.param.name} gives {self.target} = {goal:.6g} "
+                f"{kind.dim.si} in {self.scene.name} with the other parameters given{span}")
+
+
+def _distinct(roots: list[float]) -> list[float]:
+    out: list[float] = []
+    for r in sorted(roots):
+        if not out or abs(r - out[-1]) > 1e-9 * max(abs(r), abs(out[-1])):
+            out.append(r)
+    return out
+
