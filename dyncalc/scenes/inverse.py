@@ -109,6 +109,8 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         result.warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
                                f"{_number(goal)} {kind.unit}: {shown}; each is a result")
     result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
+    if result.explanation is not None and how[1]:
+        result.explanation.assumptions.append(f"{unknown.name} solved from {target}: {how[1]}")
     return result
 
 
