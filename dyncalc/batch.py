@@ -9,7 +9,10 @@ one-off command with those parameters, so a row's numbers are exactly the one-of
 
 Output: the input columns as read, then one column per result, ``omega [rad/s]`` (CSV, full
 precision, the number ``--value`` would print); or, with ``--json``, one JSON object per line,
-the one-off ``--json`` object with the row's line number (``"line"``) in front.
+the one-off ``--json`` object with the row's line number (``"line"``) in front. Cells may carry
+uncertainties (``2.0+/-0.1``, ``(100 ± 5) N/m``): such rows take the generic path, and when the
+first chunk has any, each result column is followed by ``u(NAME) [unit]``, its standard
+uncertainty (empty for rows without one).
 
 Two paths give the same numbers:
 
@@ -670,6 +673,7 @@ class _Writer:
         self.columns: list[str] | None = None  # result names, in order of first appearance
         self.col_units: dict[str, str] = {}
         self.checked_units: set[str] = set()
+        self.uncertain: set[str] = set()  # results given a u(NAME) column after their own
 
     # -- the result columns, from the first chunk's rows
     def fix_columns(self, outcomes, blocks, upto: int) -> None:
@@ -684,6 +688,8 @@ class _Writer:
             kind, item = outcomes[i]
             if kind == "ok":
                 first.append((i, [(name, e.unit, e.dim) for name, e in item.results.items()]))
+                self.uncertain.update(name for name, e in item.results.items()
+                                      if e.uncertainty is not None)
         first.sort(key=lambda pair: pair[0])
         for _position, pairs in first:
             for name, unit, dim in pairs:
@@ -706,6 +712,8 @@ class _Writer:
                 unit = self.col_units[name]
                 shown = f"{name}_result" if name in inputs else name  # k1 in, k1 out
                 header.append(f"{shown} [{unit}]" if unit else shown)
+                if name in self.uncertain:
+                    header.append(f"u({shown}) [{unit}]" if unit else f"u({shown})")
             self.out.write(_csv_lines([header])[0] + "\n")
 
     def check_unit(self, name: str, dim) -> None:
@@ -810,8 +818,12 @@ class _Writer:
                                                   map(", ".join, zip(*parts)))))
         else:
             empty = [""] * len(rows)
-            results = map(",".join, zip(*[shown[name][0] if name in shown else empty
-                                          for name in self.columns]))
+            cells = []
+            for name in self.columns:
+                cells.append(shown[name][0] if name in shown else empty)
+                if name in self.uncertain:  # no uncertainty on this path: an empty u(NAME)
+                    cells.append(empty)
+            results = map(",".join, zip(*cells))
             echo = chunk.echo(None if whole else rows)
             made = list(map("{},{}".format, echo, results))
         if whole:
@@ -846,9 +858,14 @@ class _Writer:
             entry = result.results.get(name)
             if entry is None:
                 row.append("")
+                if name in self.uncertain:
+                    row.append("")
                 continue
             try:
                 row.append(render.batch_cell(entry, self.col_units[name]))
+                if name in self.uncertain:
+                    sigma = entry.uncertainty_in(self.col_units[name])
+                    row.append("" if sigma is None else render.batch_number(sigma))
             except InputError:
                 raise _Failure(f"its {name} cannot be shown in the column's unit "
                                f"{self.col_units[name]} (it is a "
@@ -1085,7 +1102,9 @@ def _generic(spec, columns, row, debug):
             texts[col.key] = with_header_unit(cell, col.unit)
             labels[col.key] = col.name
     try:
-        return ("ok", spec.compute(texts, labels))
+        from .uncertainty import propagate
+
+        return ("ok", propagate(lambda: spec.compute(texts, labels)))
     except InputError as exc:
         return ("error", " ".join(str(exc).split()))
     except Exception as exc:  # a bug: reported for this row, the others go on

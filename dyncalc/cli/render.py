@@ -93,6 +93,13 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
     return repr(float(value))
 
 
+def batch_number(value) -> str:
+    """A number in a batch CSV cell: ``repr`` of the float, vectors comma-separated."""
+    if hasattr(value, "__len__"):
+        return ",".join(repr(float(v)) for v in value)
+    return repr(float(value))
+
+
 def batch_cell(entry: Entry, unit: str) -> str:
     """A result in a batch CSV cell, in the column's ``unit``: what ``--value`` prints
     (``repr`` of the float, ``inf``, vectors comma-separated); empty when it overflowed."""

@@ -1,0 +1,66 @@
+"""Batch cells may carry uncertainties; each result column is then followed by u(NAME)."""
+import csv
+import io
+import json
+import math
+
+from click.testing import CliRunner
+
+from dyncalc.cli import cli
+
+
+def _run(args, text):
+    return CliRunner().invoke(cli, args, input=text)
+
+
+def _rows(output):
+    return list(csv.reader(io.StringIO(output)))
+
+
+def test_csv_gets_uncertainty_columns_that_match_the_hand_propagation():
+    text = "k [N/m],m [kg]\n100+/-5,2\n(200 ± 10) N/m,4+/-0.2\n300,6\n"
+    result = _run(["natural-frequency", "--batch", "-"], text)
+    assert result.exit_code == 0, result.output
+    rows = _rows(result.output)
+    assert rows[0] == ["k [N/m]", "m [kg]", "omega [rad/s]", "u(omega) [rad/s]", "f [Hz]",
+                       "u(f) [Hz]", "T [s]", "u(T) [s]"]
+    omega = math.sqrt(100 / 2)
+    # u(omega)/omega = 1/2 sqrt((u_k/k)^2 + (u_m/m)^2)
+    assert math.isclose(float(rows[1][3]), omega / 2 * 0.05, rel_tol=1e-8)
+    assert math.isclose(float(rows[2][3]), omega / 2 * math.hypot(0.05, 0.05), rel_tol=1e-8)
+    assert math.isclose(float(rows[2][5]), float(rows[2][3]) / (2 * math.pi), rel_tol=1e-8)
+    # T = 2 pi / omega: u(T)/T = u(omega)/omega
+    assert math.isclose(float(rows[2][7]) / float(rows[2][6]),
+                        float(rows[2][3]) / float(rows[2][2]), rel_tol=1e-8)
+    # a row without uncertainty (the vectorised path) leaves its u() cells empty
+    assert rows[3][3] == rows[3][5] == rows[3][7] == ""
+    assert float(rows[3][2]) == omega
+
+
+def test_batch_uncertainty_equals_the_one_off():
+    text = "k1,k2\n200+/-10 N/m,300 N/m\n"
+    batch = _rows(_run(["spring-series", "--batch", "-"], text).output)
+    one = json.loads(_run(["spring-series", "200+/-10 N/m", "300 N/m", "--json"], "").output)
+    assert batch[0][-2:] == ["k_eq [N/m]", "u(k_eq) [N/m]"]
+    assert float(batch[1][-2]) == one["results"]["k_eq"]["value"]
+    assert float(batch[1][-1]) == one["results"]["k_eq"]["uncertainty"]
+    # d k_eq / d k1 = (k_eq / k1)^2 = 0.36: u = 3.6 N/m
+    assert math.isclose(one["results"]["k_eq"]["uncertainty"], 3.6, rel_tol=1e-8)
+
+
+def test_json_lines_carry_the_uncertainty():
+    text = "k [N/m],m [kg]\n100+/-5,2\n"
+    result = _run(["natural-frequency", "--batch", "-", "--json"], text)
+    line = json.loads(result.output.splitlines()[0])
+    assert line["line"] == 2
+    assert line["inputs"]["k"] == {"value": 100.0, "uncertainty": 5.0, "unit": "N/m"}
+    assert math.isclose(line["results"]["omega"]["uncertainty"],
+                        math.sqrt(50) / 2 * 0.05, rel_tol=1e-8)
+
+
+def test_a_bad_uncertainty_in_a_cell_names_its_line():
+    text = "k [N/m],m [kg]\n100+/-5,2\n100+/--5,2\n"
+    result = _run(["natural-frequency", "--batch", "-"], text)
+    assert result.exit_code == 2
+    assert result.output.splitlines()[-1] == (
+        "Error: line 3: k (its uncertainty) must not be negative; got -5 newton / meter")
