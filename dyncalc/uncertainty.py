@@ -38,10 +38,14 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["traced_input", "propagate", "RELATIVE_STEP"]
+__all__ = ["traced_input", "propagate", "nudged_hint", "store_hint", "RELATIVE_STEP"]
 
 #: The finite-difference step relative to the input's magnitude.
 RELATIVE_STEP = 1e-6
+#: A propagated uncertainty below this fraction of its result is rounding noise of the
+#: differences (about eps / RELATIVE_STEP = 2e-10 of the result, times the input's share):
+#: it is given as zero (a result that does not depend on the uncertain inputs at all).
+NOISE_FLOOR = 1e-9
 
 
 class _Input:
@@ -64,6 +68,7 @@ class _Tape:
         self.inputs: list[_Input] = []
         self.position = 0
         self.nudge: tuple[int, float] | None = None  # (input index, SI offset)
+        self.hints: dict[Any, Any] = {}
 
 
 _TAPE: contextvars.ContextVar[_Tape | None] = contextvars.ContextVar("dyncalc_tape",
@@ -95,6 +100,23 @@ def traced_input(parsed, dim, label: str, allow_inf: bool, constraint: str | Non
                                                        parsed.quantity.units)
     return type(parsed)(quantity, si, parsed.assumed_si, parsed.unit_text, parsed.text,
                         uncertainty=parsed.uncertainty)
+
+
+def nudged_hint(key) -> Any:
+    """What the run as typed stored under ``key`` (:func:`store_hint`), when this run is one
+    of the nudged re-runs of :func:`propagate`; otherwise ``None``. A solver uses it to look
+    for its answer next to the one it found before (the inputs moved by 1e-6)."""
+    tape = _TAPE.get()
+    if tape is None or tape.nudge is None:
+        return None
+    return tape.hints.get(key)
+
+
+def store_hint(key, value) -> None:
+    """Keep ``value`` for the nudged re-runs of the run as typed (no-op otherwise)."""
+    tape = _TAPE.get()
+    if tape is not None and tape.nudge is None:
+        tape.hints[key] = value
 
 
 def _unit_scale(quantity, dim) -> float:
@@ -198,6 +220,8 @@ def _attach(result, tape: _Tape, nominal, terms, failed) -> None:
             continue
         total = sum(parts.values()) if parts else np.zeros_like(nominal[name])
         sigma = np.sqrt(total)
+        with np.errstate(all="ignore"):  # below what the differences resolve: zero
+            sigma = np.where(sigma <= NOISE_FLOOR * np.abs(nominal[name]), 0.0, sigma)
         if not np.all(np.isfinite(sigma)):
             entry.uncertainty = None
             result.warnings.append(f"the uncertainty of {name} overflows float64")

@@ -78,7 +78,15 @@ def json_data(result: Result, units: dict[str, str], checks: list[Check],
 
 
 def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
-    """``--value NAME``: the full-precision number (``repr``), vectors comma-separated."""
+    """``--value NAME``: the full-precision number (``repr``), vectors comma-separated;
+    ``--value 'u(NAME)'`` its standard uncertainty (when an input carried one)."""
+    if name.startswith("u(") and name.endswith(")") and name[2:-1] in result.results:
+        entry = result.results[name[2:-1]]
+        sigma = entry.uncertainty_in(units.get(entry.name))
+        if sigma is None:
+            raise InputError(f"--value {name}: {entry.name} has no uncertainty (give one on "
+                             "an input: 2.0+/-0.1 kg)")
+        return batch_number(sigma)
     entry = result.results.get(name)
     if entry is None:
         raise InputError(f"--value {name}: there is no result named {name!r}; the results are "

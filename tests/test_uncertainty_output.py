@@ -1,4 +1,4 @@
-"""Batch cells may carry uncertainties; each result column is then followed by u(NAME)."""
+"""How uncertainties are shown: batch columns u(NAME), JSON lines, --value 'u(NAME)', the table."""
 import csv
 import io
 import json
@@ -64,3 +64,27 @@ def test_a_bad_uncertainty_in_a_cell_names_its_line():
     assert result.exit_code == 2
     assert result.output.splitlines()[-1] == (
         "Error: line 3: k (its uncertainty) must not be negative; got -5 newton / meter")
+
+
+def test_value_of_the_uncertainty_alone():
+    args = ["natural-frequency", "--k", "(100 ± 5) N/m", "--m", "2kg"]
+    result = _run([*args, "--value", "u(omega)"], "")
+    assert result.exit_code == 0
+    assert math.isclose(float(result.output), math.sqrt(50) / 2 * 0.05, rel_tol=1e-8)
+    in_rpm = _run([*args, "--value", "u(f)", "--unit", "f=rpm"], "")
+    assert math.isclose(float(in_rpm.output), float(result.output) / (2 * math.pi) * 60,
+                        rel_tol=1e-12)
+
+
+def test_value_of_an_uncertainty_that_is_not_there():
+    result = _run(["natural-frequency", "--k", "100 N/m", "--m", "2kg", "--value", "u(f)"], "")
+    assert result.exit_code == 2
+    assert result.output == ("Error: --value u(f): f has no uncertainty (give one on an input: "
+                             "2.0+/-0.1 kg)\n")
+
+
+def test_table_shows_value_plus_minus_two_figures():
+    result = _run(["natural-frequency", "--k", "(100 ± 5) N/m", "--m", "2.0+/-0.1 kg"], "")
+    lines = result.output.splitlines()
+    assert lines[2].split() == ["omega", "ω", "7.07107", "±", "0.25", "rad/s"]
+    assert lines[-1] == "inputs: k = 100 ± 5 N/m, m = 2 ± 0.1 kg"
