@@ -213,7 +213,7 @@ class _Problem:
         """Every ``x`` with ``y(x) = goal``, ascending, and how they were found."""
         if not math.isfinite(goal):
             return [], ("none", "")
-        power = self._power_law() if self.param.constraint == "positive" \
+        power = self._power_law() if self.param.constraint in ("positive", "nonnegative") \
             and self.param.dim is not ANGLE else None
         if power is not None:
             x1, y1, a = power
@@ -223,7 +223,7 @@ class _Problem:
                 if math.isfinite(x) and x > 0 and self._close(self.y(x), goal):
                     return [x], ("closed-form", f"{self.target} is proportional to "
                                                 f"{self.param.name}^({a}): inverted exactly")
-            return [], ("closed-form", "")
+            # not a power law after all (one only where the probes were): search
         return self._bracketed(goal), ("bracketed-root", "a sign change on a grid of "
                                                          f"{self.param.name}, refined by "
                                                          "Brent's method")
