@@ -116,17 +116,27 @@ def _ascii(text: str) -> str:
 def latex_text(text: str) -> str:
     """Words for a LaTeX document: special characters escaped, signs and Greek letters as
     math (``\\ensuremath``)."""
-    escaped = latex_escape(_ascii(text))
+    escaped = latex_escape(_ascii(text)).replace("--", "-{}-")  # no en dash for options
     for ch, tex in _TEXT_SYMBOLS.items():
         escaped = escaped.replace(ch, tex)
     return re.sub("\x00(\\w+)\x01", lambda m: r"\ensuremath{\%s}" % m.group(1), escaped)
 
 
+def _top_equals(line: str) -> int:
+    """Where the first `` = `` outside any braces is (-1: none)."""
+    depth = 0
+    for i, ch in enumerate(line):
+        depth += (ch == "{") - (ch == "}")
+        if depth == 0 and line.startswith(" = ", i):
+            return i
+    return -1
+
+
 def _align(lines: list[str]) -> list[str]:
     body = []
     for i, line in enumerate(lines):
-        head, sep, tail = line.partition(" = ")
-        row = f"  {head} &= {tail}" if sep else f"  &{line}"
+        at = _top_equals(line)
+        row = f"  {line[:at]} &= {line[at + 3:]}" if at >= 0 else f"  &{line}"
         body.append(row + (r" \\" if i < len(lines) - 1 else ""))
     return [r"\begin{align*}", *body, r"\end{align*}"]
 
