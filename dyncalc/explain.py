@@ -7,20 +7,21 @@ symbols it is the formula; filled with values and units it is the substituted li
 the value of its left-hand side: ``\\omega = \\sqrt{\\frac{100\\,\\mathrm{N/m}}{2\\,\\mathrm{kg}}}
 = 7.07107\\,\\mathrm{rad/s}``. :func:`tex_to_text` gives the plain-text twin of each line.
 
-Nothing here prints; the three renderings of an explanation are in :mod:`dyncalc.cli.explain_render`.
+Nothing here prints; the three renderings of an explanation are in
+:mod:`dyncalc.cli.explain_render`.
 """
 from __future__ import annotations
 
 import math
 import re
 from dataclasses import dataclass
-from string import Template
 from typing import Any
 
 from .result import format_number
 
 __all__ = ["Term", "Formula", "latex_escape", "unit_latex", "number_latex", "symbol_latex",
-           "quantity_latex", "quantity_text", "tex_to_text", "render_formulas", "DIGITS"]
+           "quantity_latex", "quantity_text", "tex_to_text", "render_formulas", "template_terms",
+           "DIGITS"]
 
 DIGITS = 6
 
@@ -73,7 +74,7 @@ def unit_latex(unit: str) -> str:
     if unit in ("deg", "degree", "degrees", "°"):
         return r"{}^{\circ}"
     out: list[str] = []
-    tokens = [t for t in _UNIT_TOKEN.findall(unit)]
+    tokens = _UNIT_TOKEN.findall(unit)
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -282,7 +283,7 @@ def _fill_values_tex(rhs: str, terms: dict[str, Term], digits: int) -> str:
         term = terms[m.group(1) or m.group(2)]
         tex = term.tex(digits)
         follows = rhs[m.end():m.end() + 1]
-        if follows == "^" or term.negative or (term.unit and follows == "^"):
+        if follows == "^" or term.negative:
             return r"\left(" + tex + r"\right)"
         return tex
 

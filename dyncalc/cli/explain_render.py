@@ -88,7 +88,8 @@ def markdown(ex: Explanation) -> str:
 
 _TEXT_SYMBOLS = {"×": r"\ensuremath{\times}", "°": r"\ensuremath{^\circ}",
                  "±": r"\ensuremath{\pm}", "−": "-", "≈": r"\ensuremath{\approx}",
-                 "≤": r"\ensuremath{\le}", "≥": r"\ensuremath{\ge}", "·": r"\ensuremath{\cdot}",
+                 "≤": r"\ensuremath{\le}", "≥": r"\ensuremath{\ge}",
+                 "·": r"\ensuremath{\cdot}",
                  "²": r"\ensuremath{^2}", "³": r"\ensuremath{^3}", "µ": r"\ensuremath{\mu}",
                  "—": "---", "–": "--", "’": "'", "“": "``", "”": "''"}
 
