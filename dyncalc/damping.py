@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import InputError, PhysicsError
+from .explain import Formula
 from .result import Entry, Explanation, Result, entry_from_parsed, format_number
 from .scenes.results import DECAY_RATE
 from .units import (ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS, STIFFNESS, TIME,
@@ -295,7 +296,7 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
                     model="linear", method=fit_method or "closed-form", warnings=warnings,
                     extra=extra)
     result.add_overflow_warnings()
-    result.explanation = _explain(formula, inputs, results, reference, fit)
+    result.explanation = _explain(formula, inputs, results, reference, fit, form)
     result.add_underflow_warnings(exact_zeros)
     return result
 
@@ -352,7 +353,38 @@ def _shown(entry: Entry) -> str:
     return f"{entry.name} = {format_number(value, 6)}{unit}"
 
 
-def _explain(formula, inputs, results, reference, fit) -> Explanation:
+#: The formulas of damping-ratio in LaTeX (:mod:`dyncalc.explain`); ``form`` is the option
+#: that gave the damping (``--c``, ``--decrement``, ``--ratio``, ``--amplitudes``).
+DAMPING_LATEX = (
+    r"$delta = \frac{\ln $ratio}{$cycles}",
+    r"$omega = \sqrt{\frac{$k}{$m}}",
+    r"$c_c = 2\,\sqrt{$k\,$m}",
+    Formula(r"$zeta = \frac{$c}{$c_c}", lambda v: v["form"] == "--c"),
+    Formula(r"$xi = \frac{$c}{2\,$m}", lambda v: v["form"] == "--c"),
+    Formula(r"$delta = \frac{2\pi\,$zeta}{\sqrt{1 - $zeta^2}}",
+            lambda v: v["form"] in ("--c", "--scene")),
+    r"$zeta = \frac{$delta}{\sqrt{4\pi^2 + $delta^2}}",
+    Formula(r"$c = $zeta\,$c_c", lambda v: v["form"] != "--c"),
+    r"$omega_d = $omega\,\sqrt{1 - $zeta^2}",
+    r"$T_d = \frac{2\pi}{$omega_d}",
+    r"$xi = $zeta\,$omega",
+    r"$Q = \frac{1}{2\,$zeta}",
+)
+
+
+def _formula_lines(inputs, results, form: str):
+    """(LaTeX formula, LaTeX substituted, text substituted) of ``DAMPING_LATEX``."""
+    from .explain import render_formulas, template_terms
+
+    terms = template_terms([*inputs.values(), *results.values()])
+    if "decrement" in terms:  # --decrement is delta itself
+        terms.setdefault("delta", terms.pop("decrement"))
+    values = {name: e.si for name, e in [*inputs.items(), *results.items()]}
+    values["form"] = form
+    return render_formulas(DAMPING_LATEX, terms, values)
+
+
+def _explain(formula, inputs, results, reference, fit, form="") -> Explanation:
     from .physics.damping import CRITICAL_BAND
 
     assumptions = ["linear viscous damping: the peaks fall geometrically, one factor "
@@ -366,10 +398,11 @@ def _explain(formula, inputs, results, reference, fit) -> Explanation:
             "peaks one full cycle apart, in time order; not exponential when ln(x) bends "
             "(quadratic term significant at 0.1% and changing the decrement by more than "
             f"{100 * CURVATURE_LIMIT:.0f}%) or scatters (R^2 < {R2_LIMIT})")
-    return Explanation(formula=formula,
-                       substituted=[_shown(e) for e in inputs.values()]
-                       + [_shown(e) for e in results.values()],
-                       assumptions=assumptions, reference=reference)
+    latex, latex_substituted, substituted = _formula_lines(inputs, results, form)
+    listed = [_shown(e) for e in inputs.values() if e.dim is None]  # the peaks
+    return Explanation(formula=formula, substituted=listed + substituted,
+                       assumptions=assumptions, reference=reference, latex=latex,
+                       latex_substituted=latex_substituted)
 
 
 # --- scenes with a damper --------------------------------------------------------------------
@@ -424,8 +457,12 @@ def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
     if result.explanation is not None:
         result.explanation.formula.append(
             "delta = 2 pi zeta / sqrt((1 - zeta)(1 + zeta)) (underdamped), Q = 1/(2 zeta)")
-        result.explanation.substituted += [_shown(results[n]) for n in added.values
-                                           if n in results and n != "zeta"]
+        latex, latex_sub, text_sub = _formula_lines(result.inputs, {
+            n: e for n, e in results.items() if n in added.values or n == "zeta"}, "--scene")
+        ex = result.explanation
+        ex.substituted += [line for line in text_sub if not line.startswith("zeta =")]
+        ex.latex += [line for line in latex if not line.startswith(r"\zeta =")]
+        ex.latex_substituted += [line for line in latex_sub if not line.startswith(r"\zeta =")]
     return result
 
 

@@ -407,10 +407,42 @@ def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, 
         formula=["a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
                  "a_transport = a0 + alpha x r + Omega x (Omega x r), a_c = 2 Omega x v_r, "
                  "F_c = -m a_c"],
-        substituted=substituted, assumptions=assumptions, reference=REFERENCE)
+        substituted=substituted, assumptions=assumptions, reference=REFERENCE,
+        latex=list(VECTOR_LATEX))
     return Result(command="coriolis", results=results, inputs=reader.inputs, model=model,
                   method="closed-form", warnings=list(earth["warnings"] if earth else [])
                   + fa.warnings, explanation=explanation, extra=extra)
+
+
+#: The relative-motion formula in LaTeX (vectors).
+VECTOR_LATEX = (
+    r"\vec{a} = \vec{a}_0 + \vec{\alpha}\times\vec{r} + \vec{\Omega}\times(\vec{\Omega}\times"
+    r"\vec{r}) + 2\,\vec{\Omega}\times\vec{v}_r + \vec{a}_r",
+    r"\vec{a}_c = 2\,\vec{\Omega}\times\vec{v}_r, \quad \vec{F}_c = -m\,\vec{a}_c",
+)
+
+#: The magnitudes of the scalar form in LaTeX (:mod:`dyncalc.explain`), values in SI.
+SCALAR_LATEX = (
+    r"$a_c = 2\,$Omega\,$v_r",
+    r"$a_euler = $alpha\,$r",
+    r"$a_centripetal = $Omega^2\,$r",
+    r"$a_transport = \sqrt{$a_euler^2 + $a_centripetal^2}",
+    r"$F_c = $m\,$a_c",
+)
+
+
+def _scalar_latex(results, omega, v, r, alpha, mass):
+    from .explain import Term, render_formulas, symbol_latex
+
+    given = {"Omega": (omega, "rad/s"), "v_r": (v, "m/s"), "r": (r, "m"),
+             "alpha": (alpha, "rad/s^2"), "m": (None if mass is None else mass.si, "kg")}
+    if r is not None or alpha is not None:
+        given.update(r=(r or 0.0, "m"), alpha=(alpha or 0.0, "rad/s^2"))
+    terms = {name: Term(symbol_latex(name), float(value), unit)
+             for name, (value, unit) in given.items() if value is not None}
+    for name, entry in results.items():
+        terms[name] = Term(symbol_latex(name), float(entry.si), entry.unit)
+    return render_formulas(SCALAR_LATEX, terms)
 
 
 def _scalars(reader: _Reader, omega: Parsed) -> Result:
@@ -476,7 +508,9 @@ def _scalars(reader: _Reader, omega: Parsed) -> Result:
     if fa.F_c is not None:
         lines.append(f"F_c = m a_c = {_fmt(mass.si, 'kg')} x {_fmt(results['a_c'].si, 'm/s^2')}"
                      f" = {_fmt(results['F_c'].si, 'N')} (directed opposite to a_c)")
+    latex, latex_substituted, _text = _scalar_latex(results, Om, v, r, al, mass)
     explanation = Explanation(
+        latex=latex, latex_substituted=latex_substituted,
         formula=["|a_c| = 2 Omega v_r (Omega perpendicular to v_r)",
                  "|alpha x r| = alpha r, |Omega x (Omega x r)| = Omega^2 r (r perpendicular to "
                  "the axis), |F_c| = m |a_c|"],

@@ -389,7 +389,7 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
     results.update(element_results)
     result = Result(command=f"spring-{how}", results=results, inputs=inputs,
                     model="network" if _is_nested(root) else how, warnings=warnings,
-                    explanation=_explain(root, stiffness, dim))
+                    explanation=_explain(root, stiffness, dim, results["k_eq"]))
     result.add_underflow_warnings()
     if len(root.children) > 1:
         parts = [combine(c) for c in root.children]
@@ -416,11 +416,32 @@ def _formula(node) -> str:
     return "1/(" + " + ".join(f"1/{i}" if "+" not in i else f"1/({i})" for i in inner) + ")"
 
 
-def _explain(root, stiffness, dim: Dim) -> Explanation:
+def _latex(node) -> str:
+    """The network as a LaTeX template (``$k1`` for an element)."""
+    if not isinstance(node, Group):
+        return "${" + node.name + "}"
+    inner = [_latex(c) for c in node.children]
+    if node.how == "parallel" or len(inner) == 1:
+        return " + ".join(inner)
+    return r"\frac{1}{" + " + ".join(r"\frac{1}{" + i + "}" for i in inner) + "}"
+
+
+def _explain(root, stiffness, dim: Dim, k_eq: Entry | None = None) -> Explanation:
+    from .explain import Term, render_formulas, symbol_latex
+
     si = dim.si.replace("^", "**")
     formula = ["k_eq = " + _formula(root)]
     substituted = [f"{name} = {float(q.to(si).magnitude):.6g} {dim.si}"
                    for name, q in stiffness.items()]
+    latex = latex_substituted = []
+    names = [leaf.name for leaf in _leaves(root)]
+    if k_eq is not None and all(n.isidentifier() for n in names):
+        terms = {name: Term(symbol_latex(name), float(q.to(si).magnitude), dim.si)
+                 for name, q in stiffness.items()}
+        terms["k_eq"] = Term(symbol_latex("k_eq"), k_eq.value_in(), k_eq.unit)
+        latex, latex_substituted, text = render_formulas(
+            ["$k_eq = " + _latex(root)], terms)
+        substituted += text
     for leaf in _leaves(root):
         if isinstance(leaf, Element):
             formula.append(f"{leaf.name} = {leaf.kind.formula}  ({leaf.kind.name})")
@@ -428,4 +449,5 @@ def _explain(root, stiffness, dim: Dim) -> Explanation:
                    "series: every element carries the same force; parallel: every element has "
                    "the same displacement"]
     return Explanation(formula, substituted, assumptions,
-                       "Gross et al., Engineering Mechanics 3, Examples 5.11, 5.19, 5.26")
+                       "Gross et al., Engineering Mechanics 3, Examples 5.11, 5.19, 5.26",
+                       latex=latex, latex_substituted=latex_substituted)

@@ -80,16 +80,29 @@ def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:
 
 @dataclass
 class Explanation:
-    """The formula, the same with values substituted, the model's assumptions, the reference."""
+    """The formula, the same with values substituted, the model's assumptions, the reference.
+
+    ``formula`` and ``substituted`` are plain text; ``latex`` and ``latex_substituted`` the
+    same lines in LaTeX math (either may be empty); ``example`` the textbook example the model
+    reproduces (a runnable command and what it gives); ``variance`` maps a result to the share
+    of its variance each uncertain input contributes (``{"omega": {"k": 0.2, "m": 0.8}}``).
+    """
 
     formula: list[str]
     substituted: list[str] = field(default_factory=list)
     assumptions: list[str] = field(default_factory=list)
     reference: str = ""
+    latex: list[str] = field(default_factory=list)
+    latex_substituted: list[str] = field(default_factory=list)
+    example: str = ""
+    variance: dict[str, dict[str, float]] = field(default_factory=dict)
 
     def as_dict(self) -> dict:
         return {"formula": self.formula, "substituted": self.substituted,
-                "assumptions": self.assumptions, "reference": self.reference}
+                "assumptions": self.assumptions, "reference": self.reference,
+                "latex": {"formula": self.latex, "substituted": self.latex_substituted},
+                "example": self.example,
+                "variance": {name: dict(shares) for name, shares in self.variance.items()}}
 
 
 @dataclass

@@ -12,6 +12,7 @@ import math
 import time
 
 from .errors import InputError, PhysicsError
+from .explain import Formula
 from .result import Entry, Explanation, Result, entry_from_parsed, format_number
 from .units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, TIME, VELOCITY,
                     format_quantity, parse_quantity)
@@ -247,6 +248,41 @@ def _physics_warnings(onset, kappa: float, mu: float, on_slope: bool) -> list[st
     return notes
 
 
+#: The formulas of rolling-onset in LaTeX (:mod:`dyncalc.explain`), all values in SI.
+ROLLING_LATEX = (
+    r"$s0 = $v0 - $r\,$omega0",
+    Formula(r"$t_roll = \frac{$kappa\,\lvert $s0\rvert}{$mu\,$g\,(1 + $kappa)}",
+            lambda v: not v["slope"]),
+    Formula(r"$t_roll = \frac{$kappa\,\lvert $s0\rvert}{$g\,\left($mu\,(1 + $kappa)\,"
+            r"\cos $beta + $sigma\,$kappa\,\sin $beta\right)}", lambda v: v["slope"]),
+    Formula(r"$v_roll = \frac{$v0 + $kappa\,$r\,$omega0}{1 + $kappa}", lambda v: not v["slope"]),
+    Formula(r"$v_roll = \frac{$v0}{1 + $kappa}", lambda v: not v["slope"]),
+    Formula(r"$v_roll = $v0 - $g\,\left(\sin $beta + $sigma\,$mu\,\cos $beta\right)\,$t_roll",
+            lambda v: v["slope"]),
+    r"$x_roll = \frac{($v0 + $v_roll)\,$t_roll}{2}",
+    r"$omega_roll = \frac{$v_roll}{$r}",
+    r"$mu_min = \frac{$kappa\,\lvert\tan $beta\rvert}{1 + $kappa}",
+)
+
+
+def _latex_lines(onset, kappa, mu, g, v0, radius, omega0, incline, slope):
+    """(LaTeX formula, LaTeX substituted) of ``ROLLING_LATEX`` at these values."""
+    from .explain import Term, render_formulas, symbol_latex
+
+    given = {"kappa": (kappa, ""), "mu": (mu, ""), "g": (g, "m/s^2"), "v0": (v0, "m/s"),
+             "s0": (onset.s0, "m/s"), "sigma": (float(onset.sigma), ""),
+             "t_roll": (onset.t, "s"), "v_roll": (onset.v, "m/s"), "x_roll": (onset.x, "m")}
+    if radius is not None:
+        given.update(r=(radius, "m"), omega0=(omega0, "rad/s"), omega_roll=(onset.omega, "rad/s"))
+    if incline is not None:
+        given.update(beta=(incline.quantity.magnitude, incline.unit_text or "rad"),
+                     mu_min=(onset.mu_min, ""))
+    terms = {name: Term(symbol_latex(name), float(value), unit)
+             for name, (value, unit) in given.items() if value is not None}
+    latex, latex_substituted, _text = render_formulas(ROLLING_LATEX, terms, {"slope": slope})
+    return latex, latex_substituted
+
+
 def _explain(onset, kappa, body_name, mu, g, v0, radius, omega0, incline, sin_b, cos_b,
              method, extra) -> Explanation:
     sigma = {1: "+1", -1: "-1", 0: "0"}[onset.sigma]
@@ -328,5 +364,7 @@ def _explain(onset, kappa, body_name, mu, g, v0, radius, omega0, incline, sin_b,
             f"steps) with an event at zero slip; it differs from the closed form by "
             f"{extra['error_estimate']:.2g} (relative); time {timing['ode_s'] * 1e3:.3g} ms "
             f"against {timing['closed_form_s'] * 1e3:.3g} ms for the closed form")
+    latex, latex_substituted = _latex_lines(onset, float(kappa), mu, g, v0, radius, omega0,
+                                            incline, slope)
     return Explanation(formula=formula, substituted=sub, assumptions=assumptions,
-                       reference=_REFERENCE)
+                       reference=_REFERENCE, latex=latex, latex_substituted=latex_substituted)

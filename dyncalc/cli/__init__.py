@@ -94,6 +94,7 @@ class DyncalcGroup(click.Group):
         args = list(sys.argv[1:] if args is None else args)
         debug = "--debug" in args
         try:
+            args = _explain_equals(args)
             rv = super().main(args=args, prog_name=prog_name or "dyncalc",
                               complete_var=complete_var, standalone_mode=False, **extra)
             code = rv if isinstance(rv, int) else 0
@@ -121,6 +122,26 @@ class DyncalcGroup(click.Group):
         if standalone_mode:
             sys.exit(code)
         return code
+
+
+def _explain_equals(args: list[str]) -> list[str]:
+    """``--explain=FMT`` -> ``--explain --explain-format=FMT`` (before any ``--``), so that
+    ``--explain`` stays a flag: ``--explain k=2N/m`` is the flag and a parameter."""
+    from .options import EXPLAIN_FORMATS
+
+    out = []
+    for i, arg in enumerate(args):
+        if arg == "--":
+            return out + args[i:]
+        if arg.startswith("--explain="):
+            fmt = arg.partition("=")[2]
+            if fmt not in EXPLAIN_FORMATS:
+                raise InputError(f"--explain={fmt[:40]}: the formats are "
+                                 f"{', '.join(EXPLAIN_FORMATS)} (--explain alone is text)")
+            out += ["--explain", f"--explain-format={fmt}"]
+        else:
+            out.append(arg)
+    return out
 
 
 def _command_name(args: list[str]) -> str | None:

@@ -20,9 +20,15 @@ __all__ = ["Output", "output_options", "complete_scene"]
 
 MAX_DIGITS = 17
 
+#: The forms of ``--explain=FORMAT`` (``--explain`` alone is ``text``).
+EXPLAIN_FORMATS = ("text", "markdown", "latex")
+
 
 class Output:
-    """How the user asked to see the result (and, with ``--batch``, where the rows come from)."""
+    """How the user asked to see the result (and, with ``--batch``, where the rows come from).
+
+    ``explain`` is False, or the format of ``--explain``: ``text``, ``markdown`` or ``latex``.
+    """
 
     __slots__ = ("as_json", "value", "units", "digits", "checks", "rtol", "explain", "strict",
                  "batch", "on_error", "debug")
@@ -30,7 +36,7 @@ class Output:
     def __init__(self, as_json: bool = False, value: str | None = None,
                  units: list[str] | None = None, digits: int = 6,
                  checks: list[str] | None = None, rtol: float | None = None,
-                 explain: bool = False, strict: bool = False, batch: str | None = None,
+                 explain: bool | str = False, strict: bool = False, batch: str | None = None,
                  on_error: str = "stop", debug: bool = False):
         self.as_json, self.value, self.digits = as_json, value, digits
         self.units = list(units or [])
@@ -154,10 +160,12 @@ def output_options(command):
     """Add the shared output options to a click command function (which takes ``out``)."""
 
     @functools.wraps(command)
-    def wrapper(*args, as_json, value, units, digits, checks, rtol, explain, strict_units,
-                batch, on_error, debug, **kwargs):
+    def wrapper(*args, as_json, value, units, digits, checks, rtol, explain, explain_format,
+                strict_units, batch, on_error, debug, **kwargs):
         out = Output(as_json=as_json, value=value, units=list(units), digits=digits,
-                     checks=list(checks), rtol=rtol, explain=explain, strict=strict_units,
+                     checks=list(checks), rtol=rtol,
+                     explain=(explain_format or "text") if explain else False,
+                     strict=strict_units,
                      batch=batch, on_error=on_error, debug=debug)
         return command(*args, out=out, **kwargs)
 
@@ -177,7 +185,11 @@ def output_options(command):
                      help="Relative tolerance: of --check (default 1e-2) and of the model that "
                           "computes the result (default 1e-9)."),
         click.option("--explain", is_flag=True,
-                     help="Show the formula, the values substituted and the assumptions."),
+                     help="Show the formula, the values substituted, the assumptions and the "
+                          "textbook example; --explain=markdown or --explain=latex for "
+                          "pasting."),
+        click.option("--explain-format", type=click.Choice(EXPLAIN_FORMATS), default=None,
+                     hidden=True, help="Format of --explain (what --explain=FORMAT sets)."),
         click.option("--strict-units", is_flag=True,
                      help="Refuse bare numbers: every quantity needs its unit."),
         click.option("--batch", metavar="FILE",

@@ -51,14 +51,21 @@ def _json_entries(entries: dict[str, Entry], units: dict[str, str]) -> dict:
     return out
 
 
+def _explain_format(explain) -> str | None:
+    """``--explain``'s format (``text``, ``markdown``, ``latex``), None when not asked for."""
+    if not explain:
+        return None
+    return explain if isinstance(explain, str) else "text"
+
+
 def to_json(result: Result, units: dict[str, str], checks: list[Check],
-            explain: bool) -> str:
+            explain: bool | str) -> str:
     """The JSON object of SPEC.md (extra keys: ``checks``, ``explanation``, ``extra``)."""
     return json.dumps(json_data(result, units, checks, explain), indent=2, allow_nan=False)
 
 
 def json_data(result: Result, units: dict[str, str], checks: list[Check],
-              explain: bool) -> dict:
+              explain: bool | str) -> dict:
     """The object :func:`to_json` prints, as a dict (a batch JSON line is this object)."""
     data = {
         "command": result.command,
@@ -74,6 +81,11 @@ def json_data(result: Result, units: dict[str, str], checks: list[Check],
         data["checks"] = [c.as_dict() for c in checks]
     if explain and result.explanation is not None:
         data["explanation"] = result.explanation.as_dict()
+        fmt = _explain_format(explain)
+        if fmt != "text":
+            from .explain_render import render_explanation
+
+            data["explanation"]["rendered"] = render_explanation(result.explanation, fmt)
     return data
 
 
@@ -174,22 +186,17 @@ def _check_line(check: Check, digits: int) -> str:
             + (f"; likely slip: {check.diagnosis}" if check.diagnosis else ""))
 
 
-def _explanation_lines(result: Result) -> list[str]:
-    ex = result.explanation
-    if ex is None:
+def _explanation_lines(result: Result, explain: bool | str = True) -> list[str]:
+    """The explanation as lines: plain text, or the Markdown or LaTeX to copy."""
+    from .explain_render import render_explanation
+
+    if result.explanation is None:
         return ["(no explanation for this result)"]
-    lines = ["formula:"] + [f"  {f}" for f in ex.formula]
-    if ex.substituted:
-        lines += ["values:"] + [f"  {s}" for s in ex.substituted]
-    if ex.assumptions:
-        lines += ["assumptions:"] + [f"  - {a}" for a in ex.assumptions]
-    if ex.reference:
-        lines.append(f"reference: {ex.reference}")
-    return lines
+    return render_explanation(result.explanation, _explain_format(explain)).splitlines()
 
 
 def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[Check],
-               explain: bool) -> str:
+               explain: bool | str) -> str:
     """Human output without colour or box drawing (stdout is not a terminal)."""
     rows = [("result", "symbol", "value", "unit")] + _rows(result, units, digits)
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
@@ -201,12 +208,12 @@ def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[
     lines += [f"warning: {w}" for w in result.warnings]
     lines += [_check_line(c, digits) for c in checks]
     if explain:
-        lines += _explanation_lines(result)
+        lines += _explanation_lines(result, explain)
     return "\n".join(lines)
 
 
 def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[Check],
-              explain: bool, console) -> None:
+              explain: bool | str, console) -> None:
     """Human output on a terminal: a rich table; user text is never read as markup."""
     from rich.table import Table
     from rich.text import Text
@@ -225,5 +232,5 @@ def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[C
     for c in checks:
         console.print(Text(_check_line(c, digits), style="green" if c.passed else "bold red"))
     if explain:
-        for line in _explanation_lines(result):
+        for line in _explanation_lines(result, explain):
             console.print(Text(line))

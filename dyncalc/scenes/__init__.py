@@ -44,6 +44,7 @@ class Param:
     optional: bool = False
     constraint: str | None = "positive"
     choices: dict | None = None
+    symbol: str = ""                 # LaTeX symbol in formulas, if not derived from the name
 
     def signature(self) -> str:
         """``l [length]``, ``g [length]/[time]^2 = 9.80665 m/s^2``, ``amplitude [angle]?``"""
@@ -82,6 +83,12 @@ class Scene:
     accepts_zeta: bool = True                  # --zeta adds damped results
     no_zeta_because: str = "its damping comes from its own parameters"  # when it does not
     assumptions: tuple[str, ...] = ()
+    #: formula lines in LaTeX, ``$name`` for a parameter or result (see :mod:`dyncalc.explain`);
+    #: strings or :class:`dyncalc.explain.Formula` (used only when its condition holds)
+    latex: tuple = ()
+    #: functions of the SI values by name (and ``method``) that say how large an assumption's
+    #: error is at these inputs (a sentence, or None when there is nothing to say)
+    sizes: tuple = ()
 
     def param(self, name: str) -> Param | None:
         return next((p for p in self.params if p.name == name), None)

@@ -6,10 +6,24 @@ was computed independently with mpmath at 30 digits from the SCENES.md formula.
 """
 from __future__ import annotations
 
+import math
+
 from ..units import ACCELERATION, DAMPING, LENGTH, MASS, STIFFNESS
+from ..explain import Formula
 from . import Param, Scene, register
 from .basic import gravity
 from .results import LINEAR_DRAG
+
+
+def small_damping_error(values) -> str | None:
+    """How far the small-damping peak y0/(2 zeta) is below the exact one at this zeta."""
+    zeta = values.get("zeta", 0.0)
+    if not 0 < 2 * zeta * zeta < 1:
+        return None
+    short = 1 - math.sqrt((1 - zeta) * (1 + zeta))
+    used = "used here " if values.get("method") == "small-damping" else ""
+    return (f"the small-damping peak y_max = y0/(2 zeta) {used}is {100 * short:.3g}% below the "
+            f"exact y0/(2 zeta sqrt(1 - zeta^2)) at zeta = {zeta:.3g}")
 
 register(Scene(
     name="pendulum-spring-dashpot",
@@ -27,6 +41,8 @@ register(Scene(
     equation="4 m a^2 phi'' + d a^2 phi' + (4 k a^2 + 2 m g a) phi = 0",
     formula="omega^2 = k/m + g/(2a), xi = d/(8m), zeta = xi/omega, "
             "omega_d = omega sqrt(1 - zeta^2); underdamped iff d < 8 sqrt(k m + g m^2/(2a))",
+    latex=(r"$omega = \sqrt{\frac{$k}{$m} + \frac{$g}{2\,$a}}", r"$xi = \frac{$d}{8\,$m}",
+           r"$zeta = \frac{$xi}{$omega}"),
     reference="E5.18",
     example='dyncalc natural-frequency --scene pendulum-spring-dashpot m=2kg a=0.5m k=200N/m '
             '"d=6 N*s/m"',
@@ -53,6 +69,9 @@ register(Scene(
     equation="(m l^2/3) phi'' + (beta l^3/3) phi' + (m g l/2) phi = 0",
     formula="omega^2 = 3g/(2l), xi = beta l/(2m), zeta = xi/omega = beta/beta_crit, "
             "critical beta_crit = (m/l) sqrt(6 g/l)",
+    latex=(r"$omega = \sqrt{\frac{3\,$g}{2\,$l}}", r"$xi = \frac{$beta\,$l}{2\,$m}",
+           r"$zeta = \frac{$xi}{$omega}",
+           r"$beta_crit = \frac{$m}{$l}\,\sqrt{\frac{6\,$g}{$l}}"),
     reference="E5.14",
     example='dyncalc natural-frequency --scene rod-in-fluid m=1.5kg l=0.8m "beta=2 N*s/m^2"',
     example_result={"omega": "4.2880611877630664238 rad/s", "f": "0.68246613431299595684 Hz",
@@ -82,6 +101,15 @@ register(Scene(
     formula="omega^2 = k/(2m), zeta = (d/2) sqrt(1/(2 k m)), y0 = 2 m b0/k, "
             "y_max = y0/(2 zeta sqrt(1 - zeta^2)) for zeta < 1/sqrt(2), else y0 "
             "(small damping: y0/(2 zeta))",
+    latex=(r"$omega = \sqrt{\frac{$k}{2\,$m}}",
+           r"$zeta = \frac{$d}{2}\,\sqrt{\frac{1}{2\,$k\,$m}}",
+           r"$y0 = \frac{2\,$m\,$b0}{$k}",
+           Formula(r"$y_max = \frac{$y0}{2\,$zeta\,\sqrt{1 - $zeta^2}}",
+                   lambda v: v.get("method") != "small-damping" and 2 * v["zeta"] ** 2 < 1),
+           Formula(r"$y_max = \frac{$y0}{2\,$zeta}", lambda v: v.get("method") == "small-damping"),
+           Formula(r"$y_max = $y0",
+                   lambda v: v.get("method") != "small-damping" and 2 * v["zeta"] ** 2 >= 1)),
+    sizes=(small_damping_error,),
     reference="E5.21",
     example='dyncalc natural-frequency --scene frame-brace-damper m=500kg "k=200 kN/m" '
             '"d=2 kN*s/m" "b0=1 m/s^2"',

@@ -8,7 +8,7 @@ from __future__ import annotations
 from ..physics.bodies import KAPPA
 from ..units import DIMENSIONLESS, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from . import Constraint, Param, Scene, register
-from .basic import gravity
+from .basic import gravity, small_swings
 
 #: Shape factors ``kappa = J_C / (m r^2)`` of the bodies a ``body=`` parameter names.
 BODIES = KAPPA
@@ -42,6 +42,7 @@ register(Scene(
     compute=f"{PHYSICS}:rolling_disk_spring",
     equation="(1 + kappa) m x'' + k x = 0 (x the centre's displacement; rolling: x' = r phi')",
     formula="omega^2 = k / ((1 + kappa) m); a disk (kappa = 1/2) gives 2k/(3m)",
+    latex=(r"$omega = \sqrt{\frac{$k}{(1 + $kappa)\,$m}}",),
     reference="E4.8",
     example="dyncalc natural-frequency --scene rolling-disk-spring k=300N/m m=2kg",
     example_result={"omega": "10 rad/s", "f": "1.5915494309189533577 Hz",
@@ -65,6 +66,8 @@ register(Scene(
     equation="(1 + kappa) (R - r) phi'' + g sin(phi) = 0 (phi the angle of the body's centre "
              "from the lowest point)",
     formula="omega^2 = g / ((1 + kappa) (R - r))",
+    latex=(r"$omega = \sqrt{\frac{$g}{(1 + $kappa)\,($R - $r)}}",),
+    sizes=(small_swings,),
     reference="E4.9, E5.17 (l = R - r)",
     example="dyncalc natural-frequency --scene rolling-in-track R=1m r=0.2m body=solid-sphere",
     example_result={"omega": "2.9590433420279602251 rad/s", "f": "0.47094637470691179551 Hz",
@@ -83,6 +86,7 @@ register(Scene(
     compute=f"{PHYSICS}:drum_block_spring",
     equation="(m + M/2) x'' + k x = 0 (x the block's displacement from equilibrium)",
     formula="omega^2 = 2k / (M + 2m); the drum radius cancels",
+    latex=(r"$omega = \sqrt{\frac{2\,$k}{$M + 2\,$m}}",),
     reference="E5.12",
     example="dyncalc natural-frequency --scene drum-block-spring k=2kN/m m=4kg M=10kg",
     example_result={"omega": "14.907119849998597976 rad/s", "f": "2.3725418113905901949 Hz",
@@ -106,6 +110,7 @@ register(Scene(
     equation="x'' + (2 mu g / a) x = 0 (x the board's centre from midway between the drums)",
     formula="omega^2 = 2 mu g / a (independent of the drums' speed and the board's mass); "
             "turning outward, the board runs off exponentially instead",
+    latex=(r"$omega = \sqrt{\frac{2\,$mu\,$g}{$a}}",),
     reference="E5.13",
     example="dyncalc natural-frequency --scene board-on-drums mu=0.4 a=0.8m",
     example_result={"omega": "3.1315571206669694084 rad/s", "f": "0.49840279532877113126 Hz",
@@ -126,6 +131,9 @@ register(Scene(
     compute=f"{PHYSICS}:clock_pendulum",
     equation="J_A phi'' + (m l/2 + M a) g sin(phi) = 0",
     formula="J_A = m l^2/3 + M (r^2 + 2a^2)/2, omega^2 = (m l + 2 M a) g / (2 J_A)",
+    latex=(r"$J_A = \frac{$m\,$l^2}{3} + \frac{$M\,($r^2 + 2\,$a^2)}{2}",
+           r"$omega = \sqrt{\frac{($m\,$l + 2\,$M\,$a)\,$g}{2\,$J_A}}"),
+    sizes=(small_swings,),
     reference="E5.15",
     example="dyncalc natural-frequency --scene clock-pendulum m=0.5kg l=1m M=2kg r=0.1m a=0.9m",
     example_result={"omega": "3.3450569268931499241 rad/s", "f": "0.53238234483882957272 Hz",
@@ -145,6 +153,7 @@ register(Scene(
     compute=f"{PHYSICS}:pulley_block_spring",
     equation="(4m + 3M/2) x'' + k x = 0 (x the pulley's centre; the block moves 2x)",
     formula="omega^2 = k / (4m + 3M/2)",
+    latex=(r"$omega = \sqrt{\frac{$k}{4\,$m + \frac{3}{2}\,$M}}",),
     reference="E5.16",
     example="dyncalc natural-frequency --scene pulley-block-spring k=1kN/m m=3kg M=4kg",
     example_result={"omega": "7.453559924999298988 rad/s", "f": "1.1862709056952950975 Hz",
@@ -171,6 +180,9 @@ register(Scene(
     compute=f"{PHYSICS}:disk_torsion_offset_mass",
     equation="(M R^2/2 + m (r^2/2 + a^2)) phi'' + kt phi + m g a sin(phi) = 0",
     formula="omega^2 = (kt + m g a) / (M R^2/2 + m (r^2/2 + a^2)); J_A the denominator",
+    latex=(r"$J_A = \frac{$M\,$R^2}{2} + $m\,\left(\frac{$r^2}{2} + $a^2\right)",
+           r"$omega = \sqrt{\frac{$kt + $m\,$g\,$a}{$J_A}}"),
+    sizes=(small_swings,),
     reference="E5.25",
     example='dyncalc natural-frequency --scene disk-torsion-offset-mass M=20kg R=0.3m m=2kg '
             'r=0.05m a=0.2m "kt=50 N*m/rad"',
@@ -194,6 +206,7 @@ register(Scene(
              "wheel's centre, X the beam)",
     formula="omega^2 = k / (m + M / (1 + M/(kappa m))) = k (kappa m + M) / (m (kappa m + M "
             "+ kappa M)); the other mode is the beam's free drift (zero frequency)",
+    latex=(r"$omega = \sqrt{\frac{$k\,($kappa\,$m + $M)}{$m\,($kappa\,$m + $M + $kappa\,$M)}}",),
     reference="E5.27",
     example="dyncalc natural-frequency --scene wheel-on-moving-beam k=500N/m m=5kg M=20kg",
     example_result={"omega": "8.3205029433784368303 rad/s", "f": "1.3242491724493427529 Hz",
@@ -212,6 +225,8 @@ register(Scene(
     equation="7 m l^2 phi'' + (sqrt(65)/2) m g l sin(phi) = 0 (m the mass per length l; phi "
              "from the equilibrium)",
     formula="omega^2 = (sqrt(65)/14) g / l",
+    latex=(r"$omega = \sqrt{\frac{\sqrt{65}}{14}\,\frac{$g}{$l}}",),
+    sizes=(small_swings,),
     reference="E3.44",
     example="dyncalc natural-frequency --scene angled-member l=0.5m",
     example_result={"omega": "3.3607766948250002907 rad/s", "f": "0.53488422360944101905 Hz",

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from ..units import (ACCELERATION, ANGULAR_RATE, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS,
                      VELOCITY)
+from ..explain import Formula
 from . import Constraint, Param, Scene, register
 from .basic import amplitude, gravity
 
@@ -24,6 +25,12 @@ register(Scene(
     formula="omega_0^2 = g / ((pi - 2) r); at amplitude phi0: T = 4 sqrt(r/g) "
             "int_0^(pi/2) sqrt(pi - 2 + 4 k^2 sin^2 u) / sqrt(1 - k^2 sin^2 u) du, "
             "k = sin(phi0/2) (quadrature), or the equation of motion integrated (ode)",
+    latex=(Formula(r"$omega = \sqrt{\frac{$g}{(\pi - 2)\,$r}}", lambda v: "omega_0" not in v),
+           r"$omega_0 = \sqrt{\frac{$g}{(\pi - 2)\,$r}}",
+           r"q = \sin\left(\frac{$amplitude}{2}\right)",
+           r"$T = 4\,\sqrt{\frac{$r}{$g}}\,\int_0^{\pi/2} \frac{\sqrt{\pi - 2 + 4 q^2 \sin^2 u}}"
+           r"{\sqrt{1 - q^2 \sin^2 u}} \mathrm{d}u",
+           Formula(r"$omega = \frac{2\pi}{$T}", lambda v: "omega_0" in v)),
     reference="E4.18",
     example="dyncalc natural-frequency --scene half-cylinder-shell r=0.5m --amplitude 60deg",
     example_result={"T": "1.94996853096615652 s", "omega": "3.22219831110117381 rad/s",
@@ -46,6 +53,8 @@ register(Scene(
     equation="m l^2 phi'' + kt phi - m g l cos(phi) = 0 (phi below the horizontal)",
     formula="(g/l) cos(phi_0) = kt phi_0 / (m l^2) (a bracketed root find on (0, pi/2)); "
             "omega^2 = (g/l) sin(phi_0) + kt / (m l^2)",
+    latex=(r"\frac{$g}{$l}\,\cos $phi_0 = \frac{$kt\,$phi_0}{$m\,$l^2}",
+           r"$omega = \sqrt{\frac{$g}{$l}\,\sin $phi_0 + \frac{$kt}{$m\,$l^2}}"),
     reference="E5.20",
     example='dyncalc natural-frequency --scene rod-torsion-spring m=2kg l=1m '
             '"kt=30 N*m/rad"',
@@ -69,6 +78,13 @@ register(Scene(
     equation="M x'' + K x = 0, K = [[k1+k3, -k3], [-k3, k2+k3]], M = diag(m1, m2)",
     formula="K v = omega^2 M v: omega_1 < omega_2 and the mode shapes mode_1, mode_2 "
             "(amplitude ratios (x1, x2), unit length, first non-zero component positive)",
+    latex=(r"$omega_1 = \sqrt{\frac{1}{2}\,\left(\frac{$k1 + $k3}{$m1} + \frac{$k2 + $k3}{$m2}"
+           r"\right) - \sqrt{\frac{1}{4}\,\left(\frac{$k1 + $k3}{$m1} - \frac{$k2 + $k3}{$m2}"
+           r"\right)^2 + \frac{$k3^2}{$m1\,$m2}}}",
+           r"$omega_2 = \sqrt{\frac{1}{2}\,\left(\frac{$k1 + $k3}{$m1} + \frac{$k2 + $k3}{$m2}"
+           r"\right) + \sqrt{\frac{1}{4}\,\left(\frac{$k1 + $k3}{$m1} - \frac{$k2 + $k3}{$m2}"
+           r"\right)^2 + \frac{$k3^2}{$m1\,$m2}}}",
+           r"$f_1 = \frac{$omega_1}{2\pi}", r"$f_2 = \frac{$omega_2}{2\pi}"),
     reference="E4.15",
     example="dyncalc natural-frequency --scene coupled-blocks m1=1kg m2=2kg k1=100N/m "
             "k2=200N/m k3=50N/m",
@@ -91,6 +107,8 @@ register(Scene(
     compute="dyncalc.physics.rotating:pendulum_accelerating_support",
     equation="l phi'' + g sin(phi) + a0 cos(phi) = 0",
     formula="phi_0 = -atan(a0/g) (the bob trails behind); omega^2 = sqrt(g^2 + a0^2) / l",
+    latex=(r"$phi_0 = -\arctan\left(\frac{$a0}{$g}\right)",
+           r"$omega = \sqrt{\frac{\sqrt{$g^2 + $a0^2}}{$l}}"),
     reference="E6.5",
     example="dyncalc natural-frequency --scene pendulum-accelerating-support l=1m "
             "a0=3m/s^2",
@@ -110,6 +128,7 @@ register(Scene(
     compute="dyncalc.physics.rotating:pendulum_on_rotating_disk",
     equation="phi'' + (r/l) Omega^2 sin(phi) = 0 (phi from the radial direction)",
     formula="omega = sqrt(r/l) Omega",
+    latex=(r"$omega = \sqrt{\frac{$r}{$l}}\,$Omega",),
     reference="E6.8",
     example="dyncalc natural-frequency --scene pendulum-on-rotating-disk r=0.5m l=0.2m "
             "Omega=60rpm",
@@ -130,6 +149,12 @@ register(Scene(
     formula="Omega^2 < g/r: theta_eq = 0, omega^2 = g/r - Omega^2; Omega^2 > g/r: "
             "theta_eq = acos(g/(r Omega^2)) (and -theta_eq), omega^2 = Omega^2 - "
             "(g/(r Omega))^2; at Omega^2 = g/r omega = 0 (bifurcation)",
+    latex=(Formula(r"$omega = \sqrt{\frac{$g}{$r} - $Omega^2}",
+                   lambda v: v["Omega"] ** 2 * v["r"] <= v["g"]),
+           Formula(r"$theta_eq = \arccos\left(\frac{$g}{$r\,$Omega^2}\right)",
+                   lambda v: v["Omega"] ** 2 * v["r"] > v["g"]),
+           Formula(r"$omega = \sqrt{$Omega^2 - \left(\frac{$g}{$r\,$Omega}\right)^2}",
+                   lambda v: v["Omega"] ** 2 * v["r"] > v["g"])),
     reference="E6.11",
     example="dyncalc natural-frequency --scene bead-on-rotating-ring r=0.2m Omega=120rpm",
     example_result={"omega": "11.9452299518987473 rad/s", "f": "1.90114239321404878 Hz",
@@ -148,6 +173,9 @@ register(Scene(
     equation="m x'' + k x = k U0 cos(Omega t)",
     formula="omega^2 = k/m, Omega = 2 pi v0 / L, x_amp = U0 / |1 - Omega^2/omega^2|, "
             "v_crit = L sqrt(k/m) / (2 pi)",
+    latex=(r"$omega = \sqrt{\frac{$k}{$m}}", r"$Omega = \frac{2\pi\,$v0}{$L}",
+           r"$x_amp = \frac{$U0}{\left|1 - $Omega^2/$omega^2\right|}",
+           r"$v_crit = \frac{$L\,$omega}{2\pi}"),
     reference="E5.23",
     example="dyncalc natural-frequency --scene quarter-car k=40kN/m m=400kg L=10m U0=2cm "
             "v0=20m/s",

@@ -241,15 +241,46 @@ def _entry(name: str, value) -> Entry:
                  description=kind.description)
 
 
+#: Lines every scene gets for the results it has and does not derive itself.
+FAMILY_LATEX = (r"$f = \frac{$omega}{2\pi}", r"$T = \frac{1}{$f}",
+                r"$omega_d = $omega\,\sqrt{1 - $zeta^2}", r"$f_d = \frac{$omega_d}{2\pi}",
+                r"$T_d = \frac{1}{$f_d}")
+
+
 def _explain(scene: Scene, inputs: dict[str, Entry], results: dict[str, Entry],
              outcome) -> Explanation:
-    def shown(entry: Entry) -> str:
-        value = entry.value_in()
-        unit = f" {entry.unit}" if entry.unit else ""
-        return f"{entry.name} = {format_number(value, 6)}{unit}"
+    """The formula of ``scene`` in symbols and with these values (plain text and LaTeX), its
+    assumptions with their size at these inputs, and its textbook example."""
+    from ..explain import Term, render_formulas, symbol_latex, template_terms
 
-    substituted = [shown(e) for e in inputs.values()] + [shown(e) for e in results.values()]
+    symbols = {p.name: p.symbol for p in scene.params if p.symbol}
+    terms = template_terms([*inputs.values(), *results.values()], symbols)
+    values = {name: entry.si for name, entry in [*inputs.items(), *results.items()]
+              if not isinstance(entry.si, str)}
+    body = inputs.get("body")
+    if body is not None and scene.param("body") is not None:
+        kappa = float(scene.param("body").choices[body.si])
+        terms["kappa"] = Term(symbol_latex("kappa"), kappa)
+        values["kappa"] = kappa
+    values["method"] = outcome.method
+    latex, latex_substituted, substituted = render_formulas([*scene.latex, *FAMILY_LATEX],
+                                                            terms, values)
+    if not substituted:
+        substituted = [f"{e.name} = {format_number(e.value_in(), 6)}"
+                       + (f" {e.unit}" if e.unit else "") for e in results.values()]
+
+    assumptions = [*scene.assumptions, *outcome.assumptions]
+    assumptions += [text for size in scene.sizes if (text := size(values))]
+    zeta, omega, omega_d = (values.get(n) for n in ("zeta", "omega", "omega_d"))
+    if zeta and omega and omega_d:
+        assumptions.append(f"damping lowers the frequency: omega_d = omega sqrt(1 - zeta^2) is "
+                           f"{100 * (1 - omega_d / omega):.3g}% below omega at zeta = "
+                           f"{zeta:.3g}")
+    example = scene.example
+    if scene.example_result:
+        example += " gives " + ", ".join(f"{name} = {value}"
+                                         for name, value in scene.example_result.items())
     return Explanation(formula=[f"equation of motion: {scene.equation}", scene.formula],
-                       substituted=substituted,
-                       assumptions=[*scene.assumptions, *outcome.assumptions],
-                       reference=scene.reference)
+                       substituted=substituted, assumptions=assumptions,
+                       reference=scene.reference, latex=latex,
+                       latex_substituted=latex_substituted, example=example)
