@@ -46,7 +46,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError
+from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
 from .physics.numerics import sqrt_ratio_array
 from .physics.outcome import damped_arrays, periodic_arrays
 
@@ -764,7 +764,8 @@ class _Writer:
             self.out.write("\n".join(shown) + "\n")
         if messages:
             self.out.flush()
-            self.err.write("\n".join(m for _i, m in sorted(messages, key=lambda p: p[0]))
+            self.err.write("\n".join(one_line(m) for _i, m in sorted(messages,
+                                                                      key=lambda p: p[0]))
                            + "\n")
             self.err.flush()
         return failed, stopped
@@ -1025,7 +1026,7 @@ def _run(spec, stream, as_json, units, on_error, debug, out, err, fast) -> int:
             return EXIT_BAD_INPUT
     if reader.fatal:
         out.flush()
-        err.write(f"Error: {reader.fatal}\n")
+        err.write(f"Error: {one_line(reader.fatal)}\n")
         return EXIT_BAD_INPUT
     return EXIT_BAD_INPUT if failed else EXIT_OK
 

@@ -10,7 +10,7 @@ import json
 import math
 from typing import TYPE_CHECKING
 
-from ..errors import InputError
+from ..errors import InputError, one_line
 from ..result import Entry, Result, format_number
 
 if TYPE_CHECKING:
@@ -165,7 +165,7 @@ def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[
         lines.append("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
     if (inputs := _inputs_line(result, digits)):
         lines.append(inputs)
-    lines += [f"warning: {w}" for w in result.warnings]
+    lines += [f"warning: {one_line(w)}" for w in result.warnings]
     lines += [_check_line(c, digits) for c in checks]
     if explain:
         lines += _explanation_lines(result)
@@ -188,7 +188,7 @@ def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[C
     if (inputs := _inputs_line(result, digits)):
         console.print(Text(inputs, style="dim"))
     for w in result.warnings:
-        console.print(Text(f"warning: {w}", style="yellow"))
+        console.print(Text(f"warning: {one_line(w)}", style="yellow"))
     for c in checks:
         console.print(Text(_check_line(c, digits), style="green" if c.passed else "bold red"))
     if explain:
