@@ -288,6 +288,7 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         results["c"].exact = inputs["c"].exact
     if fit is not None:
         results["residual"] = _entry("residual", fit.residual)
+        exact_zeros |= {"residual", "delta_se"}  # 0 for exact peaks, never an underflow
         if fit.delta_se is not None:
             results["delta_se"] = _entry("delta_se", fit.delta_se)
     warnings = list(outcome.warnings) + (fit.warnings if fit is not None else [])
