@@ -66,12 +66,24 @@ def json_data(result: Result, units: dict[str, str], checks: list[Check],
         "results": _json_entries(result.results, units),
         "warnings": list(result.warnings),
     }
-    data.update(result.extra)
+    data.update(_finite(result.extra))
     if checks:
-        data["checks"] = [c.as_dict() for c in checks]
+        data["checks"] = _finite([c.as_dict() for c in checks])
     if explain and result.explanation is not None:
         data["explanation"] = result.explanation.as_dict()
     return data
+
+
+def _finite(value):
+    """``value`` with every NaN or infinite float, in lists and dicts too, as ``None`` (JSON
+    null): a check's relative difference beyond float64, an overflowed estimate."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(item) for item in value]
+    return value
 
 
 def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
