@@ -31,6 +31,12 @@ however long the file. A bad row is reported on stderr as ``Error: line N: ...``
 the file, the header being line 1); with ``--on-error stop`` (the default) the rows before it
 have been written and nothing after it is; with ``--on-error skip`` every bad row gets its own
 line and every good row is written. The exit status is 2 when any row failed.
+
+Malformed files: a column the command does not read is refused at the header (not passed
+through, so a mistyped optional parameter is never ignored silently); a line longer than
+:data:`MAX_LINE` characters, a line that is not UTF-8 and a row with the wrong number of cells
+are bad rows; a quote left open, text after a closing quote and an I/O error while reading end
+the run at their line, after the rows before it are written.
 """
 from __future__ import annotations
 
