@@ -1688,3 +1688,14 @@ def test_vector_whose_conversion_overflows(argv):
                           if argv[2].endswith("rev/s") else
                           ("--vr", "(1e+308, 0, 0) kilometer / second", "m/s"))
     assert out.stderr == f"Error: {label}: {shown} overflows float64 in {unit}\n"
+
+
+def test_earth_heading_whose_degrees_overflow():
+    """Bug 10 (second long run): ``--heading 2.62139e+307`` (radians) is finite, but in
+    degrees it overflows and ``math.fmod(inf, 360)`` raised ('internal error'). Reduced in
+    turns first, it is a whole number of turns: heading north, v_r = (0, 1, 0) m/s."""
+    out = run_cli(["coriolis", "--latitude", "45deg", "--heading", "2.62139e+307 rad",
+                   "--speed", "1 m/s", "--json"])
+    assert_contract(out)
+    assert out.exit_code == 0
+    assert json.loads(out.stdout)["results"]["v_r"]["value"] == [0.0, 1.0, 0.0]
