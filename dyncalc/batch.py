@@ -34,6 +34,12 @@ however long the file. A bad row is reported on stderr as ``Error: line N: ...``
 the file, the header being line 1); with ``--on-error stop`` (the default) the rows before it
 have been written and nothing after it is; with ``--on-error skip`` every bad row gets its own
 line and every good row is written. The exit status is 2 when any row failed.
+
+Malformed files: a column the command does not read is refused at the header (not passed
+through, so a mistyped optional parameter is never ignored silently); a line longer than
+:data:`MAX_LINE` characters, a line that is not UTF-8 and a row with the wrong number of cells
+are bad rows; a quote left open, text after a closing quote and an I/O error while reading end
+the run at their line, after the rows before it are written.
 """
 from __future__ import annotations
 
@@ -49,7 +55,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError
+from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
 from .physics.numerics import sqrt_ratio_array
 from .physics.outcome import damped_arrays, periodic_arrays
 
@@ -652,9 +658,11 @@ class _Sink:
 
 
 def _csv_lines(rows) -> list[str]:
-    """Each row as one CSV line (without the line end), quoted as ``csv.writer`` quotes."""
+    """Each row as one CSV line (without the line end), quoted as ``csv.writer`` quotes (the
+    writer quotes a cell holding a line break only if the line end has that character)."""
     lines: list[str] = []
-    csv.writer(_Sink(lines.append), lineterminator="").writerows(rows)
+    csv.writer(_Sink(lambda line: lines.append(line[:-2])),
+               lineterminator="\r\n").writerows(rows)
     return lines
 
 
@@ -772,7 +780,8 @@ class _Writer:
             self.out.write("\n".join(shown) + "\n")
         if messages:
             self.out.flush()
-            self.err.write("\n".join(m for _i, m in sorted(messages, key=lambda p: p[0]))
+            self.err.write("\n".join(one_line(m) for _i, m in sorted(messages,
+                                                                      key=lambda p: p[0]))
                            + "\n")
             self.err.flush()
         return failed, stopped
@@ -898,8 +907,25 @@ def open_source(source: str):
 #: ``str.splitlines`` knows but CSV does not.
 _NEEDS_CSV_RE = re.compile('["\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]')
 _NEEDS_CSV_ASCII = ('"', "\x0b", "\x0c", "\x1c", "\x1d", "\x1e")
-#: Bytes that were not UTF-8, kept by the ``surrogateescape`` decoding.
-_NOT_UTF8_RE = re.compile("[\udc80-\udcff]")
+#: Bytes that were not UTF-8, kept by the ``surrogateescape`` decoding; and ``_TOO_LONG``, the
+#: line that stands for a line longer than :data:`MAX_LINE` (a lone surrogate that decoding
+#: never produces).
+_NOT_UTF8_RE = re.compile("[\udc00\udc80-\udcff]")
+_TOO_LONG = "\udc00"
+#: Characters a line may hold; a longer one is refused without being held in memory.
+MAX_LINE = 100_000
+
+
+def _bounded_lines(stream, limit: int = MAX_LINE):
+    """The lines of ``stream``, each read ``limit + 1`` characters at most: a longer line is
+    skipped to its end and yields ``_TOO_LONG`` in its place (so the line numbers hold)."""
+    while line := stream.readline(limit + 1):
+        if len(line) <= limit or line.endswith(("\n", "\r")):
+            yield line
+            continue
+        while (rest := stream.readline(limit)) and not rest.endswith(("\n", "\r")):
+            pass
+        yield _TOO_LONG + "\n"
 
 
 class _Chunk:
@@ -911,10 +937,14 @@ class _Chunk:
 
     def __init__(self, numbers, *, lines=None, rows=None, suspect: bool = False):
         self.numbers, self.lines, self.rows = numbers, lines, rows
-        self.not_utf8: set[int] = set()
+        #: rows refused before reading their cells: index -> why
+        self.not_utf8: dict[int, str] = {}
         if suspect:
             records = lines if lines is not None else map(",".join, rows)
-            self.not_utf8 = {i for i, text in enumerate(records) if _NOT_UTF8_RE.search(text)}
+            self.not_utf8 = {
+                i: (f"the line is longer than {MAX_LINE} characters" if _TOO_LONG in text
+                    else "the line is not UTF-8 text")
+                for i, text in enumerate(records) if _NOT_UTF8_RE.search(text)}
 
     def __len__(self) -> int:
         return len(self.numbers)
@@ -949,11 +979,13 @@ class _Reader:
     """The CSV's records a chunk at a time, with the line each starts on (the header is line
     1). A chunk without quotes is split at commas directly (what the csv module does, faster);
     one with quotes goes through the csv module, which reads on past the chunk's lines to
-    finish a quoted cell that holds line breaks. A record the csv module cannot read ends the
-    reading, with ``fatal`` set to its message."""
+    finish a quoted cell that holds line breaks. A record the csv module cannot read, or an
+    I/O error (a failing disk, a broken pipe), ends the reading, with ``fatal`` set to its
+    message; the records read before it are still handed out. Lines longer than
+    :data:`MAX_LINE` are refused one by one (:func:`_bounded_lines`)."""
 
     def __init__(self, stream):
-        self.stream = stream
+        self.stream = _bounded_lines(stream)
         self.last = 0      # lines read so far
         self.fatal: str | None = None
         self.done = False
@@ -961,7 +993,11 @@ class _Reader:
     def chunk(self, size: int) -> _Chunk | None:
         if self.done:
             return None
-        raw = list(itertools.islice(self.stream, size))
+        raw: list[str] = []
+        try:
+            raw.extend(itertools.islice(self.stream, size))  # keeps the lines read before
+        except OSError as exc:  # a disk or pipe error: the lines before it are computed
+            self._failed(self.last + len(raw) + 1, exc)
         if len(raw) < size:
             self.done = True
         if not raw:
@@ -975,7 +1011,8 @@ class _Reader:
             lines = text.splitlines()
             self.last += len(lines)
             return _Chunk(list(range(start, start + len(lines))), lines=lines, suspect=suspect)
-        reader = csv.reader(itertools.chain(raw, self.stream))
+        # strict: a quote left open at the end, or text after a closing quote, is refused
+        reader = csv.reader(itertools.chain(raw, self.stream), strict=True)
         rows, numbers = [], []
         try:
             while reader.line_num < len(raw):
@@ -988,10 +1025,16 @@ class _Reader:
         except csv.Error as exc:
             self.fatal = f"line {self.last + reader.line_num}: cannot read the CSV: {exc}"
             self.done = True
+        except OSError as exc:
+            self._failed(self.last + reader.line_num + 1, exc)
         if reader.line_num > len(raw) and not self.fatal:
             self.done = False  # a quoted cell ran on past the chunk's lines: more may follow
         self.last += reader.line_num
         return _Chunk(numbers, rows=rows, suspect=suspect) if rows else None
+
+    def _failed(self, line: int, exc: OSError) -> None:
+        self.fatal = f"line {line}: reading the file failed: {exc.strerror or exc}"
+        self.done = True
 
 
 def run_batch(spec: RowSpec, source: str, *, as_json: bool = False,
@@ -1028,6 +1071,8 @@ def _run(spec, stream, as_json, units, on_error, debug, out, err, fast) -> int:
                 raise InputError(reader.fatal)
             return EXIT_OK  # no header: nothing to do, nothing printed
         row = chunk.row(0)
+        if chunk.not_utf8:  # a header line that is not UTF-8 or too long
+            raise InputError(f"line {chunk.numbers[0]}: {chunk.not_utf8[0]}")
         if "".join(row).strip():
             header = (chunk.numbers[0], row)
     columns = read_header(header[0], header[1], spec)
@@ -1042,7 +1087,7 @@ def _run(spec, stream, as_json, units, on_error, debug, out, err, fast) -> int:
             return EXIT_BAD_INPUT
     if reader.fatal:
         out.flush()
-        err.write(f"Error: {reader.fatal}\n")
+        err.write(f"Error: {one_line(reader.fatal)}\n")
         return EXIT_BAD_INPUT
     return EXIT_BAD_INPUT if failed else EXIT_OK
 
@@ -1076,7 +1121,7 @@ def _compute(spec, columns, chunk, on_error, debug, fast, writer, cache) -> tupl
             outcomes[i] = _BLANK
             continue
         if i in bad:
-            outcomes[i] = ("error", "the line is not UTF-8 text")
+            outcomes[i] = ("error", bad[i])
         elif widths[i] != width:
             outcomes[i] = ("error", (f"{widths[i]} cell{'s' if widths[i] != 1 else ''} where "
                                      f"the header has {width} "

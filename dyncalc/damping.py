@@ -289,6 +289,7 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         results["c"].exact = inputs["c"].exact
     if fit is not None:
         results["residual"] = _entry("residual", fit.residual)
+        exact_zeros |= {"residual", "delta_se"}  # 0 for exact peaks, never an underflow
         if fit.delta_se is not None:
             results["delta_se"] = _entry("delta_se", fit.delta_se)
     warnings = list(outcome.warnings) + (fit.warnings if fit is not None else [])
@@ -581,15 +582,22 @@ def _draw_response(fig, result: Result) -> None:
         span = (8.0 if zeta == 1.0 else math.log(100.0) / slow)
     tau = np.linspace(0.0, span, 2000)
     x = free_response(min(zeta, 1.0) if oscillates else zeta, tau)
+    why = "no natural frequency given"
     if omega is not None:
-        t, xlabel = tau / omega, "time t (s)"
-    elif oscillates:
-        t, xlabel = tau / cycle, "t / T_d (damped cycles; no natural frequency given)"
+        with np.errstate(over="ignore", under="ignore"):
+            t, xlabel = tau / omega, "time t (s)"
+        if not 1e-300 < t[-1] < 1e300:  # seconds beyond float64 (omega = 3e-162 rad/s)
+            result.warnings.append(f"--plot: the decay lasts {span:.3g} / omega with omega "
+                                   f"= {omega:.3g} rad/s, a time beyond float64, so the "
+                                   "plot's time axis is dimensionless")
+            omega, why = None, "seconds beyond float64"
     else:
-        t, xlabel = tau, "ω t (dimensionless time; no natural frequency given)"
-    if omega is None:
         result.warnings.append("--plot: no natural frequency given (--omega, or --k and --m), "
                                "so the plot's time axis is dimensionless")
+    if omega is None and oscillates:
+        t, xlabel = tau / cycle, f"t / T_d (damped cycles; {why})"
+    elif omega is None:
+        t, xlabel = tau, f"ω t (dimensionless time; {why})"
     ax.plot(t, x, color="tab:blue", label="x(t) / x(0), released from rest")
     if oscillates:
         env = np.exp(-zeta * tau) / s

@@ -214,9 +214,11 @@ def _run_ode(args, onset, values, rtol, closed_form_s):
         if name not in values:
             continue
         new[name] = got[name]
+        if not (math.isfinite(values[name]) and math.isfinite(got[name])):
+            continue  # an overflowed result (null, with its warning) has no error estimate
         denominator = max(abs(values[name]), scales[name])
         errors[name] = abs(got[name] - values[name]) / denominator if denominator else 0.0
-    worst = max(errors.values())
+    worst = max(errors.values(), default=0.0)
     extra = {"error_estimate": worst, "ode_error": errors,
              "timing": {"closed_form_s": closed_form_s, "ode_s": ode_s},
              "ode": {"solver": ode.solver, "rtol": ode.rtol, "atol": ode.atol,

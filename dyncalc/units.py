@@ -685,7 +685,7 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
         if "cycle" in classes:
             raise InputError(f"{label} is an angular rate; give it in rad/s, deg/s, rpm or "
                              f"rev/s, not Hz (a frequency in cycles)")
-        return quantity.to(dim.si.replace("^", "**"))
+        return _convert(quantity, dim.si.replace("^", "**"), label)
     if dim.kind == "cycle-rate":
         if "angle" in classes:
             raise InputError(f"{label} is a frequency in cycles; give it in Hz, 1/s, 1/min or "
@@ -694,16 +694,31 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
             raise InputError(f"{label}: a sum of revolutions and Hz or 1/s is ambiguous; "
                              "give the frequency in one kind of unit")
         if "turn" in classes:
-            return ureg.Quantity(quantity.to("turn/s").magnitude, "Hz")
-        return quantity.to("Hz")
+            return ureg.Quantity(_convert(quantity, "turn/s", label).magnitude, "Hz")
+        return _convert(quantity, "Hz", label)
     return quantity
+
+
+def _convert(quantity, unit: str, label: str):
+    """``quantity.to(unit)``, refusing a conversion that overflows float64 (numpy's overflow
+    warning silenced: the refusal says it)."""
+    import numpy as np
+
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = quantity.to(unit)
+    if not np.all(np.isfinite(out.magnitude)) and np.all(np.isfinite(quantity.magnitude)):
+        raise InputError(f"{label}: {format_quantity(quantity)} overflows float64 in "
+                         f"{unit.replace('**', '^')}")
+    return out
 
 
 def to_si(quantity, dim: Dim, label: str = "value"):
     """The magnitude of ``quantity`` in ``dim.si`` (float or array); refuses an overflow."""
     q = _normalise(quantity, dim, label)
-    mag = q.to(dim.si.replace("^", "**")).magnitude if dim.si else q.to("").magnitude
     import numpy as np
+
+    with np.errstate(over="ignore", invalid="ignore"):
+        mag = q.to(dim.si.replace("^", "**")).magnitude if dim.si else q.to("").magnitude
 
     if not np.all(np.isfinite(mag)) and np.all(np.isfinite(q.magnitude)):
         raise InputError(f"{label}: {format_quantity(quantity)} overflows float64 in {dim.si}")

@@ -1,4 +1,4 @@
-"""The long fuzz run for maintainers (issue 9): the strategies of ``tools/pending/test_fuzz.py``, many
+"""The long fuzz run for maintainers (issue 9): the strategies of ``tests/test_fuzz.py``, many
 more cases, and a table of what happened instead of a stop at the first broken rule.
 
     python tools/fuzz_long.py --examples 10000                 # every command
@@ -7,7 +7,7 @@ more cases, and a table of what happened instead of a stop at the first broken r
     python tools/fuzz_long.py --ci                             # count the CI suite's cases
 
 Each case runs ``dyncalc ARGS`` in-process and is judged by the same rules as the CI suite
-(``judge`` in tools/pending/test_fuzz.py). The run prints, per command: the cases, how many ended with
+(``judge`` in tests/test_fuzz.py). The run prints, per command: the cases, how many ended with
 exit 0, 1 and 2, how many broke a rule, and the slowest case with its time; then the refusals
 (exit 2) by kind of message, and for every broken rule the first few argument lists that broke
 it. The exit status is 1 when any case broke a rule, else 0. ``--seed`` makes a run
@@ -24,7 +24,6 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools" / "pending"))
 sys.path.insert(0, str(ROOT / "tests"))
 
 from hypothesis import HealthCheck, Phase, seed  # noqa: E402
@@ -211,7 +210,7 @@ def main(argv=None) -> int:
                              "default: every command")
     parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     parser.add_argument("--ci", action="store_true",
-                        help="run the CI suite's own cases (tools/pending/test_fuzz.py budget and "
+                        help="run the CI suite's own cases (tests/test_fuzz.py budget and "
                              "draw) through to the end and count them; ignores --examples "
                              "and --seed")
     parser.add_argument("--quiet", action="store_true", help="no progress on stderr")
@@ -226,7 +225,7 @@ def main(argv=None) -> int:
                   file=sys.stderr, flush=True)
         tallies.append(run_command(command, None if args.ci else args.examples, args.seed,
                                    not args.quiet))
-    title = ("the CI suite's cases (tools/pending/test_fuzz.py)" if args.ci else
+    title = ("the CI suite's cases (tests/test_fuzz.py)" if args.ci else
              f"{args.examples} examples per command, seed {args.seed}")
     print(report(tallies, time.perf_counter() - started, title))
     return 1 if any(t.broken for t in tallies) else 0

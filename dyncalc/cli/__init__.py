@@ -14,13 +14,9 @@ import sys
 import click
 
 from .._version import __version__
-from ..errors import EXIT_BAD_INPUT, InputError
+from ..errors import EXIT_BAD_INPUT, InputError, one_line as _one_line
 
 __all__ = ["cli", "main"]
-
-
-def _one_line(text: str) -> str:
-    return " ".join(str(text).split())
 
 
 #: Command name -> the module under ``dyncalc.cli`` that defines it (in its ``COMMANDS``).
@@ -103,7 +99,8 @@ class DyncalcGroup(click.Group):
         except click.ClickException as exc:
             command = _command_name(args)
             hint = f"; see 'dyncalc {command} --help'" if command else "; see 'dyncalc --help'"
-            click.echo(f"Error: {_one_line(exc.format_message()).rstrip('.')}{hint}", err=True)
+            shown = _one_line(exc.format_message()).rstrip(".")
+            click.echo(f"Error: {shown}{_one_line(hint)}", err=True)
             code = EXIT_BAD_INPUT
         except InputError as exc:
             click.echo(f"Error: {_one_line(exc)}", err=True)

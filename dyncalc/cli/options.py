@@ -14,7 +14,7 @@ import sys
 
 import click
 
-from ..errors import EXIT_CHECK_FAILED, EXIT_OK, InputError
+from ..errors import EXIT_CHECK_FAILED, EXIT_OK, InputError, one_line
 
 __all__ = ["Output", "output_options", "complete_scene"]
 
@@ -83,7 +83,7 @@ class Output:
         if self.value is not None:
             text = render.bare_value(result, self.value, units)
             for w in result.warnings:
-                click.echo(f"warning: {w}", err=True)
+                click.echo(f"warning: {one_line(w)}", err=True)
             for c in checks:
                 if not c.passed:
                     click.echo(render._check_line(c, self.digits), err=True)

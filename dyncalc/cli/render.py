@@ -10,7 +10,7 @@ import json
 import math
 from typing import TYPE_CHECKING
 
-from ..errors import InputError
+from ..errors import InputError, one_line
 from ..result import Entry, Result, format_number
 
 if TYPE_CHECKING:
@@ -76,9 +76,9 @@ def json_data(result: Result, units: dict[str, str], checks: list[Check],
         "results": _json_entries(result.results, units),
         "warnings": list(result.warnings),
     }
-    data.update(result.extra)
+    data.update(_finite(result.extra))
     if checks:
-        data["checks"] = [c.as_dict() for c in checks]
+        data["checks"] = _finite([c.as_dict() for c in checks])
     if explain and result.explanation is not None:
         data["explanation"] = result.explanation.as_dict()
         fmt = _explain_format(explain)
@@ -87,6 +87,18 @@ def json_data(result: Result, units: dict[str, str], checks: list[Check],
 
             data["explanation"]["rendered"] = render_explanation(result.explanation, fmt)
     return data
+
+
+def _finite(value):
+    """``value`` with every NaN or infinite float, in lists and dicts too, as ``None`` (JSON
+    null): a check's relative difference beyond float64, an overflowed estimate."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(item) for item in value]
+    return value
 
 
 def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
@@ -205,7 +217,7 @@ def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[
         lines.append("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
     if (inputs := _inputs_line(result, digits)):
         lines.append(inputs)
-    lines += [f"warning: {w}" for w in result.warnings]
+    lines += [f"warning: {one_line(w)}" for w in result.warnings]
     lines += [_check_line(c, digits) for c in checks]
     if explain:
         lines += _explanation_lines(result, explain)
@@ -228,7 +240,7 @@ def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[C
     if (inputs := _inputs_line(result, digits)):
         console.print(Text(inputs, style="dim"))
     for w in result.warnings:
-        console.print(Text(f"warning: {w}", style="yellow"))
+        console.print(Text(f"warning: {one_line(w)}", style="yellow"))
     for c in checks:
         console.print(Text(_check_line(c, digits), style="green" if c.passed else "bold red"))
     if explain:

@@ -35,6 +35,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..errors import PhysicsError
+
 __all__ = ["DecayFit", "fit_decrement", "t_critical", "FIT_METHODS", "R2_LIMIT",
            "CURVATURE_LIMIT"]
 
@@ -52,6 +54,8 @@ CURVATURE_LIMIT = 0.10
 _T_999 = (636.6192, 31.5991, 12.9240, 8.6103, 6.8688, 5.9588, 5.4079, 5.0413, 4.7809, 4.5869,
           4.4370, 4.3178, 4.2208, 4.1405, 4.0728, 4.0150, 3.9651, 3.9216, 3.8834, 3.8495,
           3.8193, 3.7921, 3.7676, 3.7454, 3.7251, 3.7066, 3.6896, 3.6739, 3.6594, 3.6460)
+
+_TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
 
 #: The normal 0.9995 quantile.
 _Z_999 = 3.2905267314919255
@@ -178,7 +182,14 @@ def fit_decrement(peaks, method: str = "log-linear", rtol: float = 1e-9) -> Deca
     # ln of the peaks scaled exactly by the power of two of the first: |y| stays small, so
     # its rounding is a few 1e-17 absolute, not half an ulp of ln(1e-300) = -690
     shift = math.frexp(float(x[0]))[1]
-    y = np.log(np.ldexp(x, -shift))
+    scaled = np.ldexp(x, -shift)
+    if not np.all((scaled >= _TINY) & (scaled <= _HUGE)):
+        # peaks beyond float range of the first (1e-300 after 1e300): the scaled value would
+        # underflow or overflow, so take ln from mantissa and exponent apart
+        mantissa, exponent = np.frexp(x)
+        y = np.log(mantissa) + (exponent - shift) * math.log(2.0)
+    else:
+        y = np.log(scaled)
     mean, slope, resid, sxx, u, dev = _log_line(y)
     sst = math.fsum((dev * dev).tolist())
     ssr = math.fsum((resid * resid).tolist())
@@ -272,6 +283,10 @@ def _nonlinear(x: np.ndarray, delta0: float, x00: float, rtol: float):
     n = x.size
     scale = float(np.max(x))
     z = x / scale
+    if float(np.min(z)) < _TINY:
+        raise PhysicsError("--method nonlinear: the peaks span more than float64's range (the "
+                           "smallest is below 2.2e-308 of the largest), so their absolute "
+                           "errors cannot be fitted; use --method log-linear")
     i = np.arange(n, dtype=float)
 
     def residuals(p):

@@ -360,10 +360,15 @@ def cos_sin_degrees(degrees: float) -> tuple[float, float]:
 
 
 def _degrees(angle) -> float:
-    """An angle (pint quantity, or a float in radians) in degrees."""
+    """An angle (pint quantity, or a float in radians) in degrees; one whose degrees leave
+    float64 (1e307 rad) is first reduced to within a turn (``fmod`` of its turns is exact)."""
     if hasattr(angle, "to"):
-        return float(angle.to("degree").magnitude)
-    return math.degrees(float(angle))
+        degrees = float(angle.to("degree").magnitude)
+        if math.isinf(degrees):
+            degrees = 360.0 * math.fmod(float(angle.to("turn").magnitude), 1.0)
+        return degrees
+    degrees = math.degrees(float(angle))
+    return math.degrees(math.fmod(float(angle), math.tau)) if math.isinf(degrees) else degrees
 
 
 def earth_angular_velocity(latitude, rate=EARTH_RATE) -> np.ndarray:

@@ -188,7 +188,7 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
     pull = Fraction(r_) * Fraction(spin) ** 2   # r Omega^2, exact
     excess = pull - Fraction(g_)                # r Omega^2 - g, exact; its sign is the regime
     warnings = []
-    if abs(excess) <= BIFURCATION_ULPS * pull:
+    if abs(excess) <= Fraction(BIFURCATION_ULPS) * pull:  # a float * Fraction may overflow
         values = periodic(0.0)
         values["theta_eq"] = Q_(0.0, "rad")
         warnings.append(f"Omega is at the bifurcation Omega^2 = g/r (Omega = {critical:.6g} "
@@ -207,7 +207,7 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
         omega = critical * math.sqrt(float(-excess / Fraction(g_)))  # 1 - r Omega^2/g
     values = periodic(omega)
     values["theta_eq"] = Q_(theta, "rad")
-    if abs(excess) < NEAR_BIFURCATION * pull:
+    if abs(excess) < Fraction(NEAR_BIFURCATION) * pull:
         side = "above" if excess > 0 else "below"
         warnings.append(f"Omega is {100 * abs(spin / critical - 1):.2g}% {side} the "
                         f"bifurcation speed sqrt(g/r) = {critical:.6g} rad/s: the stiffness "
@@ -303,7 +303,7 @@ def quarter_car(k, m, L, U0, v0) -> Outcome:
     out = Outcome(values, model="linear", method="closed-form",
                   assumptions=["undamped linear suspension; the wheel follows the road "
                                "(no tyre stiffness, no loss of contact); steady state"])
-    gain = 1.0 / abs(float(gap))
+    gain = float(1 / abs(gap))  # |gap| may be beyond float64; its inverse is not
     if gain > LARGE_AMPLIFICATION:
         out.warnings.append(f"v0 = {v_:.6g} m/s is within {100 * abs(v_ / v_crit - 1):.2g}% "
                             f"of the critical speed v_crit = {v_crit:.6g} m/s: the undamped "

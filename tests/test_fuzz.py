@@ -1495,10 +1495,27 @@ def test_two_peaks_spanning_more_than_float_range_give_the_right_zeta():
     dyncalc answered zeta = nan with exit 0 (and RuntimeWarnings on stderr)."""
     out = run_cli(["damping-ratio", "--amplitudes", "1e300,1e-300", "--value", "zeta"])
     assert_contract(out)
-    if out.exit_code == 0:
-        delta = 600 * math.log(10)
-        assert float(out.stdout) == pytest.approx(delta / math.hypot(2 * math.pi, delta),
-                                                  rel=1e-12)
+    assert (out.exit_code, out.stderr) == (0, "")
+    delta = 600 * math.log(10)
+    assert float(out.stdout) == pytest.approx(delta / math.hypot(2 * math.pi, delta), rel=1e-12)
+
+
+def test_nonlinear_fit_refuses_peaks_beyond_float_range():
+    """The absolute-error fit cannot see a peak 1e-600 of the largest: refused, with the way
+    out (the log-linear fit, which answers: see above)."""
+    assert refusal(["damping-ratio", "--amplitudes", "1e300,1e-300,1", "--method",
+                    "nonlinear"]) == (
+        "Error: --method nonlinear: the peaks span more than float64's range (the smallest is "
+        "below 2.2e-308 of the largest), so their absolute errors cannot be fitted; use "
+        "--method log-linear")
+
+
+@pytest.mark.parametrize("peaks", ["2,1", "8,4,2,1"])
+def test_an_exact_fit_has_no_underflow_warning(peaks):
+    """Two peaks, or peaks exactly geometric, fit with residual 0: exact, not an underflow."""
+    out = run_cli(["damping-ratio", "--amplitudes", peaks])
+    assert_contract(out)
+    assert out.exit_code == 0 and "warning" not in out.stdout + out.stderr, out.describe()
 
 
 @pytest.mark.parametrize("argv", [
@@ -1512,6 +1529,27 @@ def test_error_line_quotes_control_characters_safely(argv):
     ``--value <name>``); on a terminal click passes the escape sequence through."""
     out = run_cli(argv)
     assert_contract(out)
+
+
+def test_error_line_shows_control_characters_as_escapes():
+    """Bug 1's fix: the label keeps the user's text, with each unsafe character escaped."""
+    assert refusal(["spring-series", "\x1b[31m5 N/m", "3 N/m"]) == (
+        "Error: element k1 (\\u001b[31m5 N/m): cannot read '\\u001b[31m5 N/m': it holds an "
+        "invisible or control character U+001B")
+    assert refusal(["natural-frequency", "--k", "1", "--m", "1", "--value", "x\u2028\u202ey"]) == (
+        "Error: --value x\\u2028\\u202ey: there is no result named 'x\\u2028\\u202ey'; the "
+        "results are omega, f, T")
+
+
+def test_one_line_escapes_every_unsafe_character():
+    from dyncalc.errors import one_line
+
+    assert one_line("a  b\n c") == "a b c"
+    assert one_line("\x00\t\r\x1b\x7f\x85\x9b\u00a0\u200b\u202e\u2066\u2028\u2029\ufeff") == (
+        "\\u0000\\u0009\\u000d\\u001b\\u007f\\u0085\\u009b\\u00a0\\u200b\\u202e\\u2066"
+        "\\u2028\\u2029\\ufeff")
+    assert one_line("\U000e0001 \U0010fffd") == "\\U000e0001 \\U0010fffd"
+    assert one_line("µm² Ω é 5 N/m [bold]") == "µm² Ω é 5 N/m [bold]"
 
 
 @pytest.mark.parametrize("argv", [
@@ -1556,6 +1594,29 @@ def test_coupled_blocks_with_extreme_masses(argv):
     numpy's RuntimeWarning on stderr)."""
     out = run_cli(argv)
     assert_contract(out)
+
+
+def test_coupled_blocks_with_a_subnormal_mass_answers_right():
+    """m1 = 1e-320 kg: (k1 + k3)/m1 = 2e320 is beyond float64, omega_2 = 1.41e160 rad/s is
+    not. Block 1 follows block 2 statically in the slow mode (x1 = x2/2) and moves alone in
+    the fast one (mpmath reference from the float inputs)."""
+    import mpmath as mp
+
+    out = run_cli(["natural-frequency", "--scene", "coupled-blocks", "k1=1", "k2=1", "k3=1",
+                   "m1=1e-320", "m2=1", "--json"])
+    assert_contract(out)
+    data = json.loads(out.stdout)
+    assert data["warnings"] == []
+    results = {name: entry["value"] for name, entry in data["results"].items()}
+    with mp.workdps(60):
+        m1 = mp.mpf(1e-320)
+        a, d, b2 = 2 / m1, mp.mpf(2), 1 / m1
+        lam2 = (a + d) / 2 + mp.sqrt(((a - d) / 2) ** 2 + b2)
+        lam1 = 3 / m1 / lam2
+        assert results["omega_1"] == pytest.approx(float(mp.sqrt(lam1)), rel=1e-15)
+        assert results["omega_2"] == pytest.approx(float(mp.sqrt(lam2)), rel=1e-15)
+    assert results["mode_1"] == pytest.approx([1 / math.sqrt(5), 2 / math.sqrt(5)], rel=1e-15)
+    assert results["mode_2"][0] == 1.0 and -1e-320 < results["mode_2"][1] < 0
 
 
 def test_coupled_blocks_frequencies_do_not_underflow_on_the_way():
@@ -1606,6 +1667,10 @@ def test_plot_of_an_overdamped_decay_whose_time_axis_overflows():
     out = run_cli(["damping-ratio", "--c", "1", "--k", "4.941e-324", "--m", "0.5", "--plot",
                    str(PLOT_DIR / "overdamped.png"), "--value", "Q"])
     assert_contract(out)
+    assert out.exit_code == 0
+    assert out.stderr.splitlines()[-1] == (
+        "warning: --plot: the decay lasts 2.93e+162 / omega with omega = 3.14e-162 rad/s, a "
+        "time beyond float64, so the plot's time axis is dimensionless")
 
 
 @pytest.mark.parametrize("argv", [
@@ -1619,3 +1684,18 @@ def test_vector_whose_conversion_overflows(argv):
     out = run_cli(argv)
     assert_contract(out)
     assert out.exit_code == 2
+    label, shown, unit = (("--omega", "(1e+308, 1, 2) turn / second", "rad/s")
+                          if argv[2].endswith("rev/s") else
+                          ("--vr", "(1e+308, 0, 0) kilometer / second", "m/s"))
+    assert out.stderr == f"Error: {label}: {shown} overflows float64 in {unit}\n"
+
+
+def test_earth_heading_whose_degrees_overflow():
+    """Bug 10 (second long run): ``--heading 2.62139e+307`` (radians) is finite, but in
+    degrees it overflows and ``math.fmod(inf, 360)`` raised ('internal error'). Reduced in
+    turns first, it is a whole number of turns: heading north, v_r = (0, 1, 0) m/s."""
+    out = run_cli(["coriolis", "--latitude", "45deg", "--heading", "2.62139e+307 rad",
+                   "--speed", "1 m/s", "--json"])
+    assert_contract(out)
+    assert out.exit_code == 0
+    assert json.loads(out.stdout)["results"]["v_r"]["value"] == [0.0, 1.0, 0.0]
