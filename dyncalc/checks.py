@@ -100,28 +100,41 @@ def slips(result: Result, name: str) -> list[tuple[str, float]]:
     m^(1/2)), the decrement per cycle for the one per radian (a factor 2 pi, or delta given as
     zeta), and series for parallel (the slips the command itself computed,
     :attr:`Result.slips`)."""
-    value = result.results[name].si
+    entry = result.results[name]
+    value = entry.si
     out: list[tuple[str, float]] = []
+    kind = entry.dim.kind if entry.dim is not None else ""
     family = _FAMILY_RE.match(name)
-    if family:
-        stem, suffix = family.group(1), family.group(2) or ""
-        omega, f = f"omega{suffix}", f"f{suffix}"
-        if stem == "f":
-            out.append((f"that is {omega} in rad/s, not {name} in Hz: {name} = {omega} / 2 pi",
-                        value * TWO_PI))
-        elif stem == "omega":
-            out.append((f"that is {f} in Hz, not {name} in rad/s: {name} = 2 pi {f}",
-                        value / TWO_PI))
+    stem, suffix = (family.group(1), family.group(2) or "") if family else ("", "")
+    omega, f = f"omega{suffix}", f"f{suffix}"
+    named = family and omega in result.results and f in result.results
+    if kind == "cycle-rate" and named:
+        out.append((f"that is {omega} in rad/s, not {name} in Hz: {name} = {omega} / 2 pi",
+                    value * TWO_PI))
+    elif kind == "angular-rate" and named:
+        out.append((f"that is {f} in Hz, not {name} in rad/s: {name} = 2 pi {f}",
+                    value / TWO_PI))
+    elif kind == "cycle-rate":
+        out.append((f"that is the rate in rad/s, not {name} in Hz (cycles): a factor 2 pi",
+                    value * TWO_PI))
+    elif kind == "angular-rate":
+        out.append((f"that is the rate in Hz (cycles), not {name} in rad/s: a factor 2 pi",
+                    value / TWO_PI))
+    elif stem == "T" and named:
+        out.append((f"that is 1/{omega}: the period is {name} = 2 pi / {omega}",
+                    value / TWO_PI))
+        out.append((f"that is 2 pi/{f}: the period is {name} = 1 / {f}", value * TWO_PI))
+    other = f"{stem}_d" if family and suffix == "" else stem if suffix == "_d" else None
+    if other is not None and other in result.results:
+        what = "period" if stem == "T" else "frequency"
+        if suffix == "":
+            relation = "/" if stem == "T" else ""
+            out.append((f"that is the damped {what} {other}, not {name} ({other} = {name} "
+                        f"{relation + ' ' if relation else ''}sqrt(1 - zeta^2))",
+                        result.results[other].si))
         else:
-            out.append((f"that is 1/{omega}: the period is {name} = 2 pi / {omega}",
-                        value / TWO_PI))
-            out.append((f"that is 2 pi/{f}: the period is {name} = 1 / {f}", value * TWO_PI))
-        other = f"{stem}_d" if suffix == "" else stem if suffix == "_d" else None
-        if other is not None and other in result.results:
-            what = ("the damped frequency " if suffix == "" else "the undamped natural ")
-            out.append((f"that is {what}{other}, not {name}" + (
-                f" ({other} = {name} sqrt(1 - zeta^2))" if suffix == "" else ""),
-                result.results[other].si))
+            out.append((f"that is the undamped natural {what} {other}, not {name}",
+                        result.results[other].si))
     if name == "zeta" and "delta" in result.results:
         out.append(("that is the logarithmic decrement per cycle (delta); zeta is about "
                     "delta / 2 pi (exactly delta / sqrt(4 pi^2 + delta^2))",

@@ -408,6 +408,27 @@ def _explain(formula, inputs, results, reference, fit, form="") -> Explanation:
 
 # --- scenes with a damper --------------------------------------------------------------------
 
+def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
+                       strict: bool) -> None:
+    """``delta=`` or ``Q=`` given to solve a damping scene for one of its parameters: the
+    damping ratio they mean (``zeta = delta / sqrt(4 pi^2 + delta^2)``, ``zeta = 1/(2Q)``)
+    becomes the ``zeta=`` target the scene solves from (:mod:`dyncalc.scenes.inverse`)."""
+    from .physics.damping import zeta_from_decrement
+
+    given = [n for n in ("delta", "Q") if n in texts and scene.param(n) is None]
+    if not given:
+        return
+    if len(given) > 1 or "zeta" in texts:
+        raise InputError("give one of zeta=, delta= and Q= to solve from")
+    name = given[0]
+    text = texts.pop(name)
+    label = labels.pop(name, f"{name}=").rstrip("=")
+    value = parse_quantity(text, DIMENSIONLESS, label=label, strict=strict,
+                           constraint="positive").si
+    zeta = zeta_from_decrement(value) if name == "delta" else 0.5 / value
+    texts["zeta"], labels["zeta"] = repr(zeta), f"zeta (from {name})="
+
+
 def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
     from .checks import split_assignment
     from .physics.damping import damping_from_zeta
@@ -430,6 +451,7 @@ def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
         if key in texts:
             raise InputError(f"{key} is given twice ({labels[key]} and {key}=)")
         texts[key], labels[key] = text, f"{key}="
+    _decrement_as_zeta(scene, texts, labels, strict)
     result = run_scene(scene, texts, labels=labels, method=method, rtol=rtol, strict=strict,
                        command="damping-ratio")
     zeta = result.results["zeta"].si

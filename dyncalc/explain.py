@@ -331,7 +331,7 @@ def render_formulas(templates, terms: dict[str, Term], si: dict[str, Any] | None
         names = _names(formula.template)
         if any(n not in terms or terms[n].value is None for n in names):
             continue
-        if formula.when is not None and not formula.when(si or {}):
+        if formula.when is not None and not _holds(formula.when, si or {}):
             continue
         lhs, rhs = _split(formula.template)
         if _PLACEHOLDER.fullmatch(lhs.strip()) is None:
@@ -369,3 +369,11 @@ def template_terms(entries, symbols: dict[str, str] | None = None) -> dict[str, 
         terms[entry.name] = Term(symbols.get(entry.name, symbol_latex(entry.name)),
                                  float(value), entry.unit)
     return terms
+
+
+def _holds(when, si: dict) -> bool:
+    """``when(si)``; a predicate that cannot be evaluated at these values does not hold."""
+    try:
+        return bool(when(si))
+    except (ArithmeticError, KeyError, TypeError, ValueError):
+        return False

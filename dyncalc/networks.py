@@ -250,6 +250,7 @@ def _resolve_shared(root, shared: dict[str, str], strict: bool) -> None:
         if not isinstance(leaf, Element):
             continue
         kind = leaf.kind
+        own = set(leaf.texts)  # the rest come from the shared NAME=QUANTITY words
         for pname in kind.required:
             if pname not in leaf.texts:
                 if pname not in shared:
@@ -285,8 +286,9 @@ def _resolve_shared(root, shared: dict[str, str], strict: bool) -> None:
         for pname, ptext in leaf.texts.items():
             dim = kind.params[pname]
             constraint = "positive"
-            leaf.parsed[pname] = parse_quantity(ptext, dim, label=f"{pname} of {leaf.name}",
-                                                strict=strict, constraint=constraint)
+            leaf.parsed[pname] = parse_quantity(
+                ptext, dim, label=f"{pname} of {leaf.name}", strict=strict,
+                constraint=constraint, source=None if pname in own else pname)
     unused = sorted(set(shared) - used)
     if unused:
         raise InputError(f"{unused[0]}={shared[unused[0]].strip()} is not used by any element; "

@@ -66,7 +66,7 @@ class _Tape:
 
     def __init__(self):
         self.inputs: list[_Input] = []
-        self.position = 0
+        self.keys: dict[tuple[str, str], int] = {}  # (label, text) -> index in inputs
         self.nudge: tuple[int, float] | None = None  # (input index, SI offset)
         self.hints: dict[Any, Any] = {}
 
@@ -75,19 +75,24 @@ _TAPE: contextvars.ContextVar[_Tape | None] = contextvars.ContextVar("dyncalc_ta
                                                                      default=None)
 
 
-def traced_input(parsed, dim, label: str, allow_inf: bool, constraint: str | None):
+def traced_input(parsed, dim, label: str, allow_inf: bool, constraint: str | None,
+                 source: str | None = None):
     """Record an uncertain input of the run in progress, or return it nudged (called by
-    :func:`dyncalc.units.parse_quantity` for every quantity typed with ``±``)."""
+    :func:`dyncalc.units.parse_quantity` for every quantity typed with ``±``). ``source``
+    names a value read in several places (a network's shared ``EI=``): one input."""
     tape = _TAPE.get()
     if tape is None:
         return parsed
-    index = tape.position
-    tape.position += 1
+    key = (source or label, parsed.text)
     if tape.nudge is None:
-        magnitude = float(parsed.quantity.magnitude)
-        scale = parsed.si / magnitude if magnitude != 0 else _unit_scale(parsed.quantity, dim)
-        tape.inputs.append(_Input(label, parsed.si, parsed.uncertainty, scale))
+        if key not in tape.keys:
+            magnitude = float(parsed.quantity.magnitude)
+            scale = (parsed.si / magnitude if magnitude != 0
+                     else _unit_scale(parsed.quantity, dim))
+            tape.keys[key] = len(tape.inputs)
+            tape.inputs.append(_Input(source or label, parsed.si, parsed.uncertainty, scale))
         return parsed
+    index = tape.keys.get(key)
     which, offset = tape.nudge
     if which != index:
         return parsed
@@ -137,7 +142,6 @@ def _numbers(result) -> dict[str, Any]:
 
 
 def _run_nudged(compute: Callable, tape: _Tape, index: int, offset: float):
-    tape.position = 0
     tape.nudge = (index, offset)
     try:
         return _numbers(compute())
@@ -162,7 +166,7 @@ def propagate(compute: Callable[[], Any]):
             return result
         _name_inputs(result, tape)
         nominal = _numbers(result)
-        terms: dict[str, dict[str, np.ndarray]] = {name: {} for name in nominal}
+        terms: dict[str, dict[int, np.ndarray]] = {name: {} for name in nominal}
         failed: set[str] = set()
         for index, item in enumerate(tape.inputs):
             if item.sigma == 0:
@@ -175,7 +179,8 @@ def propagate(compute: Callable[[], Any]):
                 if slope is None:
                     failed.add(name)
                     continue
-                terms[name][item.name] = (slope * item.sigma) ** 2
+                with np.errstate(all="ignore"):  # an overflow is caught in _attach
+                    terms[name][index] = (slope * item.sigma) ** 2
     finally:
         _TAPE.reset(token)
     _attach(result, tape, nominal, terms, failed)
@@ -199,13 +204,14 @@ def _slope(y0, h, up, down, name):
 
 
 def _name_inputs(result, tape: _Tape) -> None:
-    """Name each uncertain input as the result's inputs do (``--inertia`` is ``J``)."""
-    for item in tape.inputs:
-        entry = result.inputs.get(item.name)
-        if entry is None:
-            entry = next((e for e in result.inputs.values()
-                          if e.uncertainty is not None and e.si == item.si), None)
-        if entry is not None:
+    """Name each uncertain input as the result's inputs do (``--inertia`` is ``J``).
+
+    The result lists its uncertain inputs in the order they were read, as the tape does; when
+    the two lists match one to one, the names are paired in order. Otherwise (a shared network
+    value read once and used by several elements) the name comes from the option's label."""
+    entries = [e for e in result.inputs.values() if e.uncertainty is not None]
+    if len(entries) == len(tape.inputs):
+        for item, entry in zip(tape.inputs, entries):
             item.label = entry.name
 
 
@@ -229,7 +235,12 @@ def _attach(result, tape: _Tape, nominal, terms, failed) -> None:
         entry.uncertainty = float(sigma) if sigma.ndim == 0 else sigma
         grand = float(np.sum(total))
         if grand > 0 and math.isfinite(grand):
-            shares[name] = {k: float(np.sum(v)) / grand for k, v in parts.items()}
+            share: dict[str, float] = {}
+            for index, part in parts.items():
+                fraction = float(np.sum(part)) / grand
+                key = tape.inputs[index].name
+                share[key] = share.get(key, 0.0) + (fraction if fraction > 1e-12 else 0.0)
+            shares[name] = share
     explanation = getattr(result, "explanation", None)
     if explanation is not None:
         explanation.variance = shares

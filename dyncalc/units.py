@@ -742,7 +742,8 @@ def _check_value(si, dim: Dim, label: str, allow_inf: bool, constraint: str | No
 
 
 def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = False,
-                   allow_inf: bool = False, constraint: str | None = None) -> Parsed:
+                   allow_inf: bool = False, constraint: str | None = None,
+                   source: str | None = None) -> Parsed:
     """Read one scalar quantity of dimension ``dim`` from ``text``.
 
     Parameters
@@ -759,6 +760,9 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     allow_inf : bool
         Accept ``inf`` (a rigid spring); otherwise infinities are refused.
     constraint : {None, "positive", "nonnegative", "nonzero"}
+    source : str, optional
+        Names one value read in several places (a network's shared ``EI=...``): its
+        uncertainty is then one input, not one per place (:mod:`dyncalc.uncertainty`).
 
     Returns
     -------
@@ -772,7 +776,8 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     """
     split = _split_uncertainty(text, label)
     if split is not None:
-        return _parse_uncertain(text, split, dim, label, strict, allow_inf, constraint)
+        return _parse_uncertain(text, split, dim, label, strict, allow_inf, constraint,
+                                source)
     return _finish(_evaluate(text, label), text, dim, label, strict, allow_inf, constraint)
 
 
@@ -808,19 +813,23 @@ def _split_uncertainty(text: str, label: str) -> tuple[str, str, str] | None:
     if len(marks) > 1:
         raise _refuse(label, text, "it has more than one uncertainty (+/- or ±)")
     left, right = text[:marks[0].start()], text[marks[0].end():]
-    if left.lstrip().startswith("("):
-        inner = left.lstrip()[1:]
-        depth = inner.count("(") - inner.count(")")
+    depth = left.count("(") - left.count(")")
+    if depth == 0:
+        return left, right, ""
+    inner = left.lstrip()[1:]
+    if depth == 1 and left.lstrip().startswith("(") and inner.count("(") == inner.count(")"):
         for i, ch in enumerate(right):
             depth += (ch == "(") - (ch == ")")
-            if depth < 0:
+            if depth == 0:
                 return inner, right[:i], right[i + 1:]
-    return left, right, ""
+    raise _refuse(label, text, "an uncertainty (+/- or ±) goes once, at the top: "
+                               "2.0+/-0.1 kg or (100 ± 5) N/m")
 
 
-def _with_unit(reading: _Reading, unit_text: str, label: str, text: str) -> _Reading:
-    """``reading`` (a plain number) times the unit ``unit_text``, as if typed together."""
-    unit, names = _read_unit(unit_text, label)
+def _with_unit(reading: _Reading, unit, names: list[str], unit_text: str, label: str,
+               text: str) -> _Reading:
+    """``reading`` (a plain number) times ``unit`` (typed as ``unit_text``), as if typed
+    together."""
     if reading.named:
         raise _refuse(label, text, "give the unit once, after the parentheses: (100 ± 5) N/m")
     return _Reading(reading.quantity * unit, True, unit_text.strip(), names,
@@ -828,17 +837,26 @@ def _with_unit(reading: _Reading, unit_text: str, label: str, text: str) -> _Rea
 
 
 def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: str,
-                     strict: bool, allow_inf: bool, constraint: str | None) -> Parsed:
+                     strict: bool, allow_inf: bool, constraint: str | None,
+                     source: str | None) -> Parsed:
     """A quantity with its standard uncertainty; a side without a unit takes the other's."""
     value_text, sigma_text, shared = split
-    if not value_text.strip() or not sigma_text.strip():
+    if not value_text.strip() or not any(ch.isdigit() for ch in sigma_text):
         raise _refuse(label, text, "write the value, then +/- or ±, then its standard "
                                    "uncertainty: 2.0+/-0.1 kg or (100 ± 5) N/m")
-    value = _evaluate(value_text, label)
-    sigma = _evaluate(sigma_text, label)
+    try:
+        value = _evaluate(value_text, label)
+        sigma = _evaluate(sigma_text, label)
+    except ReadError as exc:  # quote the whole text, not the half that failed
+        raise _refuse(label, text, exc.why) from None
     if shared.strip():
-        value = _with_unit(value, shared, label, text)
-        sigma = _with_unit(sigma, shared, label, text)
+        try:
+            unit, names = _read_unit(shared, label)
+        except ReadError:
+            raise _refuse(label, text, "only a unit may follow (value ± uncertainty): "
+                                       "(100 ± 5) N/m") from None
+        value = _with_unit(value, unit, names, shared, label, text)
+        sigma = _with_unit(sigma, unit, names, shared, label, text)
     elif value.named and not sigma.named:
         sigma = _Reading(sigma.quantity * value.quantity.units, True, value.unit_text,
                          value.names, value.mixed_turns)
@@ -852,7 +870,7 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
                     uncertainty=spread.si)
     from .uncertainty import traced_input
 
-    return traced_input(parsed, dim, label, allow_inf, constraint)
+    return traced_input(parsed, dim, label, allow_inf, constraint, source)
 
 
 _VECTOR_RE = re.compile(r"^\s*[\(\[]([^\)\]]*)[\)\]]\s*(.*)$")

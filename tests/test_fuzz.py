@@ -267,7 +267,13 @@ def _clean_value(draw, dim_name: str | None, number=POSITIVE) -> str:
     if draw(PERCENT) < 8:
         unit = ""  # a bare number: SI
     text = draw(number)
-    return f"{text}{draw(SEPARATORS)}{unit}".strip() if unit else text
+    shown = f"{text}{draw(SEPARATORS)}{unit}".strip() if unit else text
+    if draw(PERCENT) < 6:  # a standard uncertainty (issue 10), in the forms SPEC.md gives
+        sigma = draw(st.sampled_from(["0.1", "0", "1e-3", "5", "1e300", "2e-320"]))
+        form = draw(st.integers(0, 2))
+        shown = (f"{shown} +/- {sigma}", f"({text} \u00b1 {sigma}) {unit}".strip(),
+                 f"{text}+/-{sigma} {unit}".strip())[form]
+    return shown
 
 
 @functools.cache
@@ -556,6 +562,14 @@ def recipe_frequency(draw) -> list[Piece]:
     methods = get_scene(scene).methods
     if methods and draw(PERCENT) < 40:
         pieces.append(opt("--method", draw(st.sampled_from(["auto", *methods]))))
+    if draw(PERCENT) < 12:  # an inverse problem (issue 10): a result given, one unknown
+        target = draw(st.sampled_from(["omega", "f", "T", "zeta", "omega_d"]))
+        dim = {"omega": "angular rate", "f": "frequency", "T": "time",
+               "zeta": "pure number", "omega_d": "angular rate"}[target]
+        pieces.append(assign(target, value(draw, dim), dim))
+        numeric = [p.name for p in get_scene(scene).params if p.dim is not None]
+        if numeric and draw(PERCENT) < 60:
+            pieces.append(Piece([f"{draw(st.sampled_from(numeric))}=?"]))
     return pieces
 
 
@@ -752,8 +766,10 @@ NOT_DRAWN = {
     "--help": "drawn as a junk word",
     "--batch": "reads files: batch robustness is item 4 of issue 9 (a later suite)",
     "--on-error": "goes with --batch",
+    "--explain-format": "hidden: what --explain=FORMAT is rewritten into (drawn as such)",
 }
-OUTPUT_FLAGS = ["--json", "--explain", "--strict-units"]
+OUTPUT_FLAGS = ["--json", "--explain", "--strict-units", "--explain=markdown",
+                "--explain=latex", "--explain=text"]
 OUTPUT_OPTIONS = ["--value", "--unit", "--digits", "--check", "--rtol"]
 
 #: Values of the options whose value is a name or a path, not a quantity.
@@ -1302,13 +1318,16 @@ SILENT_MISREADINGS = [
     ("rtl-mark", _k("\u200f5 N/m"),
      "Error: --k: cannot read '\\u200f5 N/m': it holds an invisible or control character "
      "U+200F"),
-    # "±" and "+/-" read as nothing
-    ("plus-minus-sign", ["natural-frequency", "--k", "100 N/m", "--m", "2\u00b10.1 kg"],
-     "Error: --m: cannot read '2\u00b10.1 kg': uncertainties (+/- or \u00b1) are not "
-     "supported yet"),
-    ("plus-slash-minus", ["natural-frequency", "--k", "100 N/m", "--m", "2+/-0.1 kg"],
-     "Error: --m: cannot read '2+/-0.1 kg': uncertainties (+/- or \u00b1) are not supported "
-     "yet"),
+    # "±" and "+/-" are uncertainties (issue 10): never read as nothing, refused when misplaced
+    ("plus-minus-twice", ["natural-frequency", "--k", "100 N/m", "--m", "2\u00b10.1\u00b10.1 kg"],
+     "Error: --m: cannot read '2\u00b10.1\u00b10.1 kg': it has more than one uncertainty (+/- "
+     "or \u00b1)"),
+    ("plus-slash-minus-inside", ["natural-frequency", "--k", "100 N/m", "--m", "(2+/-0.1)*2 kg"],
+     "Error: --m: cannot read '(2+/-0.1)*2 kg': only a unit may follow (value \u00b1 "
+     "uncertainty): (100 \u00b1 5) N/m"),
+    ("plus-minus-in-a-product", ["natural-frequency", "--k", "100 N/m", "--m", "2*(2+/-0.1) kg"],
+     "Error: --m: cannot read '2*(2+/-0.1) kg': an uncertainty (+/- or \u00b1) goes once, at "
+     "the top: 2.0+/-0.1 kg or (100 \u00b1 5) N/m"),
     # 1e999 read as infinity
     ("1e999", _k("1e999 N/m"),
      "Error: --k: cannot read '1e999 N/m': 1e999 overflows float64 (the largest is 1.8e308)"),

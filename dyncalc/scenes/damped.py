@@ -105,10 +105,10 @@ register(Scene(
            r"$zeta = \frac{$d}{2}\,\sqrt{\frac{1}{2\,$k\,$m}}",
            r"$y0 = \frac{2\,$m\,$b0}{$k}",
            Formula(r"$y_max = \frac{$y0}{2\,$zeta\,\sqrt{1 - $zeta^2}}",
-                   lambda v: v.get("method") != "small-damping" and 2 * v["zeta"] ** 2 < 1),
+                   lambda v: v.get("method") != "small-damping" and v["zeta"] < math.sqrt(0.5)),
            Formula(r"$y_max = \frac{$y0}{2\,$zeta}", lambda v: v.get("method") == "small-damping"),
            Formula(r"$y_max = $y0",
-                   lambda v: v.get("method") != "small-damping" and 2 * v["zeta"] ** 2 >= 1)),
+                   lambda v: v.get("method") != "small-damping" and v["zeta"] >= math.sqrt(0.5))),
     sizes=(small_damping_error,),
     reference="E5.21",
     example='dyncalc natural-frequency --scene frame-brace-damper m=500kg "k=200 kN/m" '

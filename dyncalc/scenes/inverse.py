@@ -13,11 +13,13 @@ How (decided here, SPEC.md "Inverse problems"):
    of the monomial, checked by computing the scene at ``x``.
 2. Otherwise a **bracketed root find**: the scene is computed on a grid of the unknown's range
    (every fifth decade from 1e-300 to 1e300 for a positive parameter, both signs and zero for
-   a signed one, 1/4 degree steps for an angle below 180 degrees), refined to 10 points a
-   decade next to every sign change and turning point; each sign change of ``y(x) - target`` is a
+   a signed one, 2 degree steps for an angle below 180 degrees), refined to 10 points a
+   decade (1/4 degree) next to every sign change, turning point and edge of the range where
+   the scene answers; each sign change of ``y(x) - target`` is a
    guaranteed bracket, refined by Brent's method (scipy) to full precision. Every root found is
    reported (``k_1``, ``k_2``, ... ascending) with a warning that there are several; none is
-   refused with the range the result takes.
+   refused with the range the result takes; a result that does not depend on the unknown (or
+   more than :data:`MAX_ROOTS` roots) is refused, and so is a result the scene never gives.
 
 Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
 catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
@@ -44,6 +46,10 @@ __all__ = ["solve"]
 LOW, HIGH, STEP = -300, 300, 5
 #: Points in each coarse interval next to a sign change or a turning point (10 a decade).
 FINE = 50
+#: An angle's coarse grid step (degrees) and its refinement (to 1/4 degree).
+ANGLE_STEP, FINE_ANGLE = 2, 8
+#: More roots than this: the result hardly depends on the unknown; refused.
+MAX_ROOTS = 8
 
 
 def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method, rtol,
@@ -52,6 +58,10 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     targets = {n: t for n, t in texts.items() if scene.param(n) is None and is_result_name(n)}
     asked = [n for n, t in texts.items() if scene.param(n) is not None and t.strip() == "?"]
     known = {n: t for n, t in texts.items() if n not in targets and n not in asked}
+    for name, text in targets.items():
+        if text.strip() == "?":
+            raise InputError(f"{name} is a result of {scene.name}, not one of its parameters: "
+                             f"give every parameter to compute it ({_parameter_list(scene)})")
     if len(targets) > 1:
         raise InputError(f"give one result to solve from, not {len(targets)} "
                          f"({', '.join(targets)}); compare the others with --check")
@@ -66,12 +76,14 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     if len(asked) > 1:
         raise InputError(f"give one unknown (NAME=?), not {len(asked)} ({', '.join(asked)})")
     if not unknowns:
-        if target == "zeta" and not scene.accepts_zeta:
+        if target == "zeta" and not scene.accepts_zeta and "(from" not in labels.get(target, ""):
             raise InputError(f"{scene.name} takes no zeta: {scene.no_zeta_because}; "
                              f"{_parameter_list(scene)}")
-        raise InputError(f"{target}= is a result of {scene.name} and every parameter is "
+        shown = labels.get(target, f"{target}=").split(" (from ")[-1].rstrip(")=")
+        shown = shown if "(from" in labels.get(target, "") else target
+        raise InputError(f"{shown}= is a result of {scene.name} and every parameter is "
                          f"given: leave out the one to solve for (or give it as NAME=?), or "
-                         f"compare with --check {target}=...")
+                         f"compare with --check {shown}=...")
     if len(unknowns) > 1:
         raise InputError(f"{scene.name}: {target}= leaves {len(unknowns)} parameters unknown "
                          f"({', '.join(unknowns)}); give all but one")
@@ -87,7 +99,10 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
 
     roots, how = problem.roots_near(goal, key=(scene.name, unknown.name, target))
     if not roots:
-        raise InputError(problem.no_root_message(goal, kind))
+        if problem.seen and target not in problem.seen:
+            raise InputError(f"{scene.name} gives no result {target}; its results are "
+                             f"{', '.join(sorted(problem.seen))}")
+        raise InputError(problem.no_root_message(_typed(parsed_goal, kind)))
     inputs = dict(prepared.inputs)
     inputs[target] = Entry(target, goal, kind.dim, unit=kind.unit, symbol=kind.symbol,
                            description=kind.description, uncertainty=parsed_goal.uncertainty)
@@ -115,6 +130,18 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     return result
 
 
+def _typed(parsed, kind) -> str:
+    """The target as typed, ``-5 Hz``, for messages (SI when no unit was typed)."""
+    from ..units import convert
+
+    unit = parsed.unit_text or kind.dim.si
+    try:
+        value = convert(parsed.si, kind.dim, unit) if unit != kind.dim.si else parsed.si
+    except InputError:
+        value, unit = parsed.si, kind.dim.si
+    return f"{float(value):.6g} {unit}".rstrip()
+
+
 def _shown(x: float, param) -> float:
     return math.degrees(x) if param.dim is ANGLE else x
 
@@ -130,7 +157,9 @@ class _Problem:
         self.scene, self.prepared, self.param, self.target = scene, prepared, param, target
         self.method, self.rtol = method, rtol
         self.unit = param.dim.si.replace("^", "**") if param.dim.si else ""
-        self.calls = 0
+        self.kind_unit = result_kind(target).dim.si
+        self.seen: set[str] = set()  # every result name the scene gave at some x
+        self.samples: list[float] = []
 
     def evaluate(self, x: float):
         """``(outcome, values, warnings)`` of the scene at ``x``; InputError when refused."""
@@ -148,7 +177,6 @@ class _Problem:
     def y(self, x: float) -> float:
         """The target result at ``x`` in SI; NaN where the scene refuses ``x`` or has no such
         result (a bead below its bifurcation has no ``theta_eq``)."""
-        self.calls += 1
         if not self._admissible(x):
             return math.nan
         try:
@@ -156,6 +184,7 @@ class _Problem:
                 _outcome, values, _warnings = self.evaluate(x)
         except (InputError, ArithmeticError, ValueError):
             return math.nan
+        self.seen.update(values)
         value = values.get(self.target)
         if value is None:
             return math.nan
@@ -170,8 +199,11 @@ class _Problem:
     # -- the grid ------------------------------------------------------------------------
 
     def grid(self) -> list[float]:
-        if self.param.dim is ANGLE:
-            return [math.radians(d / 4) for d in range(0, 720)]
+        """The coarse grid: every STEP decades (both signs for a signed parameter), or every
+        ANGLE_STEP degrees of an angle up to 180."""
+        if self.param.dim is ANGLE:  # and a tail toward 180 degrees, where periods diverge
+            tail = [180 - 10.0 ** -k for k in range(0, 8)]
+            return [math.radians(d) for d in [*range(0, 180, ANGLE_STEP), *tail]]
         decades = [10.0 ** e for e in range(LOW, HIGH + 1, STEP)]
         if self.param.constraint == "positive":
             return decades
@@ -248,11 +280,20 @@ class _Problem:
 
     def _bracketed(self, goal: float) -> list[float]:
         xs = self.grid()
-        gs = [self.y(x) - goal for x in xs]
-        xs, gs = self._refine(xs, gs, goal)
-        self.samples = [(x, g + goal) for x, g in zip(xs, gs) if math.isfinite(g)]
+        ys = [self.y(x) for x in xs]
+        xs, ys = self._refine(xs, ys, goal)
+        self.samples = [y for y in ys if math.isfinite(y)]
+        if self.target not in self.seen:
+            return []
+        if len(self.samples) > 1 and max(self.samples) - min(self.samples) <= \
+                1e-12 * max(abs(v) for v in self.samples):
+            raise InputError(f"{self.target} does not depend on {self.param.name} in "
+                             f"{self.scene.name} (it is {self.samples[0]:.6g} whatever "
+                             f"{self.param.name} is): {self.param.name} cannot be solved for "
+                             f"from {self.target}")
         from scipy.optimize import brentq
 
+        gs = [y - goal for y in ys]
         roots = []
         for (x0, g0), (x1, g1) in zip(zip(xs, gs), zip(xs[1:], gs[1:])):
             if not (math.isfinite(g0) and math.isfinite(g1)):
@@ -267,41 +308,50 @@ class _Problem:
                     continue
         if gs and math.isfinite(gs[-1]) and gs[-1] == 0:
             roots.append(xs[-1])
-        return _distinct(roots)
+        roots = _distinct(roots)
+        if len(roots) > MAX_ROOTS:
+            raise InputError(f"{len(roots)} values of {self.param.name} give {self.target} = "
+                             f"{goal:.6g} {self.kind_unit} in {self.scene.name}; give "
+                             f"{self.param.name} and solve for another parameter")
+        return roots
 
-    def _refine(self, xs: list[float], gs: list[float], goal: float):
-        """Add FINE points a decade in every interval where ``y - goal`` changes sign or
-        turns (so two roots in one decade are both bracketed)."""
-        if self.param.dim is ANGLE:
-            return xs, gs
+    def _refine(self, xs: list[float], ys: list[float], goal: float):
+        """Add FINE points to every coarse interval next to a sign change of ``y - goal``,
+        a turning point or the edge of where the scene answers, so that two roots close
+        together are both bracketed."""
+        fine = FINE_ANGLE if self.param.dim is ANGLE else FINE
+        gs = [y - goal for y in ys]
         marked = set()
+        for i in range(len(xs) - 1):
+            a, b = gs[i], gs[i + 1]
+            if math.isfinite(a) != math.isfinite(b) or (math.isfinite(a) and a * b <= 0):
+                marked.add(i)
         for i in range(1, len(xs) - 1):
             a, b, c = gs[i - 1], gs[i], gs[i + 1]
-            if not all(math.isfinite(v) for v in (a, b, c)):
-                if math.isfinite(b):
-                    marked.update((i - 1, i))
-                continue
-            if a * b <= 0 or b * c <= 0 or (b - a) * (c - b) < 0:
+            if all(math.isfinite(v) for v in (a, b, c)) and (b - a) * (c - b) < 0:
                 marked.update((i - 1, i))
-        out_x, out_g = [], []
+        out_x, out_y = [], []
         for i, x in enumerate(xs):
             out_x.append(x)
-            out_g.append(gs[i])
-            if i in marked and i + 1 < len(xs) and xs[i] > 0 and xs[i + 1] > 0:
-                for j in range(1, FINE):
-                    xj = x * (xs[i + 1] / x) ** (j / FINE)
-                    out_x.append(xj)
-                    out_g.append(self.y(xj) - goal)
-        return out_x, out_g
+            out_y.append(ys[i])
+            if i not in marked:
+                continue
+            nxt = xs[i + 1]
+            geometric = x * nxt > 0 and self.param.dim is not ANGLE
+            for j in range(1, fine):
+                xj = x * (nxt / x) ** (j / fine) if geometric else x + (nxt - x) * j / fine
+                out_x.append(xj)
+                out_y.append(self.y(xj))
+        return out_x, out_y
 
-    def no_root_message(self, goal: float, kind) -> str:
-        samples = [y for _x, y in getattr(self, "samples", [])]
-        span = ""
-        if samples:
+    def no_root_message(self, goal_text: str) -> str:
+        span = "; the scene refused every value of it tried" if not self.seen else ""
+        if self.samples:
             span = (f"; over the values of {self.param.name} tried it ranges from "
-                    f"{min(samples):.6g} to {max(samples):.6g} {kind.dim.si}".rstrip())
-        return (f"no value of {self.param.name} gives {self.target} = {goal:.6g} "
-                f"{kind.dim.si} in {self.scene.name} with the other parameters given{span}")
+                    f"{min(self.samples):.6g} to {max(self.samples):.6g} "
+                    f"{self.kind_unit}".rstrip())
+        return (f"no value of {self.param.name} gives {self.target} = {goal_text} in "
+                f"{self.scene.name} with the other parameters given{span}")
 
 
 def _distinct(roots: list[float]) -> list[float]:

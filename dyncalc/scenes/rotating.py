@@ -6,11 +6,18 @@ rod's equilibrium by mpmath.findroot, the coupled blocks' frequencies by mpmath.
 """
 from __future__ import annotations
 
+import math
+
 from ..units import (ACCELERATION, ANGULAR_RATE, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS,
                      VELOCITY)
 from ..explain import Formula
 from . import Constraint, Param, Scene, register
 from .basic import amplitude, gravity
+
+def _below_bifurcation(v) -> bool:
+    """``Omega^2 r <= g``, compared as ``Omega <= sqrt(g)/sqrt(r)`` (no overflow)."""
+    return v["Omega"] <= math.sqrt(v["g"]) / math.sqrt(v["r"])
+
 
 register(Scene(
     name="half-cylinder-shell",
@@ -150,11 +157,11 @@ register(Scene(
             "theta_eq = acos(g/(r Omega^2)) (and -theta_eq), omega^2 = Omega^2 - "
             "(g/(r Omega))^2; at Omega^2 = g/r omega = 0 (bifurcation)",
     latex=(Formula(r"$omega = \sqrt{\frac{$g}{$r} - $Omega^2}",
-                   lambda v: v["Omega"] ** 2 * v["r"] <= v["g"]),
+                   lambda v: _below_bifurcation(v)),
            Formula(r"$theta_eq = \arccos\left(\frac{$g}{$r\,$Omega^2}\right)",
-                   lambda v: v["Omega"] ** 2 * v["r"] > v["g"]),
+                   lambda v: not _below_bifurcation(v)),
            Formula(r"$omega = \sqrt{$Omega^2 - \left(\frac{$g}{$r\,$Omega}\right)^2}",
-                   lambda v: v["Omega"] ** 2 * v["r"] > v["g"])),
+                   lambda v: not _below_bifurcation(v))),
     reference="E6.11",
     example="dyncalc natural-frequency --scene bead-on-rotating-ring r=0.2m Omega=120rpm",
     example_result={"omega": "11.9452299518987473 rad/s", "f": "1.90114239321404878 Hz",
