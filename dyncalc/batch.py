@@ -374,6 +374,12 @@ def _plain_floats(cells) -> np.ndarray | None:
         return None
 
 
+def _reprs(values: list[float]) -> list[str]:
+    """``list(map(repr, values))``, a third faster: the list's repr writes every float's repr
+    in C (no float repr holds ``", "``)."""
+    return str(values)[1:-1].split(", ") if values else []
+
+
 class _UnitInfo:
     """What reading ``X unit`` gives for every plain number ``X``, found once by reading
     ``1 unit`` the one-off way: the pint unit, the SI unit, and how the input entry shows it."""
@@ -793,7 +799,7 @@ class _Writer:
                 with np.errstate(over="ignore", under="ignore"):
                     array = np.asarray(convert(array, dim, target, label=f"--unit {name}",
                                                name=name), dtype=float)
-            numbers = list(map(repr, array.tolist()))
+            numbers = _reprs(array.tolist())
             if self.as_json and not np.isfinite(array).all():  # JSON has no infinity
                 numbers = [t if math.isfinite(v) else "null"
                            for t, v in zip(numbers, array.tolist())]
@@ -812,10 +818,9 @@ class _Writer:
                                                   map(", ".join, zip(*parts)))))
         else:
             empty = [""] * len(rows)
-            results = map(",".join, zip(*[shown[name][0] if name in shown else empty
-                                          for name in self.columns]))
             echo = chunk.echo(None if whole else rows)
-            made = list(map("{},{}".format, echo, results))
+            made = list(map(",".join, zip(echo, *[shown[name][0] if name in shown else empty
+                                                  for name in self.columns])))
         if whole:
             texts[:] = made
         else:
