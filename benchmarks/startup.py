@@ -1,7 +1,10 @@
 """One-off start-up: dyncalc against the floor of its stack, measured side by side.
 
 The floor is ``python -c`` importing pint and numpy, loading the registry from pint's cache and
-computing one quantity: dyncalc cannot answer faster than its stack loads. Each round runs
+computing one quantity: what dyncalc's stack costs. dyncalc's entry point pauses the cyclic
+garbage collector while that stack loads (and freezes what it made before exit), which saves
+about 5 % of the floor; a second floor run the same way (``gc.disable()`` ... ``gc.freeze()``)
+shows what dyncalc's own code costs on top. Each round runs
 every command once, in a fresh random order, so the machine's drift and any order effect hit
 them alike; the tables give, per command, the median wall time and CPU time (user + system of
 the child) with their interquartile ranges, and the paired ratio to the floor: the median over
@@ -12,6 +15,7 @@ GNU units and qalc (``apt-get install units qalc``), when installed, do the same
 
     python benchmarks/startup.py [--rounds 41] [--out benchmarks/results/startup.md]
     python benchmarks/startup.py --before /tmp/old   # also an older checkout, side by side
+    python benchmarks/startup.py --instructions      # also valgrind's instruction counts
 
 ``--before DIR`` adds the one-off target run from the dyncalc package in DIR (a checkout of an
 earlier commit, e.g. ``git archive HEAD~3 | tar -x -C /tmp/old``; put first on PYTHONPATH), in
@@ -38,6 +42,11 @@ BIN = Path(sys.executable).parent
 FLOOR = ("import pint, numpy; u = pint.UnitRegistry(cache_folder=':auto:'); "
          "print((u.Quantity(100, 'N/m') / u.Quantity(2, 'kg')) ** 0.5)")
 FLOOR_NAME = "floor: python -c 'import pint, numpy; registry; one quantity'"
+#: The floor run the way dyncalc's entry point runs its stack: the cyclic collector paused and
+#: what was made frozen before exit (so the ratio to it is dyncalc's own cost alone).
+QUIET_FLOOR = f"import gc; gc.disable(); {FLOOR}; gc.freeze()"
+QUIET_FLOOR_NAME = ("floor, collector paused as dyncalc's entry pauses it (`gc.disable()` ... "
+                    "`gc.freeze()`)")
 TARGET = "dyncalc natural-frequency --k 100N/m --m 2kg --json"
 COMPLETE_VAR = "_DYNCALC_COMPLETE"
 
@@ -59,6 +68,7 @@ def commands(before: str | None = None) -> dict[str, list[str]]:
             COMPLETE_VAR: "bash_complete", "COMP_WORDS": "dyncalc spring-", "COMP_CWORD": "1"}),
         "python -c 'import pint, numpy' (imports only)": [sys.executable, "-c",
                                                           "import pint, numpy"],
+        QUIET_FLOOR_NAME: [sys.executable, "-c", QUIET_FLOOR],
     }
     if before:
         cmds[f"before ({before}): {TARGET}"] = (
@@ -149,6 +159,34 @@ def table(cmds, wall, cpu, rounds: int) -> str:
     return "\n".join(lines)
 
 
+def instructions(cmds, names: list[str]) -> dict[str, int]:
+    """Instructions each command executes, counted by valgrind's callgrind (load-independent,
+    unlike wall time; about 60 times slower): one run each, OpenBLAS on one thread and a
+    fixed hash seed so that the counts repeat."""
+    import subprocess
+
+    env = {**child_env(), "OPENBLAS_NUM_THREADS": "1", "PYTHONHASHSEED": "0"}
+    counts = {}
+    for name in names:
+        argv = cmds[name]
+        extra = {}
+        if isinstance(argv, tuple):
+            argv, extra = argv
+        done = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                               *argv], env={**env, **extra}, capture_output=True, text=True,
+                              check=True)
+        counts[name] = int(done.stderr.split("Collected :")[1].split()[0])
+    return counts
+
+
+def instruction_table(counts: dict[str, int]) -> str:
+    floor = counts[FLOOR_NAME]
+    lines = ["| command | instructions (millions) | / floor |", "| --- | ---: | ---: |"]
+    lines += [f"| `{name}` | {count / 1e6:,.0f} | {count / floor:.3f} |"
+              for name, count in counts.items()]
+    return "\n".join(lines)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=41)
@@ -156,17 +194,35 @@ def main() -> None:
                         help="also time the one-off from the dyncalc package in DIR")
     parser.add_argument("--out", default=str(ROOT / "benchmarks" / "results" / "startup.md"),
                         help="markdown file for the table ('-': do not write one)")
+    parser.add_argument("--instructions", action="store_true",
+                        help="also count the instructions of the floors and the one-off "
+                             "(needs valgrind: apt-get install valgrind)")
     args = parser.parse_args()
     cmds = commands(args.before)
     missing = [tool for tool in ("units", "qalc") if not shutil.which(tool)]
     args.rounds = max(2, args.rounds)  # quartiles need two
     wall, cpu = measure(cmds, args.rounds)
     text = table(cmds, wall, cpu, args.rounds)
+    def paired(name: str, base: str) -> float:
+        return statistics.median(a / b for a, b in zip(wall[name], wall[base]))
+
+    text += (f"\n\nOne-off / floor, paired median of the rounds: {paired(TARGET, FLOOR_NAME):.3f}; "
+             "one-off / the floor with the collector paused as dyncalc's entry pauses it "
+             f"(what dyncalc's own code costs): {paired(TARGET, QUIET_FLOOR_NAME):.3f}")
     if args.before:
         old = wall[f"before ({args.before}): {TARGET}"]
         ratio = statistics.median(a / b for a, b in zip(wall[TARGET], old))
         text += (f"\n\nAfter / before, paired median of the rounds: {ratio:.3f} "
                  f"(`{TARGET}`; before = the package in {args.before})")
+    if args.instructions:
+        if shutil.which("valgrind"):
+            names = [FLOOR_NAME, QUIET_FLOOR_NAME, TARGET]
+            names += [name for name in cmds if name.startswith("before (")]
+            text += ("\n\nInstructions executed (valgrind callgrind, one run each; they do not "
+                     "depend on the machine's load):\n\n"
+                     + instruction_table(instructions(cmds, names)))
+        else:
+            text += "\n\n(valgrind not installed: no instruction counts)"
     if missing:
         text += (f"\n\n(not installed, skipped: {', '.join(missing)}; "
                  "`apt-get install units qalc`)")
@@ -174,8 +230,8 @@ def main() -> None:
     if args.out != "-":
         out = Path(args.out)
         out.parent.mkdir(parents=True, exist_ok=True)
-        out.write_text("## Start-up (`python benchmarks/startup.py`)\n\n" + text + "\n",
-                       encoding="utf-8")
+        command = " ".join(["python benchmarks/startup.py", *sys.argv[1:]])
+        out.write_text(f"## Start-up (`{command}`)\n\n" + text + "\n", encoding="utf-8")
         print(f"\nwritten to {out}", file=sys.stderr)
 
 

@@ -7,7 +7,6 @@ warnings and the assumptions with their size at these inputs. It never prints.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -17,7 +16,6 @@ from ..units import Q_
 __all__ = ["Outcome", "periodic", "damped", "periodic_arrays", "damped_arrays"]
 
 
-@dataclass
 class Outcome:
     """The answer of one physics function.
 
@@ -26,15 +24,38 @@ class Outcome:
     error bound of the method at these inputs (``None`` for closed forms exact to rounding);
     ``exact_zeros`` names results that are zero by the physics (an equilibrium at the bottom),
     which must not be reported as underflow.
+
+    A plain class with the constructor, repr and equality of the dataclass it was (no code
+    generated at import, issue 8).
     """
 
-    values: dict[str, Any]
-    model: str = "linear"
-    method: str = "closed-form"
-    error_estimate: float | None = None
-    warnings: list[str] = field(default_factory=list)
-    assumptions: list[str] = field(default_factory=list)
-    exact_zeros: set[str] = field(default_factory=set)  # zero by the physics, not underflow
+    _FIELDS = ("values", "model", "method", "error_estimate", "warnings", "assumptions",
+               "exact_zeros")
+    __hash__ = None  # mutable, compared by value
+
+    def __init__(self, values: dict[str, Any], model: str = "linear",
+                 method: str = "closed-form", error_estimate: float | None = None,
+                 warnings: list[str] | None = None, assumptions: list[str] | None = None,
+                 exact_zeros: set[str] | None = None):
+        self.values = values
+        self.model = model
+        self.method = method
+        self.error_estimate = error_estimate
+        self.warnings = [] if warnings is None else warnings
+        self.assumptions = [] if assumptions is None else assumptions
+        self.exact_zeros = set() if exact_zeros is None else exact_zeros
+
+    def _values(self) -> tuple:
+        return tuple(getattr(self, name) for name in self._FIELDS)
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._FIELDS)
+        return f"Outcome({fields})"
+
+    def __eq__(self, other):
+        if other.__class__ is self.__class__:
+            return self._values() == other._values()
+        return NotImplemented
 
 
 def periodic(omega_si: float, suffix: str = "") -> dict[str, Any]:

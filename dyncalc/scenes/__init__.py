@@ -12,10 +12,10 @@ Scenes are added with :func:`register`; the catalog modules that do so are liste
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import InputError
+from ..units import _Frozen
 
 __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names"]
 
@@ -26,8 +26,12 @@ CATALOG_MODULES: tuple[str, ...] = (
 )
 
 
-@dataclass(frozen=True)
-class Param:
+# Param, Constraint and Scene behave as frozen dataclasses (the same constructor, repr,
+# equality, hash and immutability); they are written out by hand because @dataclass generates
+# and compiles their methods at import, which every one-off run would pay for (issue 8).
+
+
+class Param(_Frozen):
     """One parameter of a scene.
 
     ``dim`` is a :class:`dyncalc.units.Dim` (``None`` for a choice such as ``body``);
@@ -37,14 +41,13 @@ class Param:
     ``choices`` maps the words of a choice parameter to the value passed on.
     """
 
-    name: str
-    dim: Any
-    description: str
-    default: str | None = None
-    optional: bool = False
-    constraint: str | None = "positive"
-    choices: dict | None = None
-    symbol: str = ""                 # LaTeX symbol in formulas, if not derived from the name
+    __slots__ = ("name", "dim", "description", "default", "optional", "constraint", "choices",
+                 "symbol")
+
+    def __init__(self, name: str, dim: Any, description: str, default: str | None = None,
+                 optional: bool = False, constraint: str | None = "positive",
+                 choices: dict | None = None, symbol: str = ""):
+        _set_all(self, name, dim, description, default, optional, constraint, choices, symbol)
 
     def signature(self) -> str:
         """``l [length]``, ``g [length]/[time]^2 = 9.80665 m/s^2``, ``amplitude [angle]?``"""
@@ -54,41 +57,50 @@ class Param:
         return f"{self.name} {kind}" + ("?" if self.optional else "")
 
 
-@dataclass(frozen=True)
-class Constraint:
+class Constraint(_Frozen):
     """A relation between parameters (``R > r``): ``holds`` takes the SI values by name."""
 
-    text: str
-    holds: Any
-    why: str = ""
+    __slots__ = ("text", "holds", "why")
+
+    def __init__(self, text: str, holds: Any, why: str = ""):
+        _set_all(self, text, holds, why)
 
 
-@dataclass(frozen=True)
-class Scene:
-    """One set-up: what it is, what it needs, what it computes and where it comes from."""
+class Scene(_Frozen):
+    """One set-up: what it is, what it needs, what it computes and where it comes from.
 
-    name: str
-    summary: str
-    figure: str
-    params: tuple[Param, ...]
-    compute: str                     # "dyncalc.physics.oscillators:mass_spring"
-    equation: str                    # equation of motion
-    formula: str                     # the closed form (or how it is solved)
-    reference: str                   # "E5.12"
-    example: str                     # a runnable command line
-    example_result: dict = field(default_factory=dict)  # result -> value text the example gives
-    constraints: tuple[Constraint, ...] = ()
-    one_of: tuple[tuple[str, ...], ...] = ()   # groups of which exactly one must be given
-    methods: tuple[str, ...] = ()              # besides "auto"; empty: closed form only
-    accepts_zeta: bool = True                  # --zeta adds damped results
-    no_zeta_because: str = "its damping comes from its own parameters"  # when it does not
-    assumptions: tuple[str, ...] = ()
-    #: formula lines in LaTeX, ``$name`` for a parameter or result (see :mod:`dyncalc.explain`);
-    #: strings or :class:`dyncalc.explain.Formula` (used only when its condition holds)
-    latex: tuple = ()
-    #: functions of the SI values by name (and ``method``) that say how large an assumption's
-    #: error is at these inputs (a sentence, or None when there is nothing to say)
-    sizes: tuple = ()
+    ``compute`` is the physics function as ``"module:name"``; ``equation`` the equation of
+    motion, ``formula`` the closed form (or how it is solved), ``reference`` the textbook
+    example (``"E5.12"``), ``example`` a runnable command line and ``example_result`` the value
+    text it gives per result; ``one_of`` holds groups of which exactly one must be given,
+    ``methods`` the methods besides ``auto`` (empty: closed form only); ``accepts_zeta``: whether
+    ``--zeta`` adds damped results (``no_zeta_because`` says why not). ``latex`` holds the
+    formula lines in LaTeX, ``$name`` for a parameter or result (strings or
+    :class:`dyncalc.explain.Formula`, used only when its condition holds); ``sizes`` functions
+    of the SI values by name (and ``method``) that say how large an assumption's error is at
+    these inputs (a sentence, or None).
+    """
+
+    __slots__ = ("name", "summary", "figure", "params", "compute", "equation", "formula",
+                 "reference", "example", "example_result", "constraints", "one_of", "methods",
+                 "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes")
+
+    def __init__(self, name: str, summary: str, figure: str, params: tuple[Param, ...],
+                 compute: str, equation: str, formula: str, reference: str, example: str,
+                 example_result: dict | None = None, constraints: tuple[Constraint, ...] = (),
+                 one_of: tuple[tuple[str, ...], ...] = (), methods: tuple[str, ...] = (),
+                 accepts_zeta: bool = True,
+                 no_zeta_because: str = "its damping comes from its own parameters",
+                 assumptions: tuple[str, ...] = (), latex: tuple = (), sizes: tuple = ()):
+        _set_all(self, name, summary, figure, params, compute, equation, formula, reference,
+                 example, {} if example_result is None else example_result, constraints,
+                 one_of, methods, accepts_zeta, no_zeta_because, assumptions, latex, sizes)
+
+    def replace(self, **changes) -> Scene:
+        """A copy with ``changes`` (what ``dataclasses.replace`` does)."""
+        values = {name: getattr(self, name) for name in self.__slots__}
+        values.update(changes)
+        return Scene(**values)
 
     def param(self, name: str) -> Param | None:
         return next((p for p in self.params if p.name == name), None)
@@ -101,6 +113,12 @@ class Scene:
         return getattr(importlib.import_module(module), name)
 
 
+def _set_all(record, *values) -> None:
+    """Set a frozen record's fields, in the order of its ``__slots__``."""
+    for name, value in zip(record.__slots__, values):
+        object.__setattr__(record, name, value)
+
+
 _SCENES: dict[str, Scene] = {}
 _loaded = False
 
@@ -111,8 +129,6 @@ def register(scene: Scene) -> Scene:
     A scene that accepts ``zeta`` gets the optional parameter ``zeta`` (damping ratio, adds the
     damped results) appended to its parameters.
     """
-    import dataclasses
-
     from ..units import DIMENSIONLESS
 
     if scene.name in _SCENES:
@@ -120,7 +136,7 @@ def register(scene: Scene) -> Scene:
     if scene.accepts_zeta and scene.param("zeta") is None:
         zeta = Param("zeta", DIMENSIONLESS, "damping ratio: adds omega_d, f_d, T_d",
                      optional=True, constraint="nonnegative")
-        scene = dataclasses.replace(scene, params=(*scene.params, zeta))
+        scene = scene.replace(params=(*scene.params, zeta))
     _SCENES[scene.name] = scene
     return scene
 

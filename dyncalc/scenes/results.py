@@ -6,10 +6,9 @@ Families share a stem: ``omega``, ``omega_0``, ``omega_d``, ``omega_1`` are angu
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA, LENGTH, TIME,
-                     VELOCITY, Dim)
+                     VELOCITY, Dim, _Frozen)
 
 __all__ = ["ResultKind", "result_kind", "DECAY_RATE", "LINEAR_DRAG"]
 
@@ -18,12 +17,18 @@ LINEAR_DRAG = Dim("drag per unit length", "[force]*[time]/[length]^2",
                   "[force]*[time]/[length]**2", "N*s/m^2")
 
 
-@dataclass(frozen=True)
-class ResultKind:
-    dim: Dim
-    unit: str
-    symbol: str
-    description: str
+class ResultKind(_Frozen):
+    """A result's dimension, display unit, symbol and words (a frozen record, written out
+    rather than a dataclass: no code generated at import, issue 8)."""
+
+    __slots__ = ("dim", "unit", "symbol", "description")
+
+    def __init__(self, dim: Dim, unit: str, symbol: str, description: str):
+        setattr_ = object.__setattr__
+        setattr_(self, "dim", dim)
+        setattr_(self, "unit", unit)
+        setattr_(self, "symbol", symbol)
+        setattr_(self, "description", description)
 
 
 _SUFFIX = {"": "", "_0": " (small oscillations)", "_d": " (damped)"}
