@@ -33,7 +33,7 @@ from fractions import Fraction
 import numpy as np
 
 from ..errors import InputError
-from ..result import Entry
+from ..result import Entry, entry_from_parsed
 from ..units import ANGLE, DIMENSIONLESS, parse_quantity, registry
 from . import Scene
 from .results import result_kind
@@ -104,8 +104,8 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
                              f"{', '.join(sorted(problem.seen))}")
         raise InputError(problem.no_root_message(_typed(parsed_goal, kind)))
     inputs = dict(prepared.inputs)
-    inputs[target] = Entry(target, goal, kind.dim, unit=kind.unit, symbol=kind.symbol,
-                           description=kind.description, uncertainty=parsed_goal.uncertainty)
+    inputs[target] = entry_from_parsed(target, parsed_goal, kind.dim, symbol=kind.symbol,
+                                       description=kind.description)
     unit = "deg" if unknown.dim is ANGLE else unknown.dim.si
     describe = f"{unknown.description} (solved from {target})"
     if len(roots) == 1:
@@ -123,7 +123,7 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         result = make_result(scene, inputs, outcome, {}, warnings, command, solved)
         shown = ", ".join(f"{x:.6g} {unit}" for x in (_shown(x, unknown) for x in roots))
         result.warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
-                               f"{_number(goal)} {kind.unit}: {shown}; each is a result")
+                               f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
     result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
     if result.explanation is not None and how[1]:
         result.explanation.assumptions.append(f"{unknown.name} solved from {target}: {how[1]}")
@@ -144,10 +144,6 @@ def _typed(parsed, kind) -> str:
 
 def _shown(x: float, param) -> float:
     return math.degrees(x) if param.dim is ANGLE else x
-
-
-def _number(x: float) -> str:
-    return f"{x:.6g}"
 
 
 class _Problem:
