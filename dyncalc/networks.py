@@ -391,7 +391,7 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
     results.update(element_results)
     result = Result(command=f"spring-{how}", results=results, inputs=inputs,
                     model="network" if _is_nested(root) else how, warnings=warnings,
-                    explanation=_explain(root, stiffness, dim, results["k_eq"]))
+                    explanation=lambda: _explain(root, stiffness, dim, results["k_eq"]))
     result.add_underflow_warnings()
     if len(root.children) > 1:
         parts = [combine(c) for c in root.children]

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Callable
 
 from .units import Dim, Parsed, convert
 
@@ -105,22 +105,47 @@ class Explanation:
                 "variance": {name: dict(shares) for name, shares in self.variance.items()}}
 
 
-@dataclass
 class Result:
-    """Everything one command computed, on its way from physics to rendering."""
+    """Everything one command computed, on its way from physics to rendering.
 
-    command: str
-    results: dict[str, Entry]
-    inputs: dict[str, Entry] = field(default_factory=dict)
-    scene: str | None = None
-    model: str = ""
-    method: str = "closed-form"
-    warnings: list[str] = field(default_factory=list)
-    explanation: Explanation | None = None
-    extra: dict[str, Any] = field(default_factory=dict)
-    #: result name -> {a common slip, in words: the value (SI) that slip gives}, for the
-    #: diagnosis of a failed ``--check`` (see :mod:`dyncalc.checks`); never printed as such
-    slips: dict[str, dict[str, float]] = field(default_factory=dict)
+    ``explanation`` may be given as an :class:`Explanation` or as a function of no arguments
+    that builds one: it is then built the first time it is read (``--explain``, or the
+    variance shares of an uncertain input), so a run that shows no explanation never pays
+    for one. ``slips`` maps a result name to {a common slip, in words: the value (SI) that
+    slip gives}, for the diagnosis of a failed ``--check`` (:mod:`dyncalc.checks`).
+    """
+
+    __slots__ = ("command", "results", "inputs", "scene", "model", "method", "warnings",
+                 "_explanation", "extra", "slips")
+
+    def __init__(self, command: str, results: dict[str, Entry],
+                 inputs: dict[str, Entry] | None = None, scene: str | None = None,
+                 model: str = "", method: str = "closed-form",
+                 warnings: list[str] | None = None,
+                 explanation: Explanation | Callable[[], Explanation] | None = None,
+                 extra: dict[str, Any] | None = None,
+                 slips: dict[str, dict[str, float]] | None = None):
+        self.command, self.results, self.scene = command, results, scene
+        self.inputs = {} if inputs is None else inputs
+        self.model, self.method = model, method
+        self.warnings = [] if warnings is None else warnings
+        self._explanation = explanation
+        self.extra = {} if extra is None else extra
+        self.slips = {} if slips is None else slips
+
+    @property
+    def explanation(self) -> Explanation | None:
+        if callable(self._explanation):
+            self._explanation = self._explanation()
+        return self._explanation
+
+    @explanation.setter
+    def explanation(self, value) -> None:
+        self._explanation = value
+
+    def __repr__(self) -> str:
+        return (f"Result(command={self.command!r}, scene={self.scene!r}, "
+                f"results={list(self.results)!r}, warnings={self.warnings!r})")
 
     def add_underflow_warnings(self, exact_zeros: set[str] = frozenset()) -> None:
         """Warn about a result that underflowed to zero from non-zero inputs (SPEC.md);

@@ -125,9 +125,20 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         result.warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
                                f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
     result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
-    if result.explanation is not None and how[1]:
-        result.explanation.assumptions.append(f"{unknown.name} solved from {target}: {how[1]}")
+    if how[1]:
+        result.explanation = _noting(result._explanation, f"{unknown.name} solved from "
+                                                          f"{target}: {how[1]}")
     return result
+
+
+def _noting(explain, note: str):
+    """The explanation ``explain`` (built later, if it is a function) with ``note`` added."""
+    def build():
+        explanation = explain() if callable(explain) else explain
+        if explanation is not None:
+            explanation.assumptions.append(note)
+        return explanation
+    return build
 
 
 def _typed(parsed, kind) -> str:

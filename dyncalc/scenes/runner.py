@@ -220,7 +220,7 @@ def make_result(scene: Scene, inputs: dict[str, Entry], outcome, values: dict[st
                    if name not in results)
     result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
                     model=outcome.model, method=outcome.method, warnings=warnings,
-                    explanation=_explain(scene, inputs, results, outcome))
+                    explanation=lambda: _explain(scene, inputs, results, outcome))
     result.add_overflow_warnings()
     if outcome.error_estimate is not None:
         result.extra["error_estimate"] = outcome.error_estimate
