@@ -55,6 +55,48 @@ MAX_ROOTS = 8
 def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method, rtol,
           strict: bool, command: str):
     """The Result of the inverse problem ``texts`` poses (see the module docstring)."""
+    target, target_text, known, asked = _split(scene, texts, labels)
+    prepared = read_inputs(scene, known, labels, strict, unknown=tuple(asked))
+    unknown = _the_unknown(scene, target, asked, prepared.missing, labels)
+    kind = result_kind(target)
+    parsed_goal = parse_quantity(target_text, kind.dim,
+                                 label=labels.get(target, f"{target}=").rstrip("="),
+                                 strict=strict)
+    problem = _Problem(scene, prepared, unknown, target, method, rtol)
+    roots, how = problem.roots_near(parsed_goal.si, key=(scene.name, unknown.name, target))
+    if not roots:
+        if problem.seen and target not in problem.seen:
+            raise InputError(f"{scene.name} gives no result {target}; its results are "
+                             f"{', '.join(sorted(problem.seen))}")
+        raise InputError(problem.no_root_message(_typed(parsed_goal, kind)))
+
+    inputs = dict(prepared.inputs)
+    inputs[target] = entry_from_parsed(target, parsed_goal, kind.dim, symbol=kind.symbol,
+                                       description=kind.description)
+    unit = "deg" if unknown.dim is ANGLE else unknown.dim.si
+    describe = f"{unknown.description} (solved from {target})"
+    names = [unknown.name] if len(roots) == 1 else \
+        [f"{unknown.name}_{i}" for i in range(1, len(roots) + 1)]
+    symbols = [unknown.name] if len(roots) == 1 else \
+        [f"{unknown.name}{i}" for i in range(1, len(roots) + 1)]
+    solved = {name: Entry(name, x, unknown.dim, unit=unit, symbol=symbol, description=describe)
+              for name, symbol, x in zip(names, symbols, roots)}
+    outcome, values, warnings = problem.evaluate(roots[0])
+    if len(roots) > 1:  # the other results differ from root to root: the roots alone
+        values = {}
+        shown = ", ".join(f"{_shown(x, unknown):.6g} {unit}" for x in roots)
+        warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
+                        f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
+    result = make_result(scene, inputs, outcome, values, warnings, command, solved)
+    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
+    if how[1]:
+        result.explanation = _noting(result._explanation,
+                                     f"{unknown.name} solved from {target}: {how[1]}")
+    return result
+
+
+def _split(scene: Scene, texts: dict[str, str], labels: dict[str, str]):
+    """``(target, its text, the parameters' texts, the names asked for as NAME=?)``."""
     targets = {n: t for n, t in texts.items() if scene.param(n) is None and is_result_name(n)}
     asked = [n for n, t in texts.items() if scene.param(n) is not None and t.strip() == "?"]
     known = {n: t for n, t in texts.items() if n not in targets and n not in asked}
@@ -65,22 +107,28 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     if len(targets) > 1:
         raise InputError(f"give one result to solve from, not {len(targets)} "
                          f"({', '.join(targets)}); compare the others with --check")
+    if len(asked) > 1:
+        raise InputError(f"give one unknown (NAME=?), not {len(asked)} ({', '.join(asked)})")
     (target, target_text), = targets.items()
     for group in scene.one_of:
         if not any(n in known or n in asked or scene.param(n).default is not None
                    for n in group):
             raise InputError(f"{target}= leaves {' or '.join(group)} unknown: give one of "
                              f"them, or one as NAME=? to solve for it")
-    prepared = read_inputs(scene, known, labels, strict, unknown=tuple(asked))
-    unknowns = asked + [n for n in prepared.missing if n not in asked]
-    if len(asked) > 1:
-        raise InputError(f"give one unknown (NAME=?), not {len(asked)} ({', '.join(asked)})")
+    return target, target_text, known, asked
+
+
+def _the_unknown(scene: Scene, target: str, asked: list[str], missing: list[str],
+                 labels: dict[str, str]):
+    """The one parameter to solve for: asked as ``NAME=?`` or the one required left out."""
+    unknowns = asked + [n for n in missing if n not in asked]
+    typed = labels.get(target, "")
     if not unknowns:
-        if target == "zeta" and not scene.accepts_zeta and "(from" not in labels.get(target, ""):
+        if target == "zeta" and not scene.accepts_zeta and "(from" not in typed:
             raise InputError(f"{scene.name} takes no zeta: {scene.no_zeta_because}; "
                              f"{_parameter_list(scene)}")
-        shown = labels.get(target, f"{target}=").split(" (from ")[-1].rstrip(")=")
-        shown = shown if "(from" in labels.get(target, "") else target
+        # delta= or Q= of damping-ratio --scene arrive as zeta (from delta)=
+        shown = typed.split(" (from ")[-1].rstrip(")=") if "(from" in typed else target
         raise InputError(f"{shown}= is a result of {scene.name} and every parameter is "
                          f"given: leave out the one to solve for (or give it as NAME=?), or "
                          f"compare with --check {shown}=...")
@@ -88,47 +136,10 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         raise InputError(f"{scene.name}: {target}= leaves {len(unknowns)} parameters unknown "
                          f"({', '.join(unknowns)}); give all but one")
     unknown = scene.param(unknowns[0])
-    if unknown.dim is None or unknown.name == "body":
+    if unknown.dim is None:
         raise InputError(f"{unknown.name} is a choice, not a number to solve for; give "
                          f"kappa=? for the shape factor")
-    label = labels.get(target, f"{target}=").rstrip("=")
-    kind = result_kind(target)
-    parsed_goal = parse_quantity(target_text, kind.dim, label=label, strict=strict)
-    goal = parsed_goal.si
-    problem = _Problem(scene, prepared, unknown, target, method, rtol)
-
-    roots, how = problem.roots_near(goal, key=(scene.name, unknown.name, target))
-    if not roots:
-        if problem.seen and target not in problem.seen:
-            raise InputError(f"{scene.name} gives no result {target}; its results are "
-                             f"{', '.join(sorted(problem.seen))}")
-        raise InputError(problem.no_root_message(_typed(parsed_goal, kind)))
-    inputs = dict(prepared.inputs)
-    inputs[target] = entry_from_parsed(target, parsed_goal, kind.dim, symbol=kind.symbol,
-                                       description=kind.description)
-    unit = "deg" if unknown.dim is ANGLE else unknown.dim.si
-    describe = f"{unknown.description} (solved from {target})"
-    if len(roots) == 1:
-        x = roots[0]
-        solved = {unknown.name: Entry(unknown.name, x, unknown.dim, unit=unit,
-                                      symbol=unknown.name, description=describe)}
-        outcome, values, warnings = problem.evaluate(x)
-        result = make_result(scene, inputs, outcome, values, warnings, command, solved)
-    else:
-        solved = {f"{unknown.name}_{i}": Entry(f"{unknown.name}_{i}", x, unknown.dim,
-                                               unit=unit, symbol=f"{unknown.name}{i}",
-                                               description=describe)
-                  for i, x in enumerate(roots, 1)}
-        outcome, _values, warnings = problem.evaluate(roots[0])
-        result = make_result(scene, inputs, outcome, {}, warnings, command, solved)
-        shown = ", ".join(f"{x:.6g} {unit}" for x in (_shown(x, unknown) for x in roots))
-        result.warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
-                               f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
-    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
-    if how[1]:
-        result.explanation = _noting(result._explanation, f"{unknown.name} solved from "
-                                                          f"{target}: {how[1]}")
-    return result
+    return unknown
 
 
 def _noting(explain, note: str):
