@@ -386,7 +386,7 @@ def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, 
         results["Omega"] = _entry("Omega", fa.Omega, True)
         if earth["derived_v"]:
             results["v_r"] = _entry("v_r", fa.v_r, True)
-        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * fa.Omega[2], False)
+        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]), False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
     substituted += _vector_lines(fa, full, None if mass is None else mass.si)

@@ -86,9 +86,7 @@ def traced_input(parsed, dim, label: str, allow_inf: bool, constraint: str | Non
     key = (source or label, parsed.text)
     if tape.nudge is None:
         if key not in tape.keys:
-            magnitude = float(parsed.quantity.magnitude)
-            scale = (parsed.si / magnitude if magnitude != 0
-                     else _unit_scale(parsed.quantity, dim))
+            scale = _unit_scale(parsed.quantity, dim)
             tape.keys[key] = len(tape.inputs)
             tape.inputs.append(_Input(source or label, parsed.si, parsed.uncertainty, scale))
         return parsed
@@ -125,7 +123,8 @@ def store_hint(key, value) -> None:
 
 
 def _unit_scale(quantity, dim) -> float:
-    """SI magnitude of one of ``quantity``'s units (for a value typed as zero)."""
+    """SI magnitude of one of ``quantity``'s units (a nudge in SI over it is the nudge in the
+    unit typed; not ``si / magnitude``, which is 0 when the value underflowed in SI)."""
     from .units import to_si
 
     return float(to_si(type(quantity)(1.0, quantity.units), dim, "unit"))

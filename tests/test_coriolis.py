@@ -632,3 +632,22 @@ def test_refusals(args, message):
 def test_library_refuses_with_input_error():
     with pytest.raises(InputError, match="--vr is missing"):
         coriolis_result({"omega": "0,0,1"})
+
+
+def test_earth_mode_coriolis_parameter_overflow_is_refused_without_a_numpy_warning():
+    """2 Omega sin(90 deg) with Omega = 1e308 rad/s overflows: one Error: line, and no numpy
+    RuntimeWarning (found by the long fuzz run; the product was of numpy scalars)."""
+    import warnings
+
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = CliRunner().invoke(cli, ["coriolis", "--latitude", "90deg", "--speed",
+                                          "0.001 knot", "--heading", "90deg", "--omega",
+                                          "1e308 rad/s"])
+    assert result.exit_code == 2
+    assert result.output == ("Error: coriolis_parameter overflows float64 at these inputs "
+                             "(beyond 1.8e308 1/s)\n")

@@ -88,3 +88,13 @@ def test_table_shows_value_plus_minus_two_figures():
     lines = result.output.splitlines()
     assert lines[2].split() == ["omega", "ω", "7.07107", "±", "0.25", "rad/s"]
     assert lines[-1] == "inputs: k = 100 ± 5 N/m, m = 2 ± 0.1 kg"
+
+
+def test_a_value_that_underflows_in_si_still_takes_its_nudges():
+    """4.9e-324 km/h is 0 in m/s: the nudge is scaled by the unit (0.2778 m/s per km/h), not by
+    si / magnitude (0 / 4.9e-324), which divided by zero (found by the long fuzz run)."""
+    result = _run(["rolling-onset", "--v0", "4.9e-324+/-1e300 km/h", "--mu", "5%", "--body",
+                   "hollow-sphere"], "")
+    assert result.exit_code == 0, result.output
+    assert "warning: the uncertainty of t_roll overflows float64" in result.output
+    assert "internal error" not in result.output
