@@ -511,6 +511,10 @@ def plot_decay(result: Result, path: str) -> str:
     except ImportError:
         raise InputError("--plot needs matplotlib: pip install 'dyncalc[plot]'") from None
 
+    zeta = result.results.get("zeta")
+    if "amplitudes" not in result.inputs and (zeta is None or zeta.overflowed):
+        raise InputError(f"--plot: zeta overflows float64 at these inputs, so there is no "
+                         f"decay to draw; {path[:80]!r} was not written")
     fig = Figure(figsize=(9.0, 4.8), dpi=100, layout="constrained")
     FigureCanvasAgg(fig)
     if "amplitudes" in result.inputs:

@@ -1040,8 +1040,8 @@ def judge(out: Outcome, limit: float = CALL_LIMIT) -> Outcome:
         p.append(f"exit status {out.exit_code}")
     if "Traceback" in out.stdout or "Traceback" in out.stderr:
         p.append("traceback printed")
-    if "internal error" in out.stderr:
-        kind = re.search(r"internal error \((\w+)", out.stderr)
+    if "Error: internal error (" in out.stderr:  # not the user's own words echoed
+        kind = re.search(r"Error: internal error \((\w+)", out.stderr)
         p.append(f"internal error ({kind.group(1) if kind else '?'})")
     lines = out.stderr.splitlines()
     if out.exit_code == 2:

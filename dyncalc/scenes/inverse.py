@@ -268,8 +268,10 @@ class _Problem:
         if power is not None:
             x1, y1, a = power
             if goal > 0 and y1 > 0:
-                with np.errstate(all="ignore"):
-                    x = x1 * math.exp(math.log(goal / y1) / float(a)) if goal != y1 else x1
+                try:  # x = x1 (goal / y1)^(1/a), in logarithms (the ratio may not be a float)
+                    x = x1 * math.exp((math.log(goal) - math.log(y1)) / float(a))
+                except OverflowError:
+                    x = math.inf
                 if math.isfinite(x) and x > 0 and self._close(self.y(x), goal):
                     return [x], ("closed-form", f"{self.target} is proportional to "
                                                 f"{self.param.name}^({a}): inverted exactly")
@@ -288,7 +290,8 @@ class _Problem:
         ys = [self.y(x) for x in xs]
         if not all(math.isfinite(y) and y > 0 for y in ys):
             return None
-        slopes = [math.log(ys[i + 1] / ys[i]) / math.log(xs[i + 1] / xs[i]) for i in (0, 1)]
+        slopes = [(math.log(ys[i + 1]) - math.log(ys[i])) / math.log(xs[i + 1] / xs[i])
+                  for i in (0, 1)]
         if abs(slopes[0] - slopes[1]) > 1e-9 or abs(slopes[0]) < 1e-9:
             return None
         a = Fraction(slopes[0]).limit_denominator(4)
