@@ -525,6 +525,8 @@ def plot_decay(result: Result, path: str) -> str:
         fig.savefig(target)
     except OSError as exc:
         raise InputError(f"--plot: cannot write {path[:80]!r}: {exc.strerror or exc}") from None
+    except ValueError as exc:  # a NUL in the path ("embedded null byte")
+        raise InputError(f"--plot: cannot write {path[:80]!r}: {exc}") from None
     result.extra["plot"] = str(target)
     return str(target)
 
@@ -554,8 +556,10 @@ def _draw_peaks(fig, result: Result) -> None:
     period = _value(result, "T_d")
     cycles = np.arange(n)
     fine = np.linspace(0.0, n - 1, 400)
-    if period is not None:
-        xs, xf, xlabel = cycles * period, fine * period, "time since the first peak (s)"
+    with np.errstate(over="ignore"):  # a period near 1e308 s: its multiples leave float64
+        timed = None if period is None else (cycles * period, fine * period)
+    if timed is not None and np.isfinite(timed[0]).all() and np.isfinite(timed[1]).all():
+        xs, xf, xlabel = timed[0], timed[1], "time since the first peak (s)"
     else:
         xs, xf, xlabel = cycles, fine, "cycle i"
     envelope = x0 * np.exp(-delta * fine)

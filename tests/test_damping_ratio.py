@@ -726,3 +726,35 @@ def test_matplotlib_and_scipy_optimize_load_only_when_needed():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout
     assert out.strip().splitlines()[-1] == "[]"
+
+
+def test_plot_path_with_a_nul_is_refused_in_one_line(tmp_path):
+    """matplotlib raises ValueError ("embedded null byte") for such a path: an Error: line,
+    not an internal error (found by the long fuzz run)."""
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+
+    path = str(tmp_path / "a\x00.png")
+    result = CliRunner().invoke(cli, ["damping-ratio", "--decrement", "0.5", "--plot", path])
+    assert result.exit_code == 2
+    assert result.output == (f"Error: --plot: cannot write {path[:80]!r}: embedded null "
+                             "byte\n")
+
+
+def test_peak_plot_with_a_period_near_float_max_draws_against_cycles(tmp_path):
+    """--omega 1e-306 rad/s: T_d = 6.3e306 s and 9 T_d overflows; the axis falls back to the
+    cycle count, with no numpy overflow warning (found by the long fuzz run)."""
+    import warnings
+
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = CliRunner().invoke(cli, ["damping-ratio", "--amplitudes", "1,0.8,0.64,0.5",
+                                          "--omega", "1e-306 rad/s", "--plot",
+                                          str(tmp_path / "p.png")])
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "p.png").stat().st_size > 0

@@ -30,6 +30,10 @@ from hypothesis import HealthCheck, Phase, seed  # noqa: E402
 
 import test_fuzz as fuzz  # noqa: E402
 
+#: DYNCALC_FUZZ_ARGV_LOG=FILE: append the whole argument list of every broken case to FILE
+#: (the tables cut them short).
+ARGV_LOG = __import__("os").environ.get("DYNCALC_FUZZ_ARGV_LOG")
+
 #: Kinds of refusal, by the first pattern their ``Error:`` line matches.
 REFUSAL_KINDS = [
     ("internal error (a bug)", r"internal error"),
@@ -103,6 +107,9 @@ class Tally:
             self.refusals[refusal_kind(out.stderr.splitlines()[0])] += 1
         if out.problems:
             self.broken += 1
+            if ARGV_LOG:  # every broken case's whole argument list, to replay it
+                with open(ARGV_LOG, "a", encoding="utf-8") as log:
+                    log.write(f"{out.argv!r}\t{out.problems!r}\n")
             for problem in dict.fromkeys(problem_kind(p) for p in out.problems):
                 self.problem_counts[problem] += 1
                 seen = [o.argv for o in self.problems[problem]]
