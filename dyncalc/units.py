@@ -98,22 +98,32 @@ def Q_(value: Any, unit: Any = ""):
 # would pay for (start-up, issue 8).
 
 
-class _Frozen:
-    """Equality, hash, repr and immutability of a frozen dataclass, from ``__slots__``."""
+class _Record:
+    """The repr and equality of a dataclass, from the field names in ``_fields()``
+    (``__slots__`` unless a class names them in ``_FIELDS``)."""
 
     __slots__ = ()
 
+    def _fields(self) -> tuple[str, ...]:
+        return getattr(self, "_FIELDS", self.__slots__)
+
     def _values(self) -> tuple:
-        return tuple(getattr(self, name) for name in self.__slots__)
+        return tuple(getattr(self, name) for name in self._fields())
 
     def __repr__(self) -> str:
-        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__slots__)
+        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._fields())
         return f"{type(self).__qualname__}({fields})"
 
     def __eq__(self, other):
         if other.__class__ is self.__class__:
             return self._values() == other._values()
         return NotImplemented
+
+
+class _Frozen(_Record):
+    """Equality, hash, repr and immutability of a frozen dataclass, from ``__slots__``."""
+
+    __slots__ = ()
 
     def __hash__(self) -> int:
         return hash(self._values())

@@ -11,12 +11,12 @@ from typing import Any
 
 import numpy as np
 
-from ..units import Q_
+from ..units import Q_, _Record
 
 __all__ = ["Outcome", "periodic", "damped", "periodic_arrays", "damped_arrays"]
 
 
-class Outcome:
+class Outcome(_Record):
     """The answer of one physics function.
 
     ``values`` maps result names to pint quantities (or plain floats for pure numbers, numpy
@@ -44,18 +44,6 @@ class Outcome:
         self.warnings = [] if warnings is None else warnings
         self.assumptions = [] if assumptions is None else assumptions
         self.exact_zeros = set() if exact_zeros is None else exact_zeros
-
-    def _values(self) -> tuple:
-        return tuple(getattr(self, name) for name in self._FIELDS)
-
-    def __repr__(self) -> str:
-        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._FIELDS)
-        return f"Outcome({fields})"
-
-    def __eq__(self, other):
-        if other.__class__ is self.__class__:
-            return self._values() == other._values()
-        return NotImplemented
 
 
 def periodic(omega_si: float, suffix: str = "") -> dict[str, Any]:
