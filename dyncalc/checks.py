@@ -20,7 +20,8 @@ def split_assignment(text: str, option: str) -> tuple[str, str]:
     """``"f=1.13Hz"`` -> ``("f", "1.13Hz")``; refuses anything else with the option's name."""
     m = _ASSIGN_RE.match(text)
     if not m or not m.group(2).strip():
-        raise InputError(f"{option} takes NAME=VALUE (for example {option} f=1.13Hz); "
+        example = f"{option} f=1.13Hz" if option.startswith("-") else "m=2kg"
+        raise InputError(f"{option} takes NAME=VALUE (for example {example}); "
                          f"got {text[:60]!r}")
     return m.group(1), m.group(2)
 
@@ -98,8 +99,8 @@ def slips(result: Result, name: str) -> list[tuple[str, float]]:
     damped omega_d for the undamped omega_n and back, degrees for radians (180/pi), a mass in
     grams read as kilograms (a factor 1000, or its square root where the result goes as
     m^(1/2)), the decrement per cycle for the one per radian (a factor 2 pi, or delta given as
-    zeta), and series for parallel (the slips the command itself computed,
-    :attr:`Result.slips`)."""
+    zeta), and series for parallel, at the top of a network or throughout it (the slips the
+    command itself computed, :attr:`Result.slips`)."""
     entry = result.results[name]
     value = entry.si
     out: list[tuple[str, float]] = []

@@ -394,13 +394,35 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
                     explanation=lambda: _explain(root, stiffness, dim, results["k_eq"]))
     result.add_underflow_warnings()
     if len(root.children) > 1:
-        parts = [combine(c) for c in root.children]
-        swap = series_stiffness if root.how == "parallel" else parallel_stiffness
-        other = "series" if root.how == "parallel" else "parallel"
-        swapped = float(swap(parts).to(si).magnitude)
-        result.slips["k_eq"] = {f"the elements combined in {other}, not in {root.how}":
-                                swapped}
+        result.slips["k_eq"] = _swapped_networks(root, combine, stiffness, si)
     return result
+
+
+def _swapped_networks(root: Group, combine, stiffness: dict, si: str) -> dict[str, float]:
+    """What a network gives with series and parallel swapped: at the top (its elements
+    combined the other way) and, for a nested network, everywhere."""
+    from .physics.springs import parallel_stiffness, series_stiffness
+
+    def other(how: str):
+        return series_stiffness if how == "parallel" else parallel_stiffness
+
+    def all_swapped(node):
+        if not isinstance(node, Group):
+            return stiffness[node.name]
+        return other(node.how)([all_swapped(c) for c in node.children])
+
+    flipped = "series" if root.how == "parallel" else "parallel"
+    ways = {f"the elements combined in {flipped}, not in {root.how}":
+            lambda: other(root.how)([combine(c) for c in root.children])}
+    if _is_nested(root):
+        ways["series and parallel swapped throughout the network"] = lambda: all_swapped(root)
+    slips = {}
+    for words, way in ways.items():
+        try:  # a slip beyond float64 is no slip anyone made
+            slips[words] = float(way().to(si).magnitude)
+        except (InputError, ArithmeticError):
+            continue
+    return slips
 
 
 def _is_nested(root: Group) -> bool:

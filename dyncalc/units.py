@@ -849,7 +849,9 @@ def _with_unit(reading: _Reading, unit, names: list[str], unit_text: str, label:
 def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: str,
                      strict: bool, allow_inf: bool, constraint: str | None,
                      source: str | None) -> Parsed:
-    """A quantity with its standard uncertainty; a side without a unit takes the other's."""
+    """A quantity with its standard uncertainty; a side without a unit takes the other's.
+    An uncertainty in percent (or permille, ppm) of a quantity with a dimension is relative:
+    ``100 N/m ± 5%`` is 5 N/m."""
     value_text, sigma_text, shared = split
     if not value_text.strip() or not any(ch.isdigit() for ch in sigma_text):
         raise _refuse(label, text, "write the value, then +/- or ±, then its standard "
@@ -859,6 +861,11 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
         sigma = _evaluate(sigma_text, label)
     except ReadError as exc:  # quote the whole text, not the half that failed
         raise _refuse(label, text, exc.why) from None
+    relative = (dim.kind != "dimensionless" and not shared.strip() and sigma.named
+                and set(sigma.names) <= _RELATIVE_UNITS)
+    if dim.kind == "dimensionless" and value.named != sigma.named and not shared.strip():
+        raise _refuse(label, text, "a pure number with a unit (%) on one side only is "
+                                   "ambiguous; write both sides alike: 5% ± 1% or 0.05 ± 0.01")
     if shared.strip():
         try:
             unit, names = _read_unit(shared, label)
@@ -867,6 +874,8 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
                                        "(100 ± 5) N/m") from None
         value = _with_unit(value, unit, names, shared, label, text)
         sigma = _with_unit(sigma, unit, names, shared, label, text)
+    elif relative:
+        pass
     elif value.named and not sigma.named:
         sigma = _Reading(sigma.quantity * value.quantity.units, True, value.unit_text,
                          value.names, value.mixed_turns)
@@ -874,13 +883,22 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
         value = _Reading(value.quantity * sigma.quantity.units, True, sigma.unit_text,
                          sigma.names, sigma.mixed_turns)
     parsed = _finish(value, text, dim, label, strict, allow_inf, constraint)
-    spread = _finish(sigma, text, dim, f"{label} (its uncertainty)", strict, False,
-                     "nonnegative")
+    spread_label = f"{label} (its uncertainty)"
+    if relative:
+        fraction = _finish(sigma, text, DIMENSIONLESS, spread_label, strict, False,
+                           "nonnegative").si
+        sigma_si = abs(parsed.si) * fraction
+    else:
+        sigma_si = _finish(sigma, text, dim, spread_label, strict, False, "nonnegative").si
     parsed = Parsed(parsed.quantity, parsed.si, parsed.assumed_si, parsed.unit_text, text,
-                    uncertainty=spread.si)
+                    uncertainty=sigma_si)
     from .uncertainty import traced_input
 
     return traced_input(parsed, dim, label, allow_inf, constraint, source)
+
+
+#: Units of an uncertainty that is a fraction of the value (``± 5%``).
+_RELATIVE_UNITS = frozenset({"percent", "permille", "ppm"})
 
 
 _VECTOR_RE = re.compile(r"^\s*[\(\[]([^\)\]]*)[\)\]]\s*(.*)$")

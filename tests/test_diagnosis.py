@@ -227,9 +227,27 @@ def test_wrong_answer_matching_no_slip_has_no_diagnosis(k, m, zeta, name, factor
 
 
 def test_wrong_network_answer_matching_no_slip():
-    """150 N/m is the answer; 366.67 N/m (every combination swapped) is not one of the listed
-    slips, nor is 200 N/m."""
-    for given_k in ("200N/m", "366.6667N/m"):
-        code, (only,) = check("spring-series", "parallel(100N/m, 200N/m)", "300N/m",
-                              "--check", f"k_eq={given_k}")
-        assert code == 1 and "diagnosis" not in only, given_k
+    """150 N/m is the answer; 200 N/m is no slip of the list. 366.67 N/m is every combination
+    swapped (series(100, 200) = 66.67 in parallel with 300), which is one."""
+    code, (only,) = check("spring-series", "parallel(100N/m, 200N/m)", "300N/m",
+                          "--check", "k_eq=200N/m")
+    assert code == 1 and "diagnosis" not in only
+    code, (only,) = check("spring-series", "parallel(100N/m, 200N/m)", "300N/m",
+                          "--check", "k_eq=366.6667N/m")
+    assert code == 1
+    assert only["diagnosis"] == "series and parallel swapped throughout the network"
+
+
+def test_nested_network_swapped_throughout():
+    """parallel(100, 200) in series with 300 and 400 N/m is 109.09 N/m; with every rule
+    swapped, series(100, 200) = 66.67 N/m in parallel with 300 and 400 gives 766.67 N/m."""
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+
+    swapped = 100 * 200 / 300 + 300 + 400
+    result = CliRunner().invoke(cli, ["spring-series", "parallel(100N/m, 200N/m)", "300N/m",
+                                      "400N/m", "--check", f"k_eq={swapped!r}N/m", "--json"])
+    assert result.exit_code == 1
+    check = json.loads(result.output)["checks"][0]
+    assert check["diagnosis"] == "series and parallel swapped throughout the network"

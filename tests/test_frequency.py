@@ -230,7 +230,7 @@ def test_explain_pendulum_says_how_wrong_small_angle_is():
                                                          "mass-spring; it offers auto (a closed "
                                                          "form only)"),
     (["--k", "1 N/m", "--m", "1 kg", "oops"], "Error: a scene parameter takes NAME=VALUE (for "
-                                              "example a scene parameter f=1.13Hz); got 'oops'"),
+                                              "example m=2kg); got 'oops'"),
     (["--k", "1 N/m", "--m", "1 kg", "--strict-units", "--zeta", "0.1"], None),
     (["--k", "100", "--m", "1 kg", "--strict-units"], "Error: --k: '100' has no unit and "
                                                       "--strict-units is on; write it with a "

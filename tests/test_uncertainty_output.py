@@ -98,3 +98,26 @@ def test_a_value_that_underflows_in_si_still_takes_its_nudges():
     assert result.exit_code == 0, result.output
     assert "warning: the uncertainty of t_roll overflows float64" in result.output
     assert "internal error" not in result.output
+
+
+def test_an_uncertainty_in_percent_of_a_dimensional_value_is_relative():
+    """100 N/m ± 5% is 100 ± 5 N/m; 2 kg +/- 5 % is 2 ± 0.1 kg (and 100 ± 5% bare is SI)."""
+    relative = json.loads(_run(["natural-frequency", "--k", "100 N/m ± 5%", "--m",
+                                "2 kg +/- 5 %", "--json"], "").output)
+    absolute = json.loads(_run(["natural-frequency", "--k", "(100 ± 5) N/m", "--m",
+                                "2 ± 0.1 kg", "--json"], "").output)
+    assert relative["inputs"]["k"]["uncertainty"] == 5.0
+    assert relative["inputs"]["m"]["uncertainty"] == 0.1
+    assert relative["results"] == absolute["results"]
+
+
+def test_a_percent_on_one_side_of_a_pure_number_is_refused_as_ambiguous():
+    result = _run(["natural-frequency", "--k", "100N/m", "--m", "2kg", "--zeta",
+                   "0.05 ± 10%"], "")
+    assert result.exit_code == 2
+    assert result.output == ("Error: --zeta: cannot read '0.05 ± 10%': a pure number with a "
+                             "unit (%) on one side only is ambiguous; write both sides alike: "
+                             "5% ± 1% or 0.05 ± 0.01\n")
+    both = json.loads(_run(["natural-frequency", "--k", "100N/m", "--m", "2kg", "--zeta",
+                            "5% ± 1%", "--json"], "").output)
+    assert both["inputs"]["zeta"] == {"value": 5.0, "uncertainty": 1.0, "unit": "%"}
