@@ -519,3 +519,17 @@ def test_solves_terminate():
 def test_python_api_refusals_are_input_errors():
     with pytest.raises(InputError, match=r"^give one result to solve from, not 2 \(f, T\)"):
         run_scene("mass-spring", {"f": "5 Hz", "T": "1 s", "m": "2 kg"})
+
+
+def test_a_chosen_method_is_scouted_cheaply_and_refined_with_itself():
+    """--method ode: the scan runs on the cheapest model good to 1e-6 and each root is
+    bracketed anew with the ODE; the root then agrees with the elliptic one to the ODE's own
+    tolerance (1e-9) and the JSON says the ODE computed the results."""
+    ode = json_of("natural-frequency", "--scene", "pendulum", "l=1m", "T=2.5s", "amplitude=?",
+                  "--method", "ode")
+    exact = json_of("natural-frequency", "--scene", "pendulum", "l=1m", "T=2.5s",
+                    "amplitude=?")
+    assert ode["method"] == "ode" and exact["method"] == "elliptic"
+    assert ode["results"]["amplitude"]["value"] == pytest.approx(
+        exact["results"]["amplitude"]["value"], rel=1e-9)
+    assert ode["results"]["T"]["value"] == pytest.approx(2.5, rel=1e-9)

@@ -20,6 +20,8 @@ How (decided here, SPEC.md "Inverse problems"):
    reported (``k_1``, ``k_2``, ... ascending) with a warning that there are several; none is
    refused with the range the result takes; a result that does not depend on the unknown (or
    more than :data:`MAX_ROOTS` roots) is refused, and so is a result the scene never gives.
+   With an expensive ``--method`` (an ODE), the scan uses the cheapest model good to 1e-6
+   and each root is then bracketed anew, close by, with the method asked for.
 
 Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
 catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
@@ -276,9 +278,39 @@ class _Problem:
                     return [x], ("closed-form", f"{self.target} is proportional to "
                                                 f"{self.param.name}^({a}): inverted exactly")
             # not a power law after all (one only where the probes were): search
-        return self._bracketed(goal), ("bracketed-root", "a sign change on a grid of "
-                                                         f"{self.param.name}, refined by "
-                                                         "Brent's method")
+        how = ("bracketed-root", f"a sign change on a grid of {self.param.name}, refined by "
+                                 "Brent's method")
+        if self.method not in (None, "auto") and self.scene.methods:
+            near = self._from_scout(goal)
+            if near is not None:
+                return near, how
+        return self._bracketed(goal), how
+
+    def _from_scout(self, goal: float) -> list[float] | None:
+        """The roots of a method chosen with ``--method`` (an ODE, say), found by scanning
+        with the cheapest model good to 1e-6 and bracketing each root anew, within 1e-6 to
+        1e-2 of it, with the chosen method; ``None`` when that does not find them all (the
+        whole scan is then made with the chosen method)."""
+        scout = _Problem(self.scene, self.prepared, self.param, self.target, None, 1e-6)
+        try:
+            near = scout._bracketed(goal)
+        except InputError:
+            return None
+        roots = []
+        for r in near:
+            for width in (1e-6, 1e-4, 1e-2):
+                step = width * abs(r) if r != 0 else width
+                root = self._root_between(r - step, r + step, goal)
+                if root is not None:
+                    roots.append(root)
+                    break
+            else:
+                return None
+        if not roots:
+            return None
+        self.seen |= scout.seen
+        self.samples = scout.samples
+        return _distinct(roots)
 
     @staticmethod
     def _close(y: float, goal: float) -> bool:
