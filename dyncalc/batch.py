@@ -881,7 +881,7 @@ class _Writer:
                 row.append(render.batch_cell(entry, self.col_units[name]))
                 if name in self.uncertain:
                     sigma = entry.uncertainty_in(self.col_units[name])
-                    row.append("" if sigma is None else render.batch_number(sigma))
+                    row.append("" if sigma is None else render.full_number(sigma))
             except InputError:
                 raise _Failure(f"its {name} cannot be shown in the column's unit "
                                f"{self.col_units[name]} (it is a "

@@ -110,7 +110,7 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
         if sigma is None:
             raise InputError(f"--value {name}: {entry.name} has no uncertainty (give one on "
                              "an input: 2.0+/-0.1 kg)")
-        return batch_number(sigma)
+        return full_number(sigma)
     entry = result.results.get(name)
     if entry is None:
         raise InputError(f"--value {name}: there is no result named {name!r}; the results are "
@@ -120,13 +120,12 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
     value, _unit = _shown(entry, units)
     if isinstance(value, str):
         return value
-    if hasattr(value, "__len__"):
-        return ",".join(repr(float(v)) for v in value)
-    return repr(float(value))
+    return full_number(value)
 
 
-def batch_number(value) -> str:
-    """A number in a batch CSV cell: ``repr`` of the float, vectors comma-separated."""
+def full_number(value) -> str:
+    """A number as ``--value`` and a batch CSV cell print it: ``repr`` of the float (full
+    precision), a vector's components comma-separated."""
     if hasattr(value, "__len__"):
         return ",".join(repr(float(v)) for v in value)
     return repr(float(value))
@@ -140,9 +139,7 @@ def batch_cell(entry: Entry, unit: str) -> str:
     value = entry.value_in(unit)
     if isinstance(value, str):
         return value
-    if hasattr(value, "__len__"):
-        return ",".join(repr(float(v)) for v in value)
-    return repr(float(value))
+    return full_number(value)
 
 
 def _header(result: Result) -> str:
