@@ -270,7 +270,7 @@ def _explain(scene: Scene, inputs: dict[str, Entry], results: dict[str, Entry],
                        + (f" {e.unit}" if e.unit else "") for e in results.values()]
 
     assumptions = [*scene.assumptions, *outcome.assumptions]
-    assumptions += [text for size in scene.sizes if (text := size(values))]
+    assumptions += [text for size in scene.sizes if (text := _sized(size, values))]
     zeta, omega, omega_d = (values.get(n) for n in ("zeta", "omega", "omega_d"))
     if zeta and omega and omega_d:
         assumptions.append(f"damping lowers the frequency: omega_d = omega sqrt(1 - zeta^2) is "
@@ -284,3 +284,12 @@ def _explain(scene: Scene, inputs: dict[str, Entry], results: dict[str, Entry],
                        substituted=substituted, assumptions=assumptions,
                        reference=scene.reference, latex=latex,
                        latex_substituted=latex_substituted, example=example)
+
+
+def _sized(size, values: dict) -> str | None:
+    """A scene's sentence on an assumption's size at these values; none where it cannot be
+    worked out in float64 (an input near 1e308)."""
+    try:
+        return size(values)
+    except (ArithmeticError, ValueError):
+        return None
