@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from typing import Any
 
 from .result import format_number
+from .units import _Frozen
 
 __all__ = ["Term", "Formula", "latex_escape", "unit_latex", "number_latex", "symbol_latex",
            "quantity_latex", "quantity_text", "tex_to_text", "render_formulas", "template_terms",
@@ -129,13 +129,13 @@ def quantity_text(value, unit: str, digits: int = DIGITS) -> str:
     return f"{number} {unit}" if unit else number
 
 
-@dataclass(frozen=True)
-class Term:
+class Term(_Frozen):
     """What ``$name`` stands for: its symbol (LaTeX) and its value in ``unit``."""
 
-    symbol: str
-    value: Any = None
-    unit: str = ""
+    __slots__ = ("symbol", "value", "unit")
+
+    def __init__(self, symbol: str, value: Any = None, unit: str = ""):
+        _set(self, symbol=symbol, value=value, unit=unit)
 
     def tex(self, digits: int) -> str:
         return quantity_latex(self.value, self.unit, digits)
@@ -148,12 +148,19 @@ class Term:
         return isinstance(self.value, (int, float)) and self.value < 0
 
 
-@dataclass(frozen=True)
-class Formula:
+class Formula(_Frozen):
     """A template used only ``when`` a predicate on the SI values by name holds."""
 
-    template: str
-    when: Any = None
+    __slots__ = ("template", "when")
+
+    def __init__(self, template: str, when: Any = None):
+        _set(self, template=template, when=when)
+
+
+def _set(record, **values) -> None:
+    """Fill a frozen record's fields (plain classes: no dataclass code made at import)."""
+    for name, value in values.items():
+        object.__setattr__(record, name, value)
 
 
 # --- LaTeX -> plain text ------------------------------------------------------------------

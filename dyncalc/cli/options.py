@@ -103,7 +103,6 @@ class Output:
         rows of ``--batch``; ``given`` maps the command's parameter options (``--k``) and
         words to what was typed, all of which must be empty: the file gives the parameters."""
         from ..batch import run_batch
-        from ..checks import split_assignment
 
         for option, used in (("--value", self.value is not None), ("--check", self.checks),
                              ("--explain", self.explain)):
@@ -119,6 +118,8 @@ class Output:
                              "every parameter comes from a column of the file")
         units = {}
         for spec_text in self.units:
+            from ..checks import split_assignment  # only with --unit (batch start-up)
+
             name, unit = split_assignment(spec_text, "--unit")
             units[name] = unit.strip()
         return run_batch(spec, self.batch, as_json=self.as_json, units=units,
