@@ -59,6 +59,7 @@ import numpy as np
 from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
 from .physics.numerics import sqrt_ratio_array
 from .physics.outcome import damped_arrays, periodic_arrays
+from .uncertainty import propagate
 
 __all__ = ["run_batch", "NaturalFrequencyRows", "SpringRows", "DampingRows", "RollingRows",
            "CoriolisRows", "CHUNK_ROWS", "ON_ERROR"]
@@ -1060,7 +1061,8 @@ def run_batch(spec: RowSpec, source: str, *, as_json: bool = False,
     if fast is None:
         fast = os.environ.get(GENERIC_ENV, "") in ("", "0")
     stream = open_source(source)
-    collecting = gc.isenabled()  # _run turns the collector on; put back as it was
+    collecting = gc.isenabled()
+    gc.enable()  # the rows stream for long: the collector is on (dyncalc.cli.main pauses it)
     try:
         return _run(spec, stream, as_json, dict(units or {}), on_error, debug, out, err,
                     fast and spec.fast is not None)
@@ -1089,7 +1091,6 @@ def _run(spec, stream, as_json, units, on_error, debug, out, err, fast) -> int:
     writer = _Writer([c.raw for c in columns], as_json, units, on_error, out, err)
     failed = False
     cache: dict = {}
-    gc.enable()  # the rows stream for long: the collector is on (dyncalc.cli.main pauses it)
     while (chunk := reader.chunk(CHUNK_ROWS)) is not None:
         row_failed, stopped = _compute(spec, columns, chunk, on_error, debug, fast, writer,
                                        cache)
@@ -1158,8 +1159,6 @@ def _generic(spec, columns, row, debug):
             texts[col.key] = with_header_unit(cell, col.unit)
             labels[col.key] = col.name
     try:
-        from .uncertainty import propagate
-
         return ("ok", propagate(lambda: spec.compute(texts, labels)))
     except InputError as exc:
         return ("error", " ".join(str(exc).split()))

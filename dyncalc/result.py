@@ -143,6 +143,21 @@ class Result:
     def explanation(self, value) -> None:
         self._explanation = value
 
+    def amend_explanation(self, change: Callable[[Explanation], None]) -> bool:
+        """Apply ``change`` to the explanation when it is built (still lazily); ``False``
+        when there is no explanation to amend."""
+        base = self._explanation
+        if base is None:
+            return False
+
+        def build():
+            explanation = base() if callable(base) else base
+            if explanation is not None:
+                change(explanation)
+            return explanation
+        self._explanation = build
+        return True
+
     def __repr__(self) -> str:
         return (f"Result(command={self.command!r}, scene={self.scene!r}, "
                 f"results={list(self.results)!r}, warnings={self.warnings!r})")

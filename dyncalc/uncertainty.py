@@ -240,8 +240,6 @@ def _attach(result, tape: _Tape, nominal, terms, failed) -> None:
                 key = tape.inputs[index].name
                 share[key] = share.get(key, 0.0) + (fraction if fraction > 1e-12 else 0.0)
             shares[name] = share
-    explanation = getattr(result, "explanation", None)
-    if explanation is not None:
-        explanation.variance = shares
-    else:
+    if not result.amend_explanation(lambda explanation: setattr(explanation, "variance",
+                                                                shares)):
         result.extra["variance"] = shares

@@ -709,30 +709,23 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
     return quantity
 
 
-def _convert(quantity, unit: str, label: str):
+def _convert(quantity, unit: str, label: str, shown=None):
     """``quantity.to(unit)``, refusing a conversion that overflows float64 (numpy's overflow
-    warning silenced: the refusal says it)."""
+    warning silenced: the refusal says it, quoting ``shown``, by default ``quantity``)."""
     import numpy as np
 
     with np.errstate(over="ignore", invalid="ignore"):
         out = quantity.to(unit)
     if not np.all(np.isfinite(out.magnitude)) and np.all(np.isfinite(quantity.magnitude)):
-        raise InputError(f"{label}: {format_quantity(quantity)} overflows float64 in "
-                         f"{unit.replace('**', '^')}")
+        quoted = format_quantity(quantity if shown is None else shown)
+        raise InputError(f"{label}: {quoted} overflows float64 in {unit.replace('**', '^')}")
     return out
 
 
 def to_si(quantity, dim: Dim, label: str = "value"):
     """The magnitude of ``quantity`` in ``dim.si`` (float or array); refuses an overflow."""
     q = _normalise(quantity, dim, label)
-    import numpy as np
-
-    with np.errstate(over="ignore", invalid="ignore"):
-        mag = q.to(dim.si.replace("^", "**")).magnitude if dim.si else q.to("").magnitude
-
-    if not np.all(np.isfinite(mag)) and np.all(np.isfinite(q.magnitude)):
-        raise InputError(f"{label}: {format_quantity(quantity)} overflows float64 in {dim.si}")
-    return mag
+    return _convert(q, dim.si.replace("^", "**"), label, shown=quantity).magnitude
 
 
 def _check_value(si, dim: Dim, label: str, allow_inf: bool, constraint: str | None, q):
@@ -837,13 +830,13 @@ def _split_uncertainty(text: str, label: str) -> tuple[str, str, str] | None:
 
 
 def _with_unit(reading: _Reading, unit, names: list[str], unit_text: str, label: str,
-               text: str) -> _Reading:
-    """``reading`` (a plain number) times ``unit`` (typed as ``unit_text``), as if typed
-    together."""
+               text: str, mixed_turns: bool = False) -> _Reading:
+    """``reading`` (a plain number) times ``unit`` (typed as ``unit_text``, mixing
+    revolutions with cycles if ``mixed_turns``), as if typed together."""
     if reading.named:
         raise _refuse(label, text, "give the unit once, after the parentheses: (100 ± 5) N/m")
     return _Reading(reading.quantity * unit, True, unit_text.strip(), names,
-                    reading.mixed_turns)
+                    reading.mixed_turns or mixed_turns)
 
 
 def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: str,
@@ -874,14 +867,11 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
                                        "(100 ± 5) N/m") from None
         value = _with_unit(value, unit, names, shared, label, text)
         sigma = _with_unit(sigma, unit, names, shared, label, text)
-    elif relative:
-        pass
-    elif value.named and not sigma.named:
-        sigma = _Reading(sigma.quantity * value.quantity.units, True, value.unit_text,
-                         value.names, value.mixed_turns)
-    elif sigma.named and not value.named:
-        value = _Reading(value.quantity * sigma.quantity.units, True, sigma.unit_text,
-                         sigma.names, sigma.mixed_turns)
+    elif value.named != sigma.named and not relative:  # the bare side takes the other's unit
+        bare, named = (sigma, value) if value.named else (value, sigma)
+        bare = _with_unit(bare, named.quantity.units, named.names, named.unit_text, label, text,
+                          named.mixed_turns)
+        value, sigma = (named, bare) if value.named else (bare, named)
     parsed = _finish(value, text, dim, label, strict, allow_inf, constraint)
     spread_label = f"{label} (its uncertainty)"
     if relative:

@@ -92,8 +92,8 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     result = make_result(scene, inputs, outcome, values, warnings, command, solved)
     result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
     if how[1]:
-        result.explanation = _noting(result._explanation,
-                                     f"{unknown.name} solved from {target}: {how[1]}")
+        note = f"{unknown.name} solved from {target}: {how[1]}"
+        result.amend_explanation(lambda explanation: explanation.assumptions.append(note))
     return result
 
 
@@ -144,14 +144,6 @@ def _the_unknown(scene: Scene, target: str, asked: list[str], missing: list[str]
     return unknown
 
 
-def _noting(explain, note: str):
-    """The explanation ``explain`` (built later, if it is a function) with ``note`` added."""
-    def build():
-        explanation = explain() if callable(explain) else explain
-        if explanation is not None:
-            explanation.assumptions.append(note)
-        return explanation
-    return build
 
 
 def _typed(parsed, kind) -> str:
@@ -413,4 +405,3 @@ def _distinct(roots: list[float]) -> list[float]:
         if not out or abs(r - out[-1]) > 1e-9 * max(abs(r), abs(out[-1])):
             out.append(r)
     return out
-
