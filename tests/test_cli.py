@@ -300,6 +300,8 @@ def test_internal_error_one_line_and_debug_traceback(monkeypatch):
                                 "or [force]*[length]/[angle]; got 5 kilogram ([mass])"),
     (["spring-series", "--foo"], "Error: No such option '--foo'; see 'dyncalc "
                                  "spring-series --help'"),
+    (["spring-series", "--jsn"], "Error: No such option '--jsn' (did you mean '--json'?); "
+                                 "see 'dyncalc spring-series --help'"),
     (["frobnicate"], "Error: No such command 'frobnicate'; see 'dyncalc --help'"),
     (["spring-parallel", "1e308N/m", "1e308N/m"], "Error: k_eq overflows float64 (the largest "
                                                   "is 1.8e308 N/m)"),

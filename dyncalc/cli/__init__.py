@@ -100,7 +100,7 @@ class DyncalcGroup(click.Group):
         except click.ClickException as exc:
             command = _command_name(args)
             hint = f"; see 'dyncalc {command} --help'" if command else "; see 'dyncalc --help'"
-            shown = _one_line(exc.format_message()).rstrip(".")
+            shown = _one_line(_usage_message(exc)).rstrip(".")
             click.echo(f"Error: {shown}{_one_line(hint)}", err=True)
             code = EXIT_BAD_INPUT
         except InputError as exc:
@@ -140,6 +140,21 @@ def _explain_equals(args: list[str]) -> list[str]:
         else:
             out.append(arg)
     return out
+
+
+def _usage_message(exc: click.ClickException) -> str:
+    """click's message, with an unknown option said the same way whatever click's version
+    (8.2 writes ``No such option: --foo``, later ones ``No such option '--foo'.`` with their
+    own suggestion): ``No such option '--jsn' (did you mean '--json'?)``."""
+    if not isinstance(exc, click.NoSuchOption):
+        return exc.format_message()
+    from difflib import get_close_matches
+
+    message = f"No such option {exc.option_name!r}"
+    close = get_close_matches(exc.option_name, exc.possibilities or [])
+    if close:
+        message += f" (did you mean {' or '.join(repr(c) for c in close)}?)"
+    return message
 
 
 def _command_name(args: list[str]) -> str | None:

@@ -15,7 +15,7 @@ import math
 
 from ..errors import PhysicsError
 from ..units import Q_
-from .numerics import HALF_TURN, PI_LO, monomial, sqrt_ratio
+from .numerics import HALF_TURN, PI_LO, UNIT_ROUNDOFF, monomial, sqrt_ratio
 from .oscillators import _SHORT, _amplitude_parts, _si
 from .outcome import Outcome, periodic
 
@@ -31,6 +31,17 @@ PI_MINUS_2 = (math.pi - 2.0) + PI_LO
 QUAD_FLOOR = 8.0 * 2.0 ** -52
 #: The smallest relative tolerance solve_ivp's DOP853 accepts (100 eps).
 ODE_FLOOR = 100.0 * 2.0 ** -52
+
+#: Relative rounding bound of one quadrature node ``sqrt((1 + c x) / (1 - x))``,
+#: ``x = k2 sin^2(i pi / n)``: the node's angle and sine (2u), the square and the product with
+#: ``k2`` (2u), so ``x`` within 6u; ``c``, ``1 + c x``, ``1 - x`` (whose sensitivity to ``x`` is
+#: ``x / (1 - x) <= 1`` below 90 degrees) and the quotient, 6u more; the square root halves
+#: that and adds 1u. 16u leaves a margin over the 13u counted.
+SHELL_NODE_ROUNDING = 16.0 * UNIT_ROUNDOFF
+#: Relative rounding from the factor to the printed period: ``omega0`` by ``sqrt_ratio`` of
+#: ``g`` and ``(pi - 2) r`` (5u with the product), the quotient by the factor (1u), and
+#: ``T = 2 pi / omega`` (2u), counted with a margin.
+SHELL_OUTPUT_ROUNDING = 10.0 * UNIT_ROUNDOFF
 
 #: ``kt / (m g l)`` below which the rod-torsion-spring has equilibria past the vertical:
 #: ``sin(psi)`` with ``psi`` in (pi/2, pi) the root of ``psi sin(psi) + cos(psi) = 0``
@@ -63,8 +74,10 @@ def _shell_quadrature(k2: float, rtol: float) -> tuple[float, float]:
     values at ``N`` equally spaced points converges geometrically (its nearest complex
     singularity, ``sin^2 u = -(pi - 2)/4``, lies about 0.5 off the real axis: the error falls
     like ``exp(-N)``). ``N`` doubles from 16 until two estimates agree to ``rtol / 10`` (at
-    most 1024 points); their difference, an overestimate of the finer one's error, is
-    returned. numpy only, in microseconds: no scipy import on this path.
+    most 1024 points); their difference, an overestimate of the finer one's truncation error,
+    plus the rounding of the arithmetic (each node within :data:`SHELL_NODE_ROUNDING`, the
+    mean by ``math.fsum`` exact to one rounding) is returned, so the estimate bounds the whole
+    error of the computed mean. numpy only, in microseconds: no scipy import on this path.
     """
     import numpy as np
 
@@ -72,14 +85,14 @@ def _shell_quadrature(k2: float, rtol: float) -> tuple[float, float]:
 
     def mean(n: int) -> float:
         x = k2 * np.sin(np.arange(n) * (math.pi / n)) ** 2
-        return float(np.mean(np.sqrt((1.0 + c * x) / (1.0 - x))))
+        return math.fsum(np.sqrt((1.0 + c * x) / (1.0 - x)).tolist()) / n
 
     n, previous = 16, mean(8)
     while True:
         current = mean(n)
         error = abs(current - previous) / current
         if error <= 0.1 * max(rtol, QUAD_FLOOR) or n >= 1024:
-            return current, error
+            return current, error + SHELL_NODE_ROUNDING + UNIT_ROUNDOFF
         n, previous = 2 * n, current
 
 
@@ -159,7 +172,10 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
     ``omega_0``. ``error_estimate`` is the relative period error ``|T_model - T| / T``: for
     ``linear`` the bound (which also bounds ``T/T0 - 1``), or the quadrature's
     ``1 - T0/T`` when the bound misses ``rtol``; for ``quadrature`` the difference of its last
-    two refinements; for ``ode`` its difference from the quadrature plus that estimate.
+    two refinements; for ``ode`` its difference from the quadrature plus that estimate. The
+    nonlinear methods' estimates include the rounding of the arithmetic (the quadrature's nodes
+    and sum, and the steps from the factor to ``T``), so each is an upper bound of the true
+    relative error, never an approximation of it.
 
     Notes
     -----
@@ -205,7 +221,9 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
     if method == "linear":
         error, size = bound, "at most "
         if bound > rtol:
-            error, size = 1.0 - 1.0 / _shell_quadrature(k2, rtol)[0], ""
+            factor, quad_error = _shell_quadrature(k2, rtol)
+            error, size = 1.0 - 1.0 / factor + quad_error, ""
+        error += SHELL_OUTPUT_ROUNDING
         values = periodic(omega0)
         values["omega_0"] = omega_0
         out = Outcome(values, model="linear", method="linear", error_estimate=error,
@@ -221,11 +239,13 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
                   f"an amplitude of {shown}")
     if method == "ode":
         ode_factor = _shell_ode(phi0, rtol) if phi0 > 0.0 else 1.0
-        error = abs(ode_factor / factor - 1.0) + error  # triangle inequality
+        # triangle inequality; the quotient's own rounding is one more u
+        error = abs(ode_factor / factor - 1.0) + error + UNIT_ROUNDOFF
         factor = ode_factor
         how = "integrated with DOP853 to the upright position (error: against the quadrature)"
     else:
         how = "by the periodic trapezoidal rule on the energy integral"
+    error += SHELL_OUTPUT_ROUNDING
     values = periodic(omega0 / factor)
     values["omega_0"] = omega_0
     out = Outcome(values, model="nonlinear", method=method, error_estimate=error,
