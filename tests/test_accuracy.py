@@ -29,9 +29,9 @@ import mpmath
 import numpy as np
 import pytest
 
-from dyncalc.damping import damping_ratio
+from dyncalc.commands.damping_ratio import damping_ratio
 from dyncalc.errors import InputError
-from dyncalc.frames import coriolis_result
+from dyncalc.commands.coriolis import coriolis_result
 from dyncalc.physics import springs
 from dyncalc.physics.numerics import (SERIES_MAX_TERMS, agm, agm_array, agm_compensated,
                                       bracketed_root, cross_product, guarded_acos,
@@ -39,7 +39,7 @@ from dyncalc.physics.numerics import (SERIES_MAX_TERMS, agm, agm_array, agm_comp
 from dyncalc.physics.damping import CRITICAL_BAND
 from dyncalc.physics.oscillators import large_amplitude
 from dyncalc.physics.rotating import BIFURCATION_ULPS
-from dyncalc.rolling import rolling_onset_result
+from dyncalc.commands.rolling_onset import rolling_onset_result
 from dyncalc.scenes.runner import run_scene
 from dyncalc.units import Q_
 

@@ -279,12 +279,12 @@ def test_strict_units():
 
 
 def test_internal_error_one_line_and_debug_traceback(monkeypatch):
-    import dyncalc.networks
+    import dyncalc.commands.springs
 
     def boom(*a, **k):
         raise RuntimeError("simulated bug")
 
-    monkeypatch.setattr(dyncalc.networks, "network_stiffness", boom)
+    monkeypatch.setattr(dyncalc.commands.springs, "network_stiffness", boom)
     result = run("spring-series", "1 N/m")
     assert result.exit_code == 2
     assert error_line(result) == ("Error: internal error (RuntimeError: simulated bug); please "
@@ -355,7 +355,7 @@ def test_no_color_on_a_terminal(monkeypatch):
     from rich.console import Console
 
     from dyncalc.cli.render import rich_text
-    from dyncalc.networks import network_stiffness
+    from dyncalc.commands.springs import network_stiffness
 
     monkeypatch.setenv("NO_COLOR", "1")
     buffer = io.StringIO()

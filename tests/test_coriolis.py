@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 from dyncalc.cli import cli
 from dyncalc.errors import InputError
-from dyncalc.frames import coriolis_result
+from dyncalc.commands.coriolis import coriolis_result
 from dyncalc.physics.frames import EARTH_RATE, cos_sin_degrees, relative_acceleration
 
 W = EARTH_RATE

@@ -19,7 +19,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
-from dyncalc.damping import damping_ratio
+from dyncalc.commands.damping_ratio import damping_ratio
 from dyncalc.physics.damping import (CRITICAL_BAND, damping_from_coefficients,
                                      damping_from_decrement, damping_from_zeta,
                                      decrement_from_zeta, free_response, zeta_from_decrement)

@@ -18,7 +18,7 @@ import shlex
 import mpmath
 import pytest
 
-from dyncalc.cli.frequency import STANDARD
+from dyncalc.cli.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.scenes import get_scene, scene_names
 from dyncalc.scenes.runner import run_scene

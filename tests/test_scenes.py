@@ -8,10 +8,10 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc.cli import cli
-from dyncalc.cli.frequency import STANDARD
+from dyncalc.cli.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.scenes import catalog, get_scene
-from dyncalc.scenes.results import result_kind
+from dyncalc.result.kinds import result_kind
 from dyncalc.scenes.runner import run_scene
 from dyncalc.units import convert, parse_quantity
 

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from dyncalc.errors import InputError
-from dyncalc.networks import network_stiffness
+from dyncalc.commands.springs import network_stiffness
 from dyncalc.physics import springs
 from dyncalc.physics.numerics import monomial, parallel_sum, series_sum
 from dyncalc.units import Q_

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from dyncalc.scenes.runner import run_scene
-from dyncalc.uncertainty import propagate
+from dyncalc.result.propagate import propagate
 from helpers import error_line, invoke, json_of
 
 TWO_PI = 2 * math.pi
@@ -219,7 +219,7 @@ def test_variance_shares_always_sum_to_one():
 
 
 def test_python_api():
-    """dyncalc.uncertainty.propagate over run_scene: SI uncertainties on the entries."""
+    """dyncalc.result.propagate.propagate over run_scene: SI uncertainties on the entries."""
     result = propagate(lambda: run_scene("mass-spring", {"k": "100+/-5 N/m", "m": "2 kg"}))
     assert result.results["omega"].uncertainty == pytest.approx(math.sqrt(50) * 0.025,
                                                                 rel=DIFF_TOL)

@@ -23,8 +23,8 @@ __all__ = ["cli", "main"]
 #: Command name -> the module under ``dyncalc.cli`` that defines it (in its ``COMMANDS``).
 COMMAND_MODULES = {
     "spring-series": "springs", "spring-parallel": "springs",
-    "natural-frequency": "frequency", "damping-ratio": "damping",
-    "rolling-onset": "rolling", "coriolis": "coriolis", "scenes": "scenes",
+    "natural-frequency": "natural_frequency", "damping-ratio": "damping_ratio",
+    "rolling-onset": "rolling_onset", "coriolis": "coriolis", "scenes": "scenes",
 }
 
 

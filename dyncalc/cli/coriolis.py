@@ -67,7 +67,7 @@ def coriolis(out, **options):
 
         return out.run_batch(CoriolisRows(strict=out.strict),
                              {f"--{o}": v for o, v in options.items()})
-    from ..frames import coriolis_result
+    from ..commands.coriolis import coriolis_result
 
     return out.emit(out.compute(lambda: coriolis_result(options, strict=out.strict)))
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from ..explain import latex_escape
-from ..result import Explanation
+from ..result.explain import latex_escape
+from ..result.entries import Explanation
 
 __all__ = ["FORMATS", "render_explanation", "text_lines", "markdown", "latex",
            "variance_line"]

@@ -49,7 +49,7 @@ class Output:
         return f"Output({fields})"
 
     def unit_map(self, result) -> dict[str, str]:
-        from ..checks import split_assignment
+        from ..result.checks import split_assignment
 
         units = {}
         for spec in self.units:
@@ -65,8 +65,8 @@ class Output:
 
     def compute(self, run):
         """``run()`` (a Result), with the uncertainties of inputs typed with ``±`` propagated
-        to its results (:func:`dyncalc.uncertainty.propagate`)."""
-        from ..uncertainty import propagate
+        to its results (:func:`dyncalc.result.propagate.propagate`)."""
+        from ..result.propagate import propagate
 
         return propagate(run)
 
@@ -77,7 +77,7 @@ class Output:
         units = self.unit_map(result) if self.units else {}
         checks = []
         if self.checks:
-            from ..checks import run_checks
+            from ..result.checks import run_checks
 
             checks = run_checks(result, self.checks, self.rtol)
         if self.value is not None:
@@ -118,7 +118,7 @@ class Output:
                              "every parameter comes from a column of the file")
         units = {}
         for spec_text in self.units:
-            from ..checks import split_assignment  # only with --unit (batch start-up)
+            from ..result.checks import split_assignment  # only with --unit (batch start-up)
 
             name, unit = split_assignment(spec_text, "--unit")
             units[name] = unit.strip()

@@ -11,10 +11,10 @@ import math
 from typing import TYPE_CHECKING
 
 from ..errors import InputError, one_line
-from ..result import Entry, Result, format_number
+from ..result.entries import Entry, Result, format_number
 
 if TYPE_CHECKING:
-    from ..checks import Check
+    from ..result.checks import Check
 
 __all__ = ["to_json", "json_data", "bare_value", "batch_cell", "plain_text", "rich_text",
            "format_number"]

@@ -34,7 +34,7 @@ def _network_command(how: str, summary: str, examples: str):
             from ..batch import SpringRows
 
             return out.run_batch(SpringRows(how, strict=out.strict), {"": elements})
-        from ..networks import network_stiffness
+        from ..commands.springs import network_stiffness
 
         return out.emit(out.compute(
             lambda: network_stiffness(how, list(elements), strict=out.strict)))

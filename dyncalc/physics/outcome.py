@@ -11,12 +11,13 @@ from typing import Any
 
 import numpy as np
 
-from ..units import Q_, _Record
+from ..units import Q_
+from ..records import Record
 
 __all__ = ["Outcome", "periodic", "damped", "periodic_arrays", "damped_arrays"]
 
 
-class Outcome(_Record):
+class Outcome(Record):
     """The answer of one physics function.
 
     ``values`` maps result names to pint quantities (or plain floats for pure numbers, numpy

@@ -15,7 +15,7 @@ import importlib
 from typing import Any
 
 from ..errors import InputError
-from ..units import _Frozen
+from ..records import Frozen
 
 __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names"]
 
@@ -31,7 +31,7 @@ CATALOG_MODULES: tuple[str, ...] = (
 # and compiles their methods at import, which every one-off run would pay for (issue 8).
 
 
-class Param(_Frozen):
+class Param(Frozen):
     """One parameter of a scene.
 
     ``dim`` is a :class:`dyncalc.units.Dim` (``None`` for a choice such as ``body``);
@@ -57,7 +57,7 @@ class Param(_Frozen):
         return f"{self.name} {kind}" + ("?" if self.optional else "")
 
 
-class Constraint(_Frozen):
+class Constraint(Frozen):
     """A relation between parameters (``R > r``): ``holds`` takes the SI values by name."""
 
     __slots__ = ("text", "holds", "why")
@@ -66,7 +66,7 @@ class Constraint(_Frozen):
         _set_all(self, text, holds, why)
 
 
-class Scene(_Frozen):
+class Scene(Frozen):
     """One set-up: what it is, what it needs, what it computes and where it comes from.
 
     ``compute`` is the physics function as ``"module:name"``; ``equation`` the equation of
@@ -76,7 +76,7 @@ class Scene(_Frozen):
     ``methods`` the methods besides ``auto`` (empty: closed form only); ``accepts_zeta``: whether
     ``--zeta`` adds damped results (``no_zeta_because`` says why not). ``latex`` holds the
     formula lines in LaTeX, ``$name`` for a parameter or result (strings or
-    :class:`dyncalc.explain.Formula`, used only when its condition holds); ``sizes`` functions
+    :class:`dyncalc.result.explain.Formula`, used only when its condition holds); ``sizes`` functions
     of the SI values by name (and ``method``) that say how large an assumption's error is at
     these inputs (a sentence, or None).
     """

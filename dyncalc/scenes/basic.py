@@ -1,7 +1,7 @@
 """Catalog: the basic oscillators (mass-spring, torsional, pendulum, physical pendulum)."""
 from __future__ import annotations
 
-from ..explain import Formula
+from ..result.explain import Formula
 from ..units import ACCELERATION, ANGLE, INERTIA, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from . import Param, Scene, register
 

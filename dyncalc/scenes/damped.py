@@ -9,10 +9,10 @@ from __future__ import annotations
 import math
 
 from ..units import ACCELERATION, DAMPING, LENGTH, MASS, STIFFNESS
-from ..explain import Formula
+from ..result.explain import Formula
 from . import Param, Scene, register
 from .basic import gravity
-from .results import LINEAR_DRAG
+from ..result.kinds import LINEAR_DRAG
 
 
 def small_damping_error(values) -> str | None:

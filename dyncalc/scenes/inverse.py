@@ -35,10 +35,10 @@ from fractions import Fraction
 import numpy as np
 
 from ..errors import InputError
-from ..result import Entry, entry_from_parsed
+from ..result.entries import Entry, entry_from_parsed
 from ..units import ANGLE, DIMENSIONLESS, parse_quantity, registry
 from . import Scene
-from .results import result_kind
+from ..result.kinds import result_kind
 from .runner import (Prepared, check_constraints, compute_values, is_result_name,
                      make_result, read_inputs, set_parameter, _entry, _parameter_list)
 
@@ -228,7 +228,7 @@ class _Problem:
     def roots_near(self, goal: float, key) -> tuple[list[float], tuple[str, str]]:
         """:meth:`roots`; in a re-run of uncertainty propagation (inputs nudged by 1e-6),
         first within 0.1 % of the roots the run as typed found, each bracketed anew."""
-        from ..uncertainty import nudged_hint, store_hint
+        from ..result.propagate import nudged_hint, store_hint
 
         hint = nudged_hint(key)
         if hint is not None:

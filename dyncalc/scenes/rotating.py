@@ -10,7 +10,7 @@ import math
 
 from ..units import (ACCELERATION, ANGULAR_RATE, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS,
                      VELOCITY)
-from ..explain import Formula
+from ..result.explain import Formula
 from . import Constraint, Param, Scene, register
 from .basic import amplitude, gravity
 

@@ -12,10 +12,10 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..result import Entry, Explanation, Result, entry_from_parsed, format_number
+from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
 from ..units import DIMENSIONLESS, parse_quantity, to_si
 from . import Scene, get_scene
-from .results import result_kind
+from ..result.kinds import result_kind
 
 __all__ = ["run_scene", "infer_scene", "is_result_name", "read_inputs", "compute_values",
            "make_result", "DEFAULT_RTOL"]
@@ -251,7 +251,7 @@ def _explain(scene: Scene, inputs: dict[str, Entry], results: dict[str, Entry],
              outcome) -> Explanation:
     """The formula of ``scene`` in symbols and with these values (plain text and LaTeX), its
     assumptions with their size at these inputs, and its textbook example."""
-    from ..explain import Term, render_formulas, symbol_latex, template_terms
+    from ..result.explain import Term, render_formulas, symbol_latex, template_terms
 
     symbols = {p.name: p.symbol for p in scene.params if p.symbol}
     terms = template_terms([*inputs.values(), *results.values()], symbols)

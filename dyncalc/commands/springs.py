@@ -26,9 +26,9 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from .errors import InputError, PhysicsError
-from .result import Entry, Explanation, Result, entry_from_parsed
-from .units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, SECOND_MOMENT, STIFFNESS,
+from ..errors import InputError, PhysicsError
+from ..result.entries import Entry, Explanation, Result, entry_from_parsed
+from ..units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, SECOND_MOMENT, STIFFNESS,
                     TORSIONAL_STIFFNESS, Dim, parse_quantity)
 
 __all__ = ["ELEMENTS", "network_stiffness", "parse_network"]
@@ -297,7 +297,7 @@ def _resolve_shared(root, shared: dict[str, str], strict: bool) -> None:
 
 
 def _element_stiffness(element: Element):
-    from .physics import springs
+    from ..physics import springs
 
     kind = element.kind
     q = {p: v.quantity for p, v in element.parsed.items()}
@@ -331,7 +331,7 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
     >>> network_stiffness("series", ["200 N/m", "300 N/m"]).results["k_eq"].si
     120.0
     """
-    from .physics.springs import parallel_stiffness, series_stiffness
+    from ..physics.springs import parallel_stiffness, series_stiffness
 
     root, shared = parse_network(how, words, strict)
     stiffness: dict[str, object] = {}
@@ -401,7 +401,7 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
 def _swapped_networks(root: Group, combine, stiffness: dict, si: str) -> dict[str, float]:
     """What a network gives with series and parallel swapped: at the top (its elements
     combined the other way) and, for a nested network, everywhere."""
-    from .physics.springs import parallel_stiffness, series_stiffness
+    from ..physics.springs import parallel_stiffness, series_stiffness
 
     def other(how: str):
         return series_stiffness if how == "parallel" else parallel_stiffness
@@ -451,7 +451,7 @@ def _latex(node) -> str:
 
 
 def _explain(root, stiffness, dim: Dim, k_eq: Entry | None = None) -> Explanation:
-    from .explain import Term, render_formulas, symbol_latex
+    from ..result.explain import Term, render_formulas, symbol_latex
 
     si = dim.si.replace("^", "**")
     formula = ["k_eq = " + _formula(root)]

@@ -5,9 +5,9 @@ import math
 import re
 from dataclasses import dataclass
 
-from .errors import InputError
-from .result import Result
-from .units import convert, parse_quantity
+from ..errors import InputError
+from .entries import Result
+from ..units import convert, parse_quantity
 
 __all__ = ["Check", "run_checks", "split_assignment"]
 

@@ -18,7 +18,7 @@ Two paths give the same numbers:
 
 * the generic path evaluates each row through the same library call as the one-off command
   (:class:`NaturalFrequencyRows` calls :func:`dyncalc.scenes.runner.run_scene`,
-  :class:`SpringRows` :func:`dyncalc.networks.network_stiffness`, ...);
+  :class:`SpringRows` :func:`dyncalc.commands.springs.network_stiffness`, ...);
 * a vectorised path (:func:`_natural_frequency_fast`) computes whole chunks of
   ``natural-frequency`` rows of the closed-form linear scenes (mass-spring, torsional, the
   pendulum without an amplitude) at once with numpy, with the same kernels written for arrays
@@ -56,10 +56,10 @@ from typing import Any
 
 import numpy as np
 
-from .errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
-from .physics.numerics import sqrt_ratio_array
-from .physics.outcome import damped_arrays, periodic_arrays
-from .uncertainty import propagate
+from ..errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
+from ..physics.numerics import sqrt_ratio_array
+from ..physics.outcome import damped_arrays, periodic_arrays
+from ..result.propagate import propagate
 
 __all__ = ["run_batch", "NaturalFrequencyRows", "SpringRows", "DampingRows", "RollingRows",
            "CoriolisRows", "CHUNK_ROWS", "ON_ERROR"]
@@ -125,7 +125,7 @@ class Column:
 def read_header(line: int, cells: list[str], spec) -> list[Column]:
     """The header's columns, checked: names the command reads, each parameter once, units
     that are units."""
-    from .units import parse_unit
+    from ..units import parse_unit
 
     columns: list[Column] = []
     by_key: dict[str, str] = {}
@@ -191,7 +191,7 @@ class NaturalFrequencyRows(RowSpec):
 
     def __init__(self, standard: dict[str, str], *, scene: str | None = None,
                  method: str | None = None, rtol: float | None = None, strict: bool = False):
-        from .scenes import catalog, get_scene
+        from ..scenes import catalog, get_scene
 
         self.standard = dict(standard)
         self.scene = get_scene(scene) if scene is not None else None
@@ -217,12 +217,12 @@ class NaturalFrequencyRows(RowSpec):
                 "scenes (dyncalc scenes lists them)")
 
     def scene_for(self, keys) -> str:
-        from .scenes.runner import infer_scene
+        from ..scenes.runner import infer_scene
 
         return self.scene.name if self.scene is not None else infer_scene(set(keys))
 
     def compute(self, texts, labels):
-        from .scenes.runner import run_scene
+        from ..scenes.runner import run_scene
 
         return run_scene(self.scene_for(texts), texts, labels=labels, method=self.method,
                          rtol=self.rtol, strict=self.strict)
@@ -238,7 +238,7 @@ class SpringRows(RowSpec):
     _ELEMENT_RE = re.compile(r"^k[0-9]+$")
 
     def __init__(self, how: str, *, strict: bool = False):
-        from .networks import ELEMENTS
+        from ..commands.springs import ELEMENTS
 
         self.how, self.strict = how, strict
         self.command = f"spring-{how}"
@@ -254,7 +254,7 @@ class SpringRows(RowSpec):
                 f"{', '.join(self.shared)}")
 
     def compute(self, texts, labels):
-        from .networks import network_stiffness
+        from ..commands.springs import network_stiffness
 
         words = [text for key, text in texts.items() if self._ELEMENT_RE.match(key)]
         words += [f"{key}={text}" for key, text in texts.items()
@@ -275,7 +275,7 @@ class DampingRows(RowSpec):
         self.scene, self.method, self.rtol, self.strict = scene, method, rtol, strict
         self.scene_params: list[str] = []
         if scene is not None:
-            from .scenes import get_scene
+            from ..scenes import get_scene
 
             self.scene_params = [p.name for p in get_scene(scene).params
                                  if p.name not in self.OPTIONS]
@@ -288,7 +288,7 @@ class DampingRows(RowSpec):
         return f"damping-ratio reads {', '.join(names)}"
 
     def compute(self, texts, labels):
-        from .damping import damping_ratio
+        from ..commands.damping_ratio import damping_ratio
 
         options = {name: texts.get(name) for name in self.OPTIONS}
         params = tuple(f"{k}={v}" for k, v in texts.items() if k not in self.OPTIONS)
@@ -315,7 +315,7 @@ class RollingRows(RowSpec):
         return f"rolling-onset reads {', '.join(self.OPTIONS)}"
 
     def compute(self, texts, labels):
-        from .rolling import rolling_onset_result
+        from ..commands.rolling_onset import rolling_onset_result
 
         return rolling_onset_result(dict(texts), method=self.method, rtol=self.rtol,
                                     strict=self.strict)
@@ -329,7 +329,7 @@ class CoriolisRows(RowSpec):
     example_header = "omega [rad/s],vr [m/s]"
 
     def __init__(self, *, strict: bool = False):
-        from .frames import OPTIONS
+        from ..commands.coriolis import OPTIONS
 
         self.options = tuple(OPTIONS)
         self.strict = strict
@@ -341,7 +341,7 @@ class CoriolisRows(RowSpec):
         return f"coriolis reads {', '.join(self.options)}"
 
     def compute(self, texts, labels):
-        from .frames import coriolis_result
+        from ..commands.coriolis import coriolis_result
 
         return coriolis_result(dict(texts), strict=self.strict)
 
@@ -401,7 +401,7 @@ def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
     key = ("unit", unit, dim, strict)
     if key in cache:
         return cache[key]
-    from .units import parse_quantity
+    from ..units import parse_quantity
 
     info = None
     if not unit or _SIMPLE_UNIT_RE.fullmatch(unit):
@@ -433,7 +433,7 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
                  plain: np.ndarray | None = None) -> _ColumnValues:
     """Read the cells of one parameter column (rows known to give it): a unit is read once per
     group of cells that share it, and pint converts the group's values as one array."""
-    from .units import registry
+    from ..units import registry
 
     n = len(cells)
     out = _ColumnValues()
@@ -531,7 +531,7 @@ def _default_input(p, strict: bool, cache: dict):
     """(SI value, JSON text of the input entry) of a scene parameter's default."""
     key = ("default", p.name, p.default, strict)
     if key not in cache:
-        from .units import parse_quantity
+        from ..units import parse_quantity
 
         parsed = parse_quantity(p.default, p.dim, label=p.name, strict=strict,
                                 constraint=p.constraint)
@@ -546,8 +546,8 @@ def _natural_frequency_fast(spec: NaturalFrequencyRows, columns: list[Column], t
     """The rows of this chunk the vectorised path computes, as blocks (one per scene and set
     of parameters given); every other row is left to the generic path. ``table`` holds the
     chunk's cells column by column."""
-    from .scenes import get_scene
-    from .scenes.results import result_kind
+    from ..scenes import get_scene
+    from ..result.kinds import result_kind
 
     if spec.method not in (None, "auto") or not table or len(columns) > 62:
         return []
@@ -737,7 +737,7 @@ class _Writer:
         """``--unit NAME=UNIT`` refused, as the one-off refuses it, when the unit cannot show
         the result (the whole run stops: the option is wrong, not a row)."""
         if name in self.units and name not in self.checked_units and dim is not None:
-            from .units import convert
+            from ..units import convert
 
             convert(1.0, dim, self.units[name], label=f"--unit {name}", name=name)
             self.checked_units.add(name)
@@ -797,7 +797,7 @@ class _Writer:
 
     def _fast_texts(self, block, chunk, texts) -> None:
         """Fill ``texts`` at the block's rows: CSV lines or JSON lines."""
-        from .units import convert
+        from ..units import convert
 
         rows = block.rows.tolist()
         if not self.as_json:
@@ -855,7 +855,7 @@ class _Writer:
                 f"such a row first")
 
     def _result_text(self, line, cells, result) -> str:
-        from .cli import render
+        from ..cli import render
 
         if self.as_json:
             units = {}

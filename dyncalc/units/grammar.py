@@ -1,4 +1,4 @@
-"""Units: the one pint registry of the program, and the careful reading of quantities.
+"""The strict quantity grammar: text -> checked pint quantities, vectors and units.
 
 Everything the user types as a quantity passes through :func:`parse_quantity` or
 :func:`parse_vector`. They implement the input rules of SPEC.md:
@@ -42,199 +42,29 @@ revolution (``rpm``, ``rps``, ``turn``) as one cycle. See :func:`convert`.
 """
 from __future__ import annotations
 
+import contextvars
 import math
 import re
 import unicodedata
-from dataclasses import FrozenInstanceError
 from typing import Any
 
-from .errors import InputError
+from ..errors import InputError
+from ..records import Frozen
+from .dimensions import DIMENSIONLESS, Dim, _unit_class, _unit_names
+from .registry import registry
 
-__all__ = [
-    "Dim", "Parsed", "registry", "Q_", "parse_quantity", "parse_vector", "parse_unit",
-    "convert", "to_si", "format_quantity", "MAX_TEXT", "MAX_DEPTH",
-    "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "TIME", "ANGLE",
-    "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
-    "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION",
-]
+__all__ = ["Parsed", "ReadError", "parse_quantity", "parse_vector", "parse_unit", "convert",
+           "to_si", "format_quantity", "MAX_TEXT", "MAX_DEPTH"]
 
 MAX_TEXT = 200        #: characters in one quantity
 MAX_DEPTH = 24        #: nesting of parentheses and signs
 MAX_UNIT_POWER = 16   #: largest exponent of a unit after evaluation
 
 # --------------------------------------------------------------------------------------------
-# The registry
-
-
-_REGISTRY = None
-
-
-def registry():
-    """The one :class:`pint.UnitRegistry` of the program, built on first use from pint's cache."""
-    global _REGISTRY
-    if _REGISTRY is None:
-        import pint
-
-        try:
-            ureg = pint.UnitRegistry(cache_folder=":auto:")
-        except OSError:  # an unwritable cache folder: build it the slow way
-            ureg = pint.UnitRegistry()
-        ureg.define("@alias turn = rev")  # rev/s, rev/min as SPEC.md writes them
-        _REGISTRY = ureg
-    return _REGISTRY
-
-
-def Q_(value: Any, unit: Any = ""):
-    """A quantity of the program's registry: ``Q_(2, "kg")``."""
-    return registry().Quantity(value, unit)
-
-
-# --------------------------------------------------------------------------------------------
-# Records
-#
-# Dim and Parsed behave as frozen dataclasses (the same constructor, repr, equality, hash and
-# immutability), and _Tok and _Reading as plain ones; they are written out by hand because
-# @dataclass generates and compiles their methods at import, which every run of the program
-# would pay for (start-up, issue 8).
-
-
-class _Record:
-    """The repr and equality of a dataclass, from the field names in ``_fields()``
-    (``__slots__`` unless a class names them in ``_FIELDS``)."""
-
-    __slots__ = ()
-
-    def _fields(self) -> tuple[str, ...]:
-        return getattr(self, "_FIELDS", self.__slots__)
-
-    def _values(self) -> tuple:
-        return tuple(getattr(self, name) for name in self._fields())
-
-    def __repr__(self) -> str:
-        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._fields())
-        return f"{type(self).__qualname__}({fields})"
-
-    def __eq__(self, other):
-        if other.__class__ is self.__class__:
-            return self._values() == other._values()
-        return NotImplemented
-
-
-class _Frozen(_Record):
-    """Equality, hash, repr and immutability of a frozen dataclass, from ``__slots__``."""
-
-    __slots__ = ()
-
-    def __hash__(self) -> int:
-        return hash(self._values())
-
-    def __setattr__(self, name, value):
-        raise FrozenInstanceError(f"cannot assign to field {name!r}")
-
-    def __delattr__(self, name):
-        raise FrozenInstanceError(f"cannot delete field {name!r}")
-
-    def __reduce__(self):  # copy and pickle: rebuilt through the constructor
-        return type(self), self._values()
-
-
-# --------------------------------------------------------------------------------------------
-# Dimensions
-
-
-class Dim(_Frozen):
-    """A physical dimension a parameter or result has.
-
-    ``name`` is the word in messages ("stiffness"), ``display`` the dimension as shown
-    (``[force]/[length]``), ``check`` the pint dimensionality it must have, ``si`` the unit of a
-    bare number and of SI output, ``kind`` one of plain, angle, angular-rate, cycle-rate,
-    dimensionless.
-    """
-
-    __slots__ = ("name", "display", "check", "si", "kind")
-
-    def __init__(self, name: str, display: str, check: str, si: str, kind: str = "plain"):
-        setattr_ = object.__setattr__
-        setattr_(self, "name", name)
-        setattr_(self, "display", display)
-        setattr_(self, "check", check)
-        setattr_(self, "si", si)
-        setattr_(self, "kind", kind)
-
-
-STIFFNESS = Dim("stiffness", "[force]/[length]", "[force]/[length]", "N/m")
-TORSIONAL_STIFFNESS = Dim("torsional stiffness", "[force]*[length]/[angle]",
-                          "[force]*[length]", "N*m/rad")
-MASS = Dim("mass", "[mass]", "[mass]", "kg")
-INERTIA = Dim("mass moment of inertia", "[mass]*[length]^2", "[mass]*[length]**2", "kg*m^2")
-LENGTH = Dim("length", "[length]", "[length]", "m")
-AREA = Dim("area", "[length]^2", "[length]**2", "m^2")
-SECOND_MOMENT = Dim("second moment of area", "[length]^4", "[length]**4", "m^4")
-TIME = Dim("time", "[time]", "[time]", "s")
-VELOCITY = Dim("velocity", "[length]/[time]", "[length]/[time]", "m/s")
-ACCELERATION = Dim("acceleration", "[length]/[time]^2", "[length]/[time]**2", "m/s^2")
-FORCE = Dim("force", "[force]", "[force]", "N")
-MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
-DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
-              "N*s/m")
-ANGLE = Dim("angle", "[angle]", "", "rad", "angle")
-ANGULAR_RATE = Dim("angular rate", "[angle]/[time]", "1/[time]", "rad/s", "angular-rate")
-ANGULAR_ACCELERATION = Dim("angular acceleration", "[angle]/[time]^2", "1/[time]**2",
-                           "rad/s^2", "angular-rate")
-CYCLE_RATE = Dim("frequency", "[cycles]/[time]", "1/[time]", "Hz", "cycle-rate")
-DIMENSIONLESS = Dim("pure number", "dimensionless", "", "", "dimensionless")
-
-_TURN_UNITS = {"turn", "revolutions_per_minute", "revolutions_per_second"}
-_CYCLE_ONLY_UNITS = {"hertz"}
-
-
-def _unit_names(unit) -> list[str]:
-    return list(unit._units.keys())
-
-
-def _base_name(name: str) -> str:
-    """pint's unit name without its prefix: ``kilohertz`` -> ``hertz``."""
-    try:
-        return registry().parse_unit_name(name)[0][1]
-    except (IndexError, Exception):  # not a unit pint can split: keep it as it is
-        return name
-
-
-_UNIT_CLASSES: dict[str, str] = {}
-
-
-def _unit_class(name: str) -> str:
-    """``turn`` (revolutions), ``angle`` (radian, degree, ...), ``cycle`` (hertz), ``rate``
-    (a plain 1/time such as 1/s, 1/min) or ``other``. Remembered per name: asking pint costs
-    a fraction of a millisecond each time, and a quantity asks for every unit it names."""
-    known = _UNIT_CLASSES.get(name)
-    if known is None:
-        known = _UNIT_CLASSES[name] = _classify_unit(name)
-    return known
-
-
-def _classify_unit(name: str) -> str:
-    base = _base_name(name)
-    if base in _TURN_UNITS:
-        return "turn"
-    if base in _CYCLE_ONLY_UNITS:
-        return "cycle"
-    root = registry().get_root_units(base)[1]._units
-    if "radian" in root:
-        return "angle"
-    return "other"
-
-
-def _is_angle_unit(name: str) -> bool:
-    """A unit that carries an angle (radian, degree, ...), other than the full turn."""
-    return _unit_class(name) == "angle"
-
-
-# --------------------------------------------------------------------------------------------
 # Reading text
 
 
-class Parsed(_Frozen):
+class Parsed(Frozen):
     """A quantity read from the user's text.
 
     ``quantity`` is the pint quantity (rates already normalised to rad/s or Hz, see
@@ -765,7 +595,7 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     constraint : {None, "positive", "nonnegative", "nonzero"}
     source : str, optional
         Names one value read in several places (a network's shared ``EI=...``): its
-        uncertainty is then one input, not one per place (:mod:`dyncalc.uncertainty`).
+        uncertainty is then one input, not one per place (:mod:`dyncalc.result.propagate`).
 
     Returns
     -------
@@ -773,6 +603,7 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
 
     Examples
     --------
+    >>> from dyncalc.units import STIFFNESS
     >>> p = parse_quantity("2 kN/m", STIFFNESS, label="--k")
     >>> p.si, p.assumed_si, p.unit_text
     (2000.0, False, 'kN/m')
@@ -882,10 +713,16 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
         sigma_si = _finish(sigma, text, dim, spread_label, strict, False, "nonnegative").si
     parsed = Parsed(parsed.quantity, parsed.si, parsed.assumed_si, parsed.unit_text, text,
                     uncertainty=sigma_si)
-    from .uncertainty import traced_input
+    hook = UNCERTAIN_INPUT_HOOK.get()
+    return parsed if hook is None else hook(parsed, dim, label, allow_inf, constraint, source)
 
-    return traced_input(parsed, dim, label, allow_inf, constraint, source)
 
+#: What becomes of a quantity read with an uncertainty while a hook is installed:
+#: ``hook(parsed, dim, label, allow_inf, constraint, source)`` returns the quantity to use (the
+#: propagation of :mod:`dyncalc.result.propagate` records it, or hands back a nudged copy).
+#: The parser keeps no record itself, and the dependency runs from result to units only.
+UNCERTAIN_INPUT_HOOK: contextvars.ContextVar = contextvars.ContextVar(
+    "dyncalc_uncertain_input", default=None)
 
 #: Units of an uncertainty that is a fraction of the value (``± 5%``).
 _RELATIVE_UNITS = frozenset({"percent", "permille", "ppm"})
@@ -905,6 +742,7 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
     no comma is read by :func:`parse_quantity` and returned as a float (the caller gives it a
     meaning). ``si`` is then a numpy array of ``size`` floats.
 
+    >>> from dyncalc.units import ANGULAR_RATE
     >>> parse_vector("(0, 0, 2) rad/s", ANGULAR_RATE, label="--omega").si.tolist()
     [0.0, 0.0, 2.0]
     """

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from .units import Dim, Parsed, convert
+from ..units import Dim, Parsed, convert
 
 __all__ = ["Entry", "Explanation", "Result", "entry_from_parsed", "format_number"]
 
@@ -112,7 +112,7 @@ class Result:
     that builds one: it is then built the first time it is read (``--explain``, or the
     variance shares of an uncertain input), so a run that shows no explanation never pays
     for one. ``slips`` maps a result name to {a common slip, in words: the value (SI) that
-    slip gives}, for the diagnosis of a failed ``--check`` (:mod:`dyncalc.checks`).
+    slip gives}, for the diagnosis of a failed ``--check`` (:mod:`dyncalc.result.checks`).
     """
 
     __slots__ = ("command", "results", "inputs", "scene", "model", "method", "warnings",

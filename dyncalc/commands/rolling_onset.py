@@ -11,10 +11,10 @@ from __future__ import annotations
 import math
 import time
 
-from .errors import InputError, PhysicsError
-from .explain import Formula
-from .result import Entry, Explanation, Result, entry_from_parsed, format_number
-from .units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, TIME, VELOCITY,
+from ..errors import InputError, PhysicsError
+from ..result.explain import Formula
+from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
+from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, TIME, VELOCITY,
                     format_quantity, parse_quantity)
 
 __all__ = ["rolling_onset_result", "METHODS", "DEFAULT_RTOL", "DEFAULT_BODY"]
@@ -51,7 +51,7 @@ def _term(value: float, unit: str = "") -> str:
 
 
 def _bodies() -> dict[str, float]:
-    from .physics.bodies import KAPPA
+    from ..physics.bodies import KAPPA
 
     return KAPPA
 
@@ -73,7 +73,7 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
     >>> [(n, round(e.si, 4)) for n, e in r.results.items()]
     [('t_roll', 0.4856), ('x_roll', 2.0811), ('v_roll', 3.5714)]
     """
-    from .physics.rolling import onset_closed_form, slope_sin_cos
+    from ..physics.rolling import onset_closed_form, slope_sin_cos
 
     texts = {k: v for k, v in texts.items() if v is not None}
     method = "auto" if method is None else method
@@ -188,7 +188,7 @@ def _timed(call, repeat: int = 3):
 
 def _run_ode(args, onset, values, rtol, closed_form_s):
     """Integrate the equations of motion; their results, the method, the JSON extras, notes."""
-    from .physics.rolling import ODE_FLOOR, onset_ode
+    from ..physics.rolling import ODE_FLOOR, onset_ode
 
     tol = DEFAULT_RTOL if rtol is None else rtol
     v0, mu, kappa, g, radius, omega0, sin_b, cos_b = args
@@ -250,7 +250,7 @@ def _physics_warnings(onset, kappa: float, mu: float, on_slope: bool) -> list[st
     return notes
 
 
-#: The formulas of rolling-onset in LaTeX (:mod:`dyncalc.explain`), all values in SI.
+#: The formulas of rolling-onset in LaTeX (:mod:`dyncalc.result.explain`), all values in SI.
 ROLLING_LATEX = (
     r"$s0 = $v0 - $r\,$omega0",
     Formula(r"$t_roll = \frac{$kappa\,\lvert $s0\rvert}{$mu\,$g\,(1 + $kappa)}",
@@ -269,7 +269,7 @@ ROLLING_LATEX = (
 
 def _latex_lines(onset, kappa, mu, g, v0, radius, omega0, incline, slope):
     """(LaTeX formula, LaTeX substituted) of ``ROLLING_LATEX`` at these values."""
-    from .explain import Term, render_formulas, symbol_latex
+    from ..result.explain import Term, render_formulas, symbol_latex
 
     given = {"kappa": (kappa, ""), "mu": (mu, ""), "g": (g, "m/s^2"), "v0": (v0, "m/s"),
              "s0": (onset.s0, "m/s"), "sigma": (float(onset.sigma), ""),

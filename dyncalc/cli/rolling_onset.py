@@ -63,7 +63,7 @@ def rolling_onset(method, out, **options):
 
         return out.run_batch(RollingRows(method=method, rtol=out.rtol, strict=out.strict),
                              {f"--{o}": v for o, v in options.items()})
-    from ..rolling import rolling_onset_result
+    from ..commands.rolling_onset import rolling_onset_result
 
     return out.emit(out.compute(lambda: rolling_onset_result(options, method=method,
                                                              rtol=out.rtol, strict=out.strict)))

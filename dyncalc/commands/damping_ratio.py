@@ -26,11 +26,11 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import InputError, PhysicsError
-from .explain import Formula
-from .result import Entry, Explanation, Result, entry_from_parsed, format_number
-from .scenes.results import DECAY_RATE
-from .units import (ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS, STIFFNESS, TIME,
+from ..errors import InputError, PhysicsError
+from ..result.explain import Formula
+from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
+from ..result.kinds import DECAY_RATE
+from ..units import (ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS, STIFFNESS, TIME,
                     Dim, parse_quantity, parse_unit)
 
 __all__ = ["damping_ratio", "plot_decay", "parse_amplitudes", "parse_cycles",
@@ -67,7 +67,7 @@ _USAGE = ('--c C --k K --m M, --decrement DELTA, --ratio R --cycles N, --amplitu
 
 def damping_scene_names() -> list[str]:
     """The scenes with a damper: those whose physics lives in ``dyncalc.physics.damping``."""
-    from .scenes import catalog
+    from ..scenes import catalog
 
     return [name for name, scene in catalog().items()
             if scene.compute.startswith("dyncalc.physics.damping:")]
@@ -217,7 +217,7 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         inputs[name] = entry_from_parsed(name, parsed, dim)
         return parsed
 
-    from .physics import damping as phys
+    from ..physics import damping as phys
 
     extra: dict = {}
     formula: list[str] = []
@@ -304,7 +304,7 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
 
 def _check_method(form: str, method: str | None) -> str | None:
     """The fitting method for ``--amplitudes`` (``None`` for the closed forms)."""
-    from .physics.decay_fit import FIT_METHODS
+    from ..physics.decay_fit import FIT_METHODS
 
     if form == "--amplitudes":
         if method in (None, "auto"):
@@ -321,7 +321,7 @@ def _check_method(form: str, method: str | None) -> str | None:
 
 def _fit(peaks: np.ndarray, method: str, rtol: float | None):
     """Fit the peaks; refuse peaks that grow, take non-significant growth as no decay."""
-    from .physics.decay_fit import fit_decrement
+    from ..physics.decay_fit import fit_decrement
 
     fit = fit_decrement(peaks, method=method, rtol=1e-9 if rtol is None else rtol)
     if fit.delta < 0.0:
@@ -354,7 +354,7 @@ def _shown(entry: Entry) -> str:
     return f"{entry.name} = {format_number(value, 6)}{unit}"
 
 
-#: The formulas of damping-ratio in LaTeX (:mod:`dyncalc.explain`); ``form`` is the option
+#: The formulas of damping-ratio in LaTeX (:mod:`dyncalc.result.explain`); ``form`` is the option
 #: that gave the damping (``--c``, ``--decrement``, ``--ratio``, ``--amplitudes``).
 DAMPING_LATEX = (
     r"$delta = \frac{\ln $ratio}{$cycles}",
@@ -375,7 +375,7 @@ DAMPING_LATEX = (
 
 def _formula_lines(inputs, results, form: str):
     """(LaTeX formula, LaTeX substituted, text substituted) of ``DAMPING_LATEX``."""
-    from .explain import render_formulas, template_terms
+    from ..result.explain import render_formulas, template_terms
 
     terms = template_terms([*inputs.values(), *results.values()])
     if "decrement" in terms:  # --decrement is delta itself
@@ -386,14 +386,14 @@ def _formula_lines(inputs, results, form: str):
 
 
 def _explain(formula, inputs, results, reference, fit, form="") -> Explanation:
-    from .physics.damping import CRITICAL_BAND
+    from ..physics.damping import CRITICAL_BAND
 
     assumptions = ["linear viscous damping: the peaks fall geometrically, one factor "
                    "exp(delta) per cycle",
                    "regime from zeta: critically damped when |1 - zeta^2| <= 2^-50 "
                    f"({CRITICAL_BAND:.2g}), the rounding of the inputs"]
     if fit is not None:
-        from .physics.decay_fit import CURVATURE_LIMIT, R2_LIMIT
+        from ..physics.decay_fit import CURVATURE_LIMIT, R2_LIMIT
 
         assumptions.append(
             "peaks one full cycle apart, in time order; not exponential when ln(x) bends "
@@ -413,7 +413,7 @@ def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
     """``delta=`` or ``Q=`` given to solve a damping scene for one of its parameters: the
     damping ratio they mean (``zeta = delta / sqrt(4 pi^2 + delta^2)``, ``zeta = 1/(2Q)``)
     becomes the ``zeta=`` target the scene solves from (:mod:`dyncalc.scenes.inverse`)."""
-    from .physics.damping import zeta_from_decrement
+    from ..physics.damping import zeta_from_decrement
 
     given = [n for n in ("delta", "Q") if n in texts and scene.param(n) is None]
     if not given:
@@ -430,10 +430,10 @@ def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
 
 
 def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
-    from .checks import split_assignment
-    from .physics.damping import damping_from_zeta
-    from .scenes import get_scene
-    from .scenes.runner import run_scene
+    from ..result.checks import split_assignment
+    from ..physics.damping import damping_from_zeta
+    from ..scenes import get_scene
+    from ..scenes.runner import run_scene
 
     scene = get_scene(name)
     damped = damping_scene_names()
@@ -590,7 +590,7 @@ def _draw_peaks(fig, result: Result) -> None:
 
 
 def _draw_response(fig, result: Result) -> None:
-    from .physics.damping import free_response
+    from ..physics.damping import free_response
 
     zeta = _value(result, "zeta") or 0.0
     regime = result.results["regime"].si

@@ -20,7 +20,7 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
             texts[param] = options[option]
             labels[param] = f"--{option}"
     for word in words:
-        from ..checks import split_assignment
+        from ..result.checks import split_assignment
 
         name, text = split_assignment(word, "a scene parameter")
         if name in texts:

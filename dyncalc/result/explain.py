@@ -16,8 +16,8 @@ import math
 import re
 from typing import Any
 
-from .result import format_number
-from .units import _Frozen
+from .entries import format_number
+from ..records import Frozen
 
 __all__ = ["Term", "Formula", "latex_escape", "unit_latex", "number_latex", "symbol_latex",
            "quantity_latex", "quantity_text", "tex_to_text", "render_formulas", "template_terms",
@@ -129,7 +129,7 @@ def quantity_text(value, unit: str, digits: int = DIGITS) -> str:
     return f"{number} {unit}" if unit else number
 
 
-class Term(_Frozen):
+class Term(Frozen):
     """What ``$name`` stands for: its symbol (LaTeX) and its value in ``unit``."""
 
     __slots__ = ("symbol", "value", "unit")
@@ -148,7 +148,7 @@ class Term(_Frozen):
         return isinstance(self.value, (int, float)) and self.value < 0
 
 
-class Formula(_Frozen):
+class Formula(Frozen):
     """A template used only ``when`` a predicate on the SI values by name holds."""
 
     __slots__ = ("template", "when")

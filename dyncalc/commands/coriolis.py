@@ -26,9 +26,9 @@ import math
 
 import numpy as np
 
-from .errors import InputError, PhysicsError
-from .result import Entry, Explanation, Result, entry_from_parsed, format_number
-from .units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
+from ..errors import InputError, PhysicsError
+from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
+from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
                     MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
                     parse_vector)
 
@@ -154,7 +154,7 @@ def _entry(name: str, si, vector: bool) -> Entry:
 
 
 def _mag(v) -> float:
-    from .physics.frames import magnitude
+    from ..physics.frames import magnitude
 
     return magnitude(v)
 
@@ -354,7 +354,7 @@ def _vectors(reader: _Reader, omega: Parsed) -> Result:
 
 def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, model: str,
              earth: dict | None = None) -> Result:
-    from .physics.frames import relative_acceleration
+    from ..physics.frames import relative_acceleration
 
     def si(name):
         return None if parsed.get(name) is None else parsed[name].si
@@ -421,7 +421,7 @@ VECTOR_LATEX = (
     r"\vec{a}_c = 2\,\vec{\Omega}\times\vec{v}_r, \quad \vec{F}_c = -m\,\vec{a}_c",
 )
 
-#: The magnitudes of the scalar form in LaTeX (:mod:`dyncalc.explain`), values in SI.
+#: The magnitudes of the scalar form in LaTeX (:mod:`dyncalc.result.explain`), values in SI.
 SCALAR_LATEX = (
     r"$a_c = 2\,$Omega\,$v_r",
     r"$a_euler = $alpha\,$r",
@@ -432,7 +432,7 @@ SCALAR_LATEX = (
 
 
 def _scalar_latex(results, omega, v, r, alpha, mass):
-    from .explain import Term, render_formulas, symbol_latex
+    from ..result.explain import Term, render_formulas, symbol_latex
 
     given = {"Omega": (omega, "rad/s"), "v_r": (v, "m/s"), "r": (r, "m"),
              "alpha": (alpha, "rad/s^2"), "m": (None if mass is None else mass.si, "kg")}
@@ -446,7 +446,7 @@ def _scalar_latex(results, omega, v, r, alpha, mass):
 
 
 def _scalars(reader: _Reader, omega: Parsed) -> Result:
-    from .physics.frames import relative_acceleration
+    from ..physics.frames import relative_acceleration
 
     _refuse_negative("omega", omega)
     values = {}
@@ -527,7 +527,7 @@ def _scalars(reader: _Reader, omega: Parsed) -> Result:
 
 
 def _earth(texts: dict[str, str], strict: bool) -> Result:
-    from .physics.frames import EARTH_RATE, earth_angular_velocity, enu_velocity
+    from ..physics.frames import EARTH_RATE, earth_angular_velocity, enu_velocity
 
     reader = _Reader(texts, strict)
     warnings: list[str] = []

@@ -1,7 +1,8 @@
 """First-order propagation of standard uncertainties through any command.
 
 A quantity typed with an uncertainty (``"2.0+/-0.1 kg"``, ``"(100 ± 5) N/m"``) is read by
-:func:`dyncalc.units.parse_quantity`, which reports it here through :func:`traced_input`.
+:func:`dyncalc.units.parse_quantity`, which hands it to :func:`traced_input` while
+:func:`propagate` runs (through the hook ``dyncalc.units.grammar.UNCERTAIN_INPUT_HOOK``).
 :func:`propagate` runs a computation once as typed, then twice more per uncertain input with
 that input nudged by ``±h``; the central difference gives each result's sensitivity, and
 
@@ -36,7 +37,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from .errors import InputError
+from ..errors import InputError
 
 __all__ = ["traced_input", "propagate", "nudged_hint", "store_hint", "RELATIVE_STEP"]
 
@@ -94,7 +95,7 @@ def traced_input(parsed, dim, label: str, allow_inf: bool, constraint: str | Non
     which, offset = tape.nudge
     if which != index:
         return parsed
-    from .units import _check_value
+    from ..units.grammar import _check_value
 
     item = tape.inputs[index]
     si = parsed.si + offset
@@ -125,7 +126,7 @@ def store_hint(key, value) -> None:
 def _unit_scale(quantity, dim) -> float:
     """SI magnitude of one of ``quantity``'s units (a nudge in SI over it is the nudge in the
     unit typed; not ``si / magnitude``, which is 0 when the value underflowed in SI)."""
-    from .units import to_si
+    from ..units import to_si
 
     return float(to_si(type(quantity)(1.0, quantity.units), dim, "unit"))
 
@@ -157,8 +158,11 @@ def propagate(compute: Callable[[], Any]):
     result name -> {input name: share of the result's variance}. Without uncertain inputs
     ``compute`` runs once and its result is returned unchanged.
     """
+    from ..units.grammar import UNCERTAIN_INPUT_HOOK
+
     tape = _Tape()
     token = _TAPE.set(tape)
+    hook = UNCERTAIN_INPUT_HOOK.set(traced_input)
     try:
         result = compute()
         if not tape.inputs:
@@ -181,6 +185,7 @@ def propagate(compute: Callable[[], Any]):
                 with np.errstate(all="ignore"):  # an overflow is caught in _attach
                     terms[name][index] = (slope * item.sigma) ** 2
     finally:
+        UNCERTAIN_INPUT_HOOK.reset(hook)
         _TAPE.reset(token)
     _attach(result, tape, nominal, terms, failed)
     return result

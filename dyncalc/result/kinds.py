@@ -8,7 +8,8 @@ from __future__ import annotations
 import re
 
 from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA, LENGTH, TIME,
-                     VELOCITY, Dim, _Frozen)
+                     VELOCITY, Dim)
+from ..records import Frozen
 
 __all__ = ["ResultKind", "result_kind", "DECAY_RATE", "LINEAR_DRAG"]
 
@@ -17,7 +18,7 @@ LINEAR_DRAG = Dim("drag per unit length", "[force]*[time]/[length]^2",
                   "[force]*[time]/[length]**2", "N*s/m^2")
 
 
-class ResultKind(_Frozen):
+class ResultKind(Frozen):
     """A result's dimension, display unit, symbol and words (a frozen record, written out
     rather than a dataclass: no code generated at import, issue 8)."""
 

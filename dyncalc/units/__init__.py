@@ -1,0 +1,20 @@
+"""Reading text into quantities: the one registry (:mod:`.registry`), the dimensions dyncalc
+checks, angles included (:mod:`.dimensions`), and the strict quantity grammar
+(:mod:`.grammar`). Nothing here knows about commands, physics or output."""
+from __future__ import annotations
+
+from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, AREA,
+                         CYCLE_RATE, DAMPING, DIMENSIONLESS, FORCE, INERTIA, LENGTH, MASS,
+                         MODULUS, SECOND_MOMENT, STIFFNESS, TIME, TORSIONAL_STIFFNESS, VELOCITY,
+                         Dim)
+from .grammar import (MAX_DEPTH, MAX_TEXT, Parsed, ReadError, convert, format_quantity,
+                      parse_quantity, parse_unit, parse_vector, to_si)
+from .registry import Q_, registry
+
+__all__ = [
+    "Dim", "Parsed", "ReadError", "registry", "Q_", "parse_quantity", "parse_vector",
+    "parse_unit", "convert", "to_si", "format_quantity", "MAX_TEXT", "MAX_DEPTH",
+    "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "TIME", "ANGLE",
+    "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
+    "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION",
+]

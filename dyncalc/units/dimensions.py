@@ -1,0 +1,104 @@
+"""Dimensions: the :class:`Dim` record, one constant per kind of quantity dyncalc reads (angles
+and the two kinds of rate included, which pint alone does not tell apart), and the class of
+each unit name (angle, turn, cycle)."""
+from __future__ import annotations
+
+from ..records import Frozen
+from .registry import registry
+
+__all__ = [
+    "Dim", "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "AREA",
+    "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
+    "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS",
+]
+
+# --------------------------------------------------------------------------------------------
+# Dimensions
+
+
+class Dim(Frozen):
+    """A physical dimension a parameter or result has.
+
+    ``name`` is the word in messages ("stiffness"), ``display`` the dimension as shown
+    (``[force]/[length]``), ``check`` the pint dimensionality it must have, ``si`` the unit of a
+    bare number and of SI output, ``kind`` one of plain, angle, angular-rate, cycle-rate,
+    dimensionless.
+    """
+
+    __slots__ = ("name", "display", "check", "si", "kind")
+
+    def __init__(self, name: str, display: str, check: str, si: str, kind: str = "plain"):
+        setattr_ = object.__setattr__
+        setattr_(self, "name", name)
+        setattr_(self, "display", display)
+        setattr_(self, "check", check)
+        setattr_(self, "si", si)
+        setattr_(self, "kind", kind)
+
+
+STIFFNESS = Dim("stiffness", "[force]/[length]", "[force]/[length]", "N/m")
+TORSIONAL_STIFFNESS = Dim("torsional stiffness", "[force]*[length]/[angle]",
+                          "[force]*[length]", "N*m/rad")
+MASS = Dim("mass", "[mass]", "[mass]", "kg")
+INERTIA = Dim("mass moment of inertia", "[mass]*[length]^2", "[mass]*[length]**2", "kg*m^2")
+LENGTH = Dim("length", "[length]", "[length]", "m")
+AREA = Dim("area", "[length]^2", "[length]**2", "m^2")
+SECOND_MOMENT = Dim("second moment of area", "[length]^4", "[length]**4", "m^4")
+TIME = Dim("time", "[time]", "[time]", "s")
+VELOCITY = Dim("velocity", "[length]/[time]", "[length]/[time]", "m/s")
+ACCELERATION = Dim("acceleration", "[length]/[time]^2", "[length]/[time]**2", "m/s^2")
+FORCE = Dim("force", "[force]", "[force]", "N")
+MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
+DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
+              "N*s/m")
+ANGLE = Dim("angle", "[angle]", "", "rad", "angle")
+ANGULAR_RATE = Dim("angular rate", "[angle]/[time]", "1/[time]", "rad/s", "angular-rate")
+ANGULAR_ACCELERATION = Dim("angular acceleration", "[angle]/[time]^2", "1/[time]**2",
+                           "rad/s^2", "angular-rate")
+CYCLE_RATE = Dim("frequency", "[cycles]/[time]", "1/[time]", "Hz", "cycle-rate")
+DIMENSIONLESS = Dim("pure number", "dimensionless", "", "", "dimensionless")
+
+_TURN_UNITS = {"turn", "revolutions_per_minute", "revolutions_per_second"}
+_CYCLE_ONLY_UNITS = {"hertz"}
+
+
+def _unit_names(unit) -> list[str]:
+    return list(unit._units.keys())
+
+
+def _base_name(name: str) -> str:
+    """pint's unit name without its prefix: ``kilohertz`` -> ``hertz``."""
+    try:
+        return registry().parse_unit_name(name)[0][1]
+    except (IndexError, Exception):  # not a unit pint can split: keep it as it is
+        return name
+
+
+_UNIT_CLASSES: dict[str, str] = {}
+
+
+def _unit_class(name: str) -> str:
+    """``turn`` (revolutions), ``angle`` (radian, degree, ...), ``cycle`` (hertz), ``rate``
+    (a plain 1/time such as 1/s, 1/min) or ``other``. Remembered per name: asking pint costs
+    a fraction of a millisecond each time, and a quantity asks for every unit it names."""
+    known = _UNIT_CLASSES.get(name)
+    if known is None:
+        known = _UNIT_CLASSES[name] = _classify_unit(name)
+    return known
+
+
+def _classify_unit(name: str) -> str:
+    base = _base_name(name)
+    if base in _TURN_UNITS:
+        return "turn"
+    if base in _CYCLE_ONLY_UNITS:
+        return "cycle"
+    root = registry().get_root_units(base)[1]._units
+    if "radian" in root:
+        return "angle"
+    return "other"
+
+
+def _is_angle_unit(name: str) -> bool:
+    """A unit that carries an angle (radian, degree, ...), other than the full turn."""
+    return _unit_class(name) == "angle"
