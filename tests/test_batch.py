@@ -16,7 +16,7 @@ from click.testing import CliRunner
 
 from dyncalc import batch
 from dyncalc.cli import cli
-from dyncalc.cli.natural_frequency import STANDARD
+from dyncalc.commands.natural_frequency import STANDARD
 
 ROOT = Path(__file__).resolve().parents[1]
 

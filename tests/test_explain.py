@@ -10,7 +10,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc.cli import cli
-from dyncalc.cli.explain_render import latex, markdown, render_explanation, text_lines
+from dyncalc.result.explain_render import latex, markdown, render_explanation, text_lines
 from dyncalc.result.explain import latex_escape, number_latex, tex_to_text, unit_latex
 from dyncalc.result import Explanation
 from dyncalc.scenes import catalog, scene_names

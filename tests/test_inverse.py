@@ -18,10 +18,10 @@ import shlex
 import mpmath
 import pytest
 
-from dyncalc.cli.natural_frequency import STANDARD
+from dyncalc.commands.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.scenes import get_scene, scene_names
-from dyncalc.scenes.runner import run_scene
+from dyncalc.commands.natural_frequency import compute_scene
 from helpers import error_line, invoke, json_of
 
 TWO_PI = 2 * math.pi
@@ -128,7 +128,7 @@ def pick_target(scene, texts, forward, param, i):
     assert forward.inputs[param.name].si != 0
     bumped = dict(texts)
     bumped[param.name] = si_text(param, forward.inputs[param.name].si * 1.01)
-    moved = numbers(run_scene(scene, bumped))
+    moved = numbers(compute_scene(scene, bumped))
     order = ["omega", "f", "T"]
     order = order[i % 3:] + order[:i % 3]
     order += [n for n in base if n not in order]
@@ -145,7 +145,7 @@ def round_trip(scene_name, param_name, target, ask):
     scene = get_scene(scene_name)
     param = scene.param(param_name)
     texts = example_texts(scene)
-    forward = run_scene(scene, texts)
+    forward = compute_scene(scene, texts)
     original = forward.inputs[param_name].si
     if target is None:
         target = pick_target(scene, texts, forward, param, ask)
@@ -155,7 +155,7 @@ def round_trip(scene_name, param_name, target, ask):
     if ask or param.default is not None or param.optional:
         posed[param_name] = "?"
     posed[target] = target_text(forward, target)
-    solved = run_scene(scene, posed)
+    solved = compute_scene(scene, posed)
 
     inverse = solved.extra["inverse"]
     assert inverse["unknown"] == param_name
@@ -186,7 +186,7 @@ def round_trip(scene_name, param_name, target, ask):
         for x in found:
             again = dict(texts)
             again[param_name] = si_text(param, x)
-            assert run_scene(scene, again).results[target].si == pytest.approx(
+            assert compute_scene(scene, again).results[target].si == pytest.approx(
                 goal, rel=ROOT_TOL), (x, target)
     return found
 
@@ -276,7 +276,7 @@ def test_unit_invariance(target, mass):
 
 def test_pendulum_length_from_period():
     """l = g (T / 2 pi)^2: a 2 s pendulum (the seconds pendulum) is 0.9936 m."""
-    result = run_scene("pendulum", {"T": "2 s"})
+    result = compute_scene("pendulum", {"T": "2 s"})
     assert solutions(result, "l") == [pytest.approx(G0 / math.pi ** 2, rel=CLOSED_TOL)]
     assert result.extra["inverse"]["method"] == "closed-form"
 
@@ -287,7 +287,7 @@ def test_pendulum_amplitude_from_period_against_mpmath():
     period = mpmath.mpf("2.5")
     theta = mpmath.findroot(
         lambda t: 4 * mpmath.ellipk(mpmath.sin(t / 2) ** 2) / omega0 - period, 1.8)
-    result = run_scene("pendulum", {"l": "1 m", "amplitude": "?", "T": "2.5 s"})
+    result = compute_scene("pendulum", {"l": "1 m", "amplitude": "?", "T": "2.5 s"})
     assert solutions(result, "amplitude") == [pytest.approx(float(theta), rel=ROOT_TOL)]
     assert result.results["amplitude"].unit == "deg"
     assert result.results["amplitude"].value_in("deg") == pytest.approx(
@@ -296,13 +296,13 @@ def test_pendulum_amplitude_from_period_against_mpmath():
 
 def test_drum_mass_from_frequency():
     """omega^2 = 2k/(M + 2m): M = 2k/omega^2 - 2m."""
-    result = run_scene("drum-block-spring", {"k": "2 kN/m", "m": "4 kg", "omega": "12 rad/s"})
+    result = compute_scene("drum-block-spring", {"k": "2 kN/m", "m": "4 kg", "omega": "12 rad/s"})
     assert solutions(result, "M") == [pytest.approx(2 * 2000 / 144 - 8, rel=ROOT_TOL)]
 
 
 def test_rolling_disk_kappa_from_frequency():
     """omega^2 = k/((1 + kappa) m): kappa = k/(m omega^2) - 1 (a parameter left optional)."""
-    result = run_scene("rolling-disk-spring",
+    result = compute_scene("rolling-disk-spring",
                        {"k": "300 N/m", "m": "2 kg", "kappa": "?", "omega": "9 rad/s"})
     assert solutions(result, "kappa") == [pytest.approx(300 / (2 * 81) - 1, rel=ROOT_TOL)]
 
@@ -310,7 +310,7 @@ def test_rolling_disk_kappa_from_frequency():
 def test_rod_torsion_stiffness_from_equilibrium_angle():
     """(g/l) cos phi_0 = kt phi_0/(m l^2): kt = m g l cos(phi_0)/phi_0 (a target in deg)."""
     phi = math.radians(40)
-    result = run_scene("rod-torsion-spring", {"m": "2 kg", "l": "1 m", "phi_0": "40 deg"})
+    result = compute_scene("rod-torsion-spring", {"m": "2 kg", "l": "1 m", "phi_0": "40 deg"})
     assert solutions(result, "kt") == [pytest.approx(2 * G0 * math.cos(phi) / phi,
                                                      rel=ROOT_TOL)]
     assert result.results["phi_0"].si == pytest.approx(phi, rel=ROOT_TOL)
@@ -355,8 +355,8 @@ def test_bead_spinning_the_other_way_is_found_too():
     omega = 2 rad/s must find -4.66 rad/s among its solutions (the round trip of a negative
     spin), like pendulum-on-rotating-disk and pendulum-accelerating-support do."""
     texts = {"r": "0.5 m", "Omega": "-4.659936470593289 rad/s"}
-    forward = run_scene("bead-on-rotating-ring", texts)
-    solved = run_scene("bead-on-rotating-ring",
+    forward = compute_scene("bead-on-rotating-ring", texts)
+    solved = compute_scene("bead-on-rotating-ring",
                        {"r": "0.5 m", "Omega": "?",
                         "omega": f"{forward.results['omega'].si!r} rad/s"})
     found = solutions(solved, "Omega")
@@ -365,7 +365,7 @@ def test_bead_spinning_the_other_way_is_found_too():
 
 def test_signed_parameter_both_signs_listed():
     """pendulum-accelerating-support: omega^2 = sqrt(g^2 + a0^2)/l is even in a0: +-3 m/s^2."""
-    result = run_scene("pendulum-accelerating-support",
+    result = compute_scene("pendulum-accelerating-support",
                        {"l": "1 m", "a0": "?", "omega": "3.2023836894876437 rad/s"})
     assert solutions(result, "a0") == [pytest.approx(-3.0, rel=ROOT_TOL),
                                        pytest.approx(3.0, rel=ROOT_TOL)]
@@ -376,7 +376,7 @@ def test_physical_pendulum_pivot_distance_two_roots():
     m, J, w = 2.0, 2 / 12, 3.5
     disc = math.sqrt((m * G0) ** 2 - 4 * m * w ** 2 * J * w ** 2)
     roots = sorted(((m * G0 - disc) / (2 * m * w ** 2), (m * G0 + disc) / (2 * m * w ** 2)))
-    result = run_scene("physical-pendulum",
+    result = compute_scene("physical-pendulum",
                        {"m": "2 kg", "J": "2/12 kg*m^2", "omega": "3.5 rad/s"})
     assert solutions(result, "a") == [pytest.approx(r, rel=ROOT_TOL) for r in roots]
 
@@ -385,7 +385,7 @@ def test_quarter_car_speed_from_amplitude_two_roots():
     """x_amp = U0/|1 - (Omega/omega)^2|, Omega = 2 pi v0/L: v0 = L omega sqrt(1 -+ U0/x)/2pi."""
     omega, L, U0, x = 10.0, 10.0, 0.02, 0.05
     roots = [L * omega * math.sqrt(1 + s * U0 / x) / TWO_PI for s in (-1, 1)]
-    result = run_scene("quarter-car", {"k": "40 kN/m", "m": "400 kg", "L": "10 m",
+    result = compute_scene("quarter-car", {"k": "40 kN/m", "m": "400 kg", "L": "10 m",
                                        "U0": "2 cm", "x_amp": "5 cm"})
     assert solutions(result, "v0") == [pytest.approx(r, rel=ROOT_TOL) for r in roots]
 
@@ -518,7 +518,7 @@ def test_solves_terminate():
 
 def test_python_api_refusals_are_input_errors():
     with pytest.raises(InputError, match=r"^give one result to solve from, not 2 \(f, T\)"):
-        run_scene("mass-spring", {"f": "5 Hz", "T": "1 s", "m": "2 kg"})
+        compute_scene("mass-spring", {"f": "5 Hz", "T": "1 s", "m": "2 kg"})
 
 
 def test_a_chosen_method_is_scouted_cheaply_and_refined_with_itself():

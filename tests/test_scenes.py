@@ -8,7 +8,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc.cli import cli
-from dyncalc.cli.natural_frequency import STANDARD
+from dyncalc.commands.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.scenes import catalog, get_scene
 from dyncalc.result.kinds import result_kind

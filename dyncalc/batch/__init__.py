@@ -17,7 +17,8 @@ uncertainty (empty for rows without one).
 Two paths give the same numbers:
 
 * the generic path evaluates each row through the same library call as the one-off command
-  (:class:`NaturalFrequencyRows` calls :func:`dyncalc.scenes.runner.run_scene`,
+  (:class:`NaturalFrequencyRows` calls
+  :func:`dyncalc.commands.natural_frequency.compute_scene`,
   :class:`SpringRows` :func:`dyncalc.commands.springs.network_stiffness`, ...);
 * a vectorised path (:func:`_natural_frequency_fast`) computes whole chunks of
   ``natural-frequency`` rows of the closed-form linear scenes (mass-spring, torsional, the
@@ -217,15 +218,15 @@ class NaturalFrequencyRows(RowSpec):
                 "scenes (dyncalc scenes lists them)")
 
     def scene_for(self, keys) -> str:
-        from ..scenes.runner import infer_scene
+        from ..commands.natural_frequency import infer_scene
 
         return self.scene.name if self.scene is not None else infer_scene(set(keys))
 
     def compute(self, texts, labels):
-        from ..scenes.runner import run_scene
+        from ..commands.natural_frequency import compute_scene
 
-        return run_scene(self.scene_for(texts), texts, labels=labels, method=self.method,
-                         rtol=self.rtol, strict=self.strict)
+        return compute_scene(self.scene_for(texts), texts, labels=labels, method=self.method,
+                             rtol=self.rtol, strict=self.strict)
 
 
 class SpringRows(RowSpec):
@@ -855,7 +856,7 @@ class _Writer:
                 f"such a row first")
 
     def _result_text(self, line, cells, result) -> str:
-        from ..cli import render
+        from ..result import encode
 
         if self.as_json:
             units = {}
@@ -865,7 +866,7 @@ class _Writer:
                     self.check_unit(name, entry.dim)
                     units[name] = unit
             data: dict[str, Any] = {"line": line}
-            data.update(render.json_data(result, units, [], False))
+            data.update(encode.json_data(result, units, [], False))
             return json.dumps(data, allow_nan=False)
         for name in result.results:
             if name not in self.col_units:
@@ -879,10 +880,10 @@ class _Writer:
                     row.append("")
                 continue
             try:
-                row.append(render.batch_cell(entry, self.col_units[name]))
+                row.append(encode.batch_cell(entry, self.col_units[name]))
                 if name in self.uncertain:
                     sigma = entry.uncertainty_in(self.col_units[name])
-                    row.append("" if sigma is None else render.full_number(sigma))
+                    row.append("" if sigma is None else encode.full_number(sigma))
             except InputError:
                 raise _Failure(f"its {name} cannot be shown in the column's unit "
                                f"{self.col_units[name]} (it is a "

@@ -65,7 +65,8 @@ def damping_ratio(parameters, c, k, m, decrement, ratio, cycles, amplitudes, sce
                    "--plot": plot, "": parameters}
         return out.run_batch(DampingRows(scene=scene, method=method, rtol=out.rtol,
                                          strict=out.strict), options)
-    from ..commands.damping_ratio import damping_ratio as compute, plot_decay
+    from ..commands.damping_ratio import damping_ratio as compute
+    from .plot import plot_decay
 
     result = out.compute(lambda: compute(
         c=c, k=k, m=m, omega=omega, decrement=decrement, ratio=ratio, cycles=cycles,

@@ -3,32 +3,8 @@ from __future__ import annotations
 
 import click
 
-from ..errors import InputError
+from ..commands.natural_frequency import STANDARD
 from .options import complete_scene, output_options
-
-#: Standard options and the scene parameter each one is (SPEC.md).
-STANDARD = {"k": "k", "m": "m", "kt": "kt", "inertia": "J", "length": "l",
-            "amplitude": "amplitude", "zeta": "zeta", "g": "g"}
-
-
-def collect_parameters(options: dict[str, str | None], words: tuple[str, ...]):
-    """Standard options and NAME=QUANTITY words -> (texts by parameter, labels by parameter)."""
-    texts: dict[str, str] = {}
-    labels: dict[str, str] = {}
-    for option, param in STANDARD.items():
-        if options.get(option) is not None:
-            texts[param] = options[option]
-            labels[param] = f"--{option}"
-    for word in words:
-        from ..result.checks import split_assignment
-
-        name, text = split_assignment(word, "a scene parameter")
-        if name in texts:
-            raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
-        texts[name] = text
-        labels[name] = f"{name}="
-    return texts, labels
-
 
 @click.command("natural-frequency")
 @click.argument("parameters", nargs=-1, metavar="[NAME=QUANTITY]...")
@@ -71,12 +47,10 @@ def natural_frequency(parameters, scene, method, out, **options):
         return out.run_batch(NaturalFrequencyRows(STANDARD, scene=scene, method=method,
                                                   rtol=out.rtol, strict=out.strict),
                              {**{f"--{o}": v for o, v in options.items()}, "": parameters})
-    from ..scenes.runner import infer_scene, run_scene
+    from ..commands.natural_frequency import natural_frequency as compute
 
-    texts, labels = collect_parameters(options, parameters)
-    name = scene if scene is not None else infer_scene(set(texts))
-    return out.emit(out.compute(lambda: run_scene(name, texts, labels=labels, method=method,
-                                                  rtol=out.rtol, strict=out.strict)))
+    return out.emit(out.compute(lambda: compute(options, parameters, scene=scene, method=method,
+                                                rtol=out.rtol, strict=out.strict)))
 
 
 COMMANDS = [natural_frequency]

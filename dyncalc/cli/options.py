@@ -72,6 +72,7 @@ class Output:
 
     def emit(self, result) -> int:
         """Print ``result`` in the chosen form; the exit status (1 if a check failed)."""
+        from ..result import encode
         from . import render
 
         units = self.unit_map(result) if self.units else {}
@@ -81,7 +82,7 @@ class Output:
 
             checks = run_checks(result, self.checks, self.rtol)
         if self.value is not None:
-            text = render.bare_value(result, self.value, units)
+            text = encode.bare_value(result, self.value, units)
             for w in result.warnings:
                 click.echo(f"warning: {one_line(w)}", err=True)
             for c in checks:
@@ -89,7 +90,7 @@ class Output:
                     click.echo(render._check_line(c, self.digits), err=True)
             click.echo(text)
         elif self.as_json:
-            click.echo(render.to_json(result, units, checks, self.explain))
+            click.echo(encode.to_json(result, units, checks, self.explain))
         elif _is_terminal():
             from rich.console import Console
 

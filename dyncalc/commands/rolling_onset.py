@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import time
 
+from ..constants import STANDARD_GRAVITY_TEXT
 from ..errors import InputError, PhysicsError
 from ..result.explain import Formula
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
@@ -23,7 +24,7 @@ __all__ = ["rolling_onset_result", "METHODS", "DEFAULT_RTOL", "DEFAULT_BODY"]
 METHODS = ("auto", "closed-form", "ode")
 DEFAULT_RTOL = 1e-9
 DEFAULT_BODY = "solid-sphere"
-DEFAULT_G = "9.80665 m/s^2"
+DEFAULT_G = STANDARD_GRAVITY_TEXT
 
 #: name -> (dimension, display unit, symbol, description)
 _KINDS = {

@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..constants import EARTH_RATE
 from ..errors import InputError, PhysicsError
 from .numerics import two_product
 
@@ -40,8 +41,6 @@ __all__ = ["EARTH_RATE", "coriolis_acceleration", "euler_acceleration",
            "FrameAcceleration", "earth_angular_velocity", "enu_velocity", "cos_sin_degrees",
            "magnitude"]
 
-#: The Earth's sidereal rotation rate (rad/s).
-EARTH_RATE = 7.2921159e-5
 
 _UNITS = {"a_c": "m/s^2", "a_euler": "m/s^2", "a_centripetal": "m/s^2",
           "a_transport": "m/s^2", "a": "m/s^2", "F_c": "N"}

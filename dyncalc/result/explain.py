@@ -8,7 +8,7 @@ the value of its left-hand side: ``\\omega = \\sqrt{\\frac{100\\,\\mathrm{N/m}}{
 = 7.07107\\,\\mathrm{rad/s}``. :func:`tex_to_text` gives the plain-text twin of each line.
 
 Nothing here prints; the three renderings of an explanation are in
-:mod:`dyncalc.cli.explain_render`.
+:mod:`dyncalc.result.explain_render`.
 """
 from __future__ import annotations
 

@@ -1,11 +1,12 @@
 """Catalog: the basic oscillators (mass-spring, torsional, pendulum, physical pendulum)."""
 from __future__ import annotations
 
+from ..constants import STANDARD_GRAVITY_TEXT
 from ..result.explain import Formula
 from ..units import ACCELERATION, ANGLE, INERTIA, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from . import Param, Scene, register
 
-G_DEFAULT = "9.80665 m/s^2"
+G_DEFAULT = STANDARD_GRAVITY_TEXT
 
 
 def gravity() -> Param:

@@ -17,27 +17,10 @@ from ..units import DIMENSIONLESS, parse_quantity, to_si
 from . import Scene, get_scene
 from ..result.kinds import result_kind
 
-__all__ = ["run_scene", "infer_scene", "is_result_name", "read_inputs", "compute_values",
+__all__ = ["run_scene", "is_result_name", "read_inputs", "compute_values",
            "make_result", "DEFAULT_RTOL"]
 
 DEFAULT_RTOL = 1e-9
-
-#: Without --scene, the parameters given choose the scene (SPEC.md, natural-frequency).
-INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum", {"l"}))
-
-
-def infer_scene(names: set[str]) -> str:
-    """The scene the parameter names fit: mass-spring (the default), torsional or pendulum
-    (results given to solve for, ``f=5Hz``, do not choose)."""
-    given = {n for n in names if n != "zeta" and not is_result_name(n)}
-    if not given:
-        return "mass-spring"
-    for scene_name, keys in INFERENCE:
-        if given & keys and given <= {p.name for p in get_scene(scene_name).params}:
-            return scene_name
-    raise InputError(f"the parameters given ({', '.join(sorted(given))}) fit no scene on their "
-                     "own; name one with --scene (dyncalc scenes lists them)")
-
 
 def _parameter_list(scene: Scene) -> str:
     return f"the parameters of {scene.name} are: {scene.signature()}"
@@ -65,10 +48,9 @@ def _resolve_groups(scene: Scene, texts: dict[str, str], unknown: tuple[str, ...
 def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, str] | None = None,
               method: str | None = None, rtol: float | None = None, strict: bool = False,
               command: str = "natural-frequency") -> Result:
-    """Compute ``scene`` from the parameter texts the user gave.
-
-    A result given as an input (``f=5Hz``) with one parameter missing (or given as
-    ``NAME=?``) makes it an inverse problem, solved by :func:`dyncalc.scenes.inverse.solve`.
+    """Compute ``scene`` from the parameter texts the user gave (every parameter it needs
+    given or defaulted; an inverse problem, a result given as an input, is
+    :func:`dyncalc.scenes.inverse.solve`'s, and the command decides which to call).
 
     Parameters
     ----------
@@ -86,11 +68,6 @@ def run_scene(scene: Scene | str, texts: dict[str, str], *, labels: dict[str, st
     """
     if isinstance(scene, str):
         scene = get_scene(scene)
-    if any(scene.param(name) is None and is_result_name(name) for name in texts):
-        from .inverse import solve
-
-        return solve(scene, texts, labels=labels or {}, method=method, rtol=rtol,
-                     strict=strict, command=command)
     prepared = read_inputs(scene, texts, labels or {}, strict)
     if prepared.missing:
         raise InputError(f"{scene.name} needs {', '.join(prepared.missing)}; "

@@ -1,0 +1,110 @@
+"""The layout of ARCHITECTURE.md, enforced: the layers contract of pyproject.toml
+(import-linter), no import cycle between any two modules, a cli/X.py + commands/X.py pair per
+command, and a docstring on every module."""
+from __future__ import annotations
+
+import ast
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import grimp
+import pytest
+
+from dyncalc.cli import COMMAND_MODULES
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE = ROOT / "dyncalc"
+
+
+def test_layers_contract_is_kept():
+    """`lint-imports` checks the layers of pyproject.toml: nothing imports upward."""
+    lint = shutil.which("lint-imports", path=os.path.dirname(sys.executable))
+    assert lint is not None, "import-linter is not installed (pip install '.[test]')"
+    run = subprocess.run([lint, "--no-cache"], cwd=ROOT, capture_output=True, text=True,
+                         timeout=120)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
+    assert "1 kept, 0 broken" in run.stdout
+
+
+def _cycles(graph) -> list[list[str]]:
+    """The strongly connected components of more than one module (Tarjan, iterative)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    on_stack: set[str] = set()
+    stack: list[str] = []
+    found: list[list[str]] = []
+    counter = 0
+    for root in sorted(graph.modules):
+        if root in index:
+            continue
+        work = [(root, iter(sorted(graph.find_modules_directly_imported_by(root))))]
+        index[root] = low[root] = counter
+        counter += 1
+        stack.append(root)
+        on_stack.add(root)
+        while work:
+            node, children = work[-1]
+            child = next(children, None)
+            if child is not None:
+                if child not in index:
+                    index[child] = low[child] = counter
+                    counter += 1
+                    stack.append(child)
+                    on_stack.add(child)
+                    work.append((child, iter(sorted(
+                        graph.find_modules_directly_imported_by(child)))))
+                elif child in on_stack:
+                    low[node] = min(low[node], index[child])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[node])
+            if low[node] == index[node]:
+                component = []
+                while True:
+                    member = stack.pop()
+                    on_stack.discard(member)
+                    component.append(member)
+                    if member == node:
+                        break
+                if len(component) > 1:
+                    found.append(sorted(component))
+    return found
+
+
+def test_no_import_cycles():
+    """No two modules import each other, directly or round a longer loop (imports inside
+    functions count: grimp reads every import statement)."""
+    graph = grimp.build_graph("dyncalc")
+    assert _cycles(graph) == []
+
+
+def test_the_cycle_finder_finds_a_cycle():
+    class Graph:
+        modules = {"a", "b", "c", "d"}
+        edges = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}
+
+        def find_modules_directly_imported_by(self, name):
+            return self.edges[name]
+
+    assert _cycles(Graph()) == [["a", "b", "c"]]
+
+
+@pytest.mark.parametrize("command", sorted(set(COMMAND_MODULES) - {"scenes"}))
+def test_every_command_is_a_cli_and_commands_pair(command):
+    module = COMMAND_MODULES[command]
+    assert (PACKAGE / "cli" / f"{module}.py").is_file()
+    assert (PACKAGE / "commands" / f"{module}.py").is_file()
+    assert module.replace("_", "-") in command or module == "springs"
+
+
+@pytest.mark.parametrize("path", sorted(str(p.relative_to(ROOT)) for p in PACKAGE.rglob("*.py")))
+def test_every_module_says_what_lives_there(path):
+    tree = ast.parse((ROOT / path).read_text())
+    docstring = ast.get_docstring(tree)
+    if path.endswith("_version.py") or path.endswith("__main__.py"):
+        return
+    assert docstring and docstring.strip(), f"{path} has no module docstring"
