@@ -47,6 +47,14 @@ class Entry:
     overflowed: bool = False  # a finite true value beyond float64: shown as inf / null
     uncertainty: Any = None  # standard uncertainty in ``dim.si`` (float or array), if any
 
+    @property
+    def canonical_unit(self) -> str:
+        """The unit ``--value``, ``--json`` and batch output give this entry in unless
+        ``--unit`` names another (SPEC.md, "Canonical units"): the SI coherent unit of its
+        dimension (``rad/s`` for an angular rate, ``Hz`` for a cycle rate, ``rad`` for an
+        angle, ``N*m/rad`` for a torsional stiffness); ``""`` for a pure number or a word."""
+        return self.dim.si if self.dim is not None else ""
+
     def uncertainty_in(self, unit: str | None = None):
         """The standard uncertainty in ``unit`` (default: the display unit), or ``None``."""
         if self.uncertainty is None or self.dim is None:
