@@ -467,3 +467,63 @@ def test_json_is_valid_and_full_precision():
     result = invoke("natural-frequency", "--k", "(100 ± 5) N/m", "--m", "2 kg", "--json")
     data = json.loads(result.stdout)
     assert isinstance(data["results"]["omega"]["uncertainty"], float)
+
+
+# --- propagation on the parsed inputs (issue 14): exact where closed, linear in cost ---------
+
+def test_spring_network_derivatives_are_exact():
+    """The network's derivatives are worked out in closed form, not by differences: the
+    hand value sqrt((0.36*10)^2 + (0.16*20)^2) is met to rounding (central differences with a
+    step of 1e-6 are off by about 1e-10)."""
+    results, _inputs, variance = explained("spring-series", "200+/-10 N/m", "300+/-20 N/m")
+    expected = math.hypot(0.36 * 10, 0.16 * 20)
+    assert results["k_eq"]["uncertainty"] == pytest.approx(expected, rel=1e-14)
+    total = (0.36 * 10) ** 2 + (0.16 * 20) ** 2
+    assert variance["k_eq"]["k1"] == pytest.approx((0.36 * 10) ** 2 / total, rel=1e-14)
+
+
+def test_nested_network_and_element_derivatives_are_exact():
+    """series(parallel(cantilever(l=2m), 5 kN/m), 10 kN/m) with EI = (2e4 ± 200) N*m^2 shared
+    and l of the cantilever ± 1 cm: k_c = 3 EI / l^3 = 7500 N/m, K_p = 12500 N/m,
+    k_eq = 1/(1/12500 + 1/10000) = 50000/9 N/m; d k_eq / d K_p = (k_eq / K_p)^2 = 16/81,
+    d k_c / d EI = 3 / l^3 = 0.375 /m, d k_c / d l = -3 k_c / l = -11250 N/m^2."""
+    data = json_of("spring-series", "parallel(cantilever(l=(2 ± 0.01) m), 5 kN/m)",
+                   "10 kN/m", "EI=(2e4 ± 200) N*m^2")
+    down = 16 / 81
+    u_kc = math.hypot(0.375 * 200, 11250 * 0.01)
+    assert data["results"]["k1"]["uncertainty"] == pytest.approx(u_kc, rel=1e-14)
+    assert data["results"]["k_eq"]["value"] == pytest.approx(50000 / 9, rel=1e-15)
+    assert data["results"]["k_eq"]["uncertainty"] == pytest.approx(down * u_kc, rel=1e-14)
+
+
+def test_propagation_reads_every_text_once(monkeypatch):
+    """The cost of propagation grows linearly with the number of uncertain inputs: nothing is
+    parsed again (n uncertain springs: exactly n readings, for n = 5 and n = 40), and a
+    scene's nudged computations call its physics twice per uncertain input, no more."""
+    from dyncalc.commands import springs as springs_module
+    from dyncalc.units import grammar
+
+    calls = []
+    original = grammar.parse_quantity
+
+    def counting(*args, **kwargs):
+        calls.append(args[0])
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(springs_module, "parse_quantity", counting)
+    for n in (5, 40):
+        calls.clear()
+        texts = [f"{100 + i} N/m ± 1%" for i in range(n)]
+        result = propagate(lambda: springs_module.network_stiffness("series", texts))
+        assert len(calls) == n
+        assert result.results["k_eq"].uncertainty > 0
+
+    scene_calls = []
+    from dyncalc.scenes import get_scene
+
+    scene = get_scene("mass-spring")
+    physics = scene.function()
+    monkeypatch.setattr(type(scene), "function",
+                        lambda self: (lambda **kw: scene_calls.append(1) or physics(**kw)))
+    propagate(lambda: run_scene("mass-spring", {"k": "100+/-5 N/m", "m": "2+/-0.1 kg"}))
+    assert len(scene_calls) == 1 + 2 * 2

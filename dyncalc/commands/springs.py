@@ -51,6 +51,9 @@ class ElementKind:
     alternatives: tuple[tuple[str, ...], ...]  # one group must be given: ("EI",) or ("E", "I")
     required: tuple[str, ...]
     function: str
+    #: the element's stiffness is a product of powers of its parameters: name -> exponent
+    #: (exact derivatives for the propagation of uncertainties: d k / d x = a k / x)
+    exponents: dict[str, int] = field(default_factory=dict)
     torsional: bool = False
 
     def usage(self) -> str:
@@ -60,23 +63,27 @@ class ElementKind:
 
 
 _BEAM = {"EI": RIGIDITY, "E": MODULUS, "I": SECOND_MOMENT, "l": LENGTH}
+_BEAM_POWERS = {"EI": 1, "E": 1, "I": 1, "l": -3, "c": 1}
 ELEMENTS = {
     "cantilever": ElementKind("cantilever", "3 EI / l^3", _BEAM, (("EI",), ("E", "I")), ("l",),
-                              "cantilever_stiffness"),
+                              "cantilever_stiffness", _BEAM_POWERS),
     "simply-supported": ElementKind("simply-supported", "48 EI / l^3", _BEAM,
-                                    (("EI",), ("E", "I")), ("l",), "midspan_stiffness"),
+                                    (("EI",), ("E", "I")), ("l",), "midspan_stiffness",
+                                    _BEAM_POWERS),
     "beam": ElementKind("beam", "c EI / l^3", {**_BEAM, "c": DIMENSIONLESS},
-                        (("EI",), ("E", "I")), ("c", "l"), "beam_stiffness"),
+                        (("EI",), ("E", "I")), ("c", "l"), "beam_stiffness", _BEAM_POWERS),
     "axial": ElementKind("axial", "EA / l", {"EA": FORCE, "E": MODULUS, "A": AREA, "l": LENGTH},
-                         (("EA",), ("E", "A")), ("l",), "axial_stiffness"),
+                         (("EA",), ("E", "A")), ("l",), "axial_stiffness",
+                         {"EA": 1, "E": 1, "A": 1, "l": -1}),
     "torsion-bar": ElementKind("torsion-bar", "G J_t / l",
                                {"GJ_t": TORSIONAL_RIGIDITY, "G": MODULUS, "J_t": SECOND_MOMENT,
                                 "l": LENGTH},
                                (("GJ_t",), ("G", "J_t")), ("l",), "torsion_bar_stiffness",
-                               torsional=True),
+                               {"GJ_t": 1, "G": 1, "J_t": 1, "l": -1}, torsional=True),
     "coil": ElementKind("coil", "G d^4 / (8 D^3 n)",
                         {"G": MODULUS, "d": LENGTH, "D": LENGTH, "n": DIMENSIONLESS},
-                        (), ("G", "d", "D", "n"), "coil_spring_stiffness"),
+                        (), ("G", "d", "D", "n"), "coil_spring_stiffness",
+                        {"G": 1, "d": 4, "D": -3, "n": -1}),
 }
 GROUPS = ("series", "parallel")
 
@@ -98,6 +105,7 @@ class Element:
     kind: ElementKind
     texts: dict[str, str]
     parsed: dict = field(default_factory=dict)
+    shared: set = field(default_factory=set)  # the parameters taken from a NAME= word
 
 
 @dataclass
@@ -283,6 +291,7 @@ def _resolve_shared(root, shared: dict[str, str], strict: bool) -> None:
                 if p not in leaf.texts:
                     leaf.texts[p] = shared[p]
                     used.add(p)
+        leaf.shared = set(leaf.texts) - own
         for pname, ptext in leaf.texts.items():
             dim = kind.params[pname]
             constraint = "positive"
@@ -310,8 +319,28 @@ def _element_stiffness(element: Element):
     return fn(q["l"], **{k: v for k, v in q.items() if k != "l"})
 
 
+class NetworkInputs:
+    """A network as read: its tree (every quantity parsed and checked) and how the top level
+    combines; what :func:`compute` needs, and nothing typed is read again after this."""
+
+    __slots__ = ("how", "root")
+
+    def __init__(self, how: str, root: Group):
+        self.how, self.root = how, root
+
+    def __repr__(self) -> str:
+        return f"NetworkInputs({self.how!r}, {len(list(_leaves(self.root)))} elements)"
+
+
+def read(how: str, words: list[str], strict: bool = False) -> NetworkInputs:
+    """The command's texts -> :class:`NetworkInputs` (see :func:`parse_network`)."""
+    root, _shared = parse_network(how, words, strict)
+    return NetworkInputs(how, root)
+
+
 def network_stiffness(how: str, words: list[str], strict: bool = False) -> Result:
-    """Equivalent stiffness of the network written in ``words``, combined ``how``.
+    """Equivalent stiffness of the network written in ``words``, combined ``how``
+    (:func:`read`, then :func:`compute`).
 
     Parameters
     ----------
@@ -331,9 +360,16 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
     >>> network_stiffness("series", ["200 N/m", "300 N/m"]).results["k_eq"].si
     120.0
     """
+    return compute(read(how, words, strict))
+
+
+def compute(inputs: NetworkInputs) -> Result:
+    """The Result of a network read by :func:`read`: ``k_eq`` first, then each element
+    function's own stiffness; the derivatives for the propagation of uncertainties are exact
+    (:func:`_sensitivity`)."""
     from ..physics.springs import parallel_stiffness, series_stiffness
 
-    root, shared = parse_network(how, words, strict)
+    how, root = inputs.how, inputs.root
     stiffness: dict[str, object] = {}
     inputs: dict[str, Entry] = {}
     element_results: dict[str, Entry] = {}
@@ -395,7 +431,77 @@ def network_stiffness(how: str, words: list[str], strict: bool = False) -> Resul
     result.add_underflow_warnings()
     if len(root.children) > 1:
         result.slips["k_eq"] = _swapped_networks(root, combine, stiffness, si)
+    result.sensitivity = lambda: _sensitivity(root, stiffness, si, k_eq)
     return result
+
+
+def _sensitivity(root: Group, stiffness: dict, si: str, k_eq: float):
+    """Exact derivatives of ``k_eq`` and of each element's stiffness with respect to every
+    uncertain input (a stiffness typed, or an element's parameter; a shared ``NAME=`` value is
+    one input, however many elements use it).
+
+    Down the tree, ``d k_eq / d k_node`` is the product along the path of ``(K_g / k_c)^2``
+    for a series group ``g`` (``1/K_g = sum 1/k_c``) and of 1 for a parallel one; an element's
+    stiffness is a product of powers of its parameters, ``d k / d x = a k / x``.
+    """
+    from ..result.propagate import Sensitivity, UncertainInput
+
+    values = {name: float(q.to(si).magnitude) for name, q in stiffness.items()}
+    inputs: list[UncertainInput] = []
+    index: dict[str, int] = {}
+    # (input index, result name, d result / d input), summed per pair below
+    parts: list[tuple[int, str, float]] = []
+
+    def slot(key: str, parsed) -> int:
+        if key not in index:
+            index[key] = len(inputs)
+            inputs.append(UncertainInput(key, float(parsed.si), float(parsed.uncertainty)))
+        return index[key]
+
+    def walk(node, weight: float, value: float) -> None:
+        if isinstance(node, Group):
+            for child in node.children:
+                child_value = _node_value(child, values)
+                if node.how == "parallel":
+                    factor = 1.0
+                else:  # K / k_c -> 1 for an element that underflowed to zero (K ~ k_c)
+                    factor = (value / child_value) ** 2 if child_value > 0 else 1.0
+                walk(child, weight * factor, child_value)
+            return
+        if isinstance(node, Leaf):
+            if node.parsed.uncertainty is not None:
+                parts.append((slot(node.name, node.parsed), "k_eq", weight))
+            return
+        for pname, parsed in node.parsed.items():
+            if parsed.uncertainty is None:
+                continue
+            key = pname if pname in node.shared else f"{node.name}.{pname}"
+            dk_dx = node.kind.exponents[pname] * value / float(parsed.si)
+            i = slot(key, parsed)
+            parts.append((i, node.name, dk_dx))
+            parts.append((i, "k_eq", weight * dk_dx))
+
+    walk(root, 1.0, k_eq)
+    slopes: dict[str, dict[int, float]] = {}
+    for i, name, slope in parts:
+        row = slopes.setdefault(name, {})
+        row[i] = row.get(i, 0.0) + slope
+    failed = {"k_eq"} if not math.isfinite(k_eq) and inputs else set()
+    return Sensitivity(inputs, slopes, failed)
+
+
+def _node_value(node, values: dict[str, float]) -> float:
+    """A node's stiffness in SI: an element's own, a group's combined (in floats, as the
+    derivatives need it; k_eq itself is computed by the careful kernels)."""
+    if not isinstance(node, Group):
+        return values[node.name]
+    parts = [_node_value(c, values) for c in node.children]
+    if node.how == "parallel":
+        return math.fsum(parts)
+    if not all(p > 0 for p in parts):
+        return 0.0
+    inverse = math.fsum(1.0 / p for p in parts)
+    return 1.0 / inverse if inverse > 0 else math.inf
 
 
 def _swapped_networks(root: Group, combine, stiffness: dict, si: str) -> dict[str, float]:

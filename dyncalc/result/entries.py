@@ -121,10 +121,14 @@ class Result:
     variance shares of an uncertain input), so a run that shows no explanation never pays
     for one. ``slips`` maps a result name to {a common slip, in words: the value (SI) that
     slip gives}, for the diagnosis of a failed ``--check`` (:mod:`dyncalc.result.checks`).
+    ``sensitivity``, set by a command that reads its inputs and then computes, is a function
+    of no arguments giving a :class:`dyncalc.result.propagate.Sensitivity` (the derivatives of
+    the results with respect to the uncertain inputs, worked out on the parsed inputs); it
+    is called only when an input carries an uncertainty.
     """
 
     __slots__ = ("command", "results", "inputs", "scene", "model", "method", "warnings",
-                 "_explanation", "extra", "slips")
+                 "_explanation", "extra", "slips", "sensitivity")
 
     def __init__(self, command: str, results: dict[str, Entry],
                  inputs: dict[str, Entry] | None = None, scene: str | None = None,
@@ -140,6 +144,7 @@ class Result:
         self._explanation = explanation
         self.extra = {} if extra is None else extra
         self.slips = {} if slips is None else slips
+        self.sensitivity: Callable[[], Any] | None = None
 
     @property
     def explanation(self) -> Explanation | None:

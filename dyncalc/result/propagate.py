@@ -39,7 +39,8 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["traced_input", "propagate", "nudged_hint", "store_hint", "RELATIVE_STEP"]
+__all__ = ["traced_input", "propagate", "nudged_hint", "store_hint", "RELATIVE_STEP",
+           "UncertainInput", "Sensitivity", "central_differences"]
 
 #: The finite-difference step relative to the input's magnitude.
 RELATIVE_STEP = 1e-6
@@ -165,8 +166,10 @@ def propagate(compute: Callable[[], Any]):
     hook = UNCERTAIN_INPUT_HOOK.set(traced_input)
     try:
         result = compute()
-        if not tape.inputs:
+        if not tape.inputs:  # no quantity was typed with an uncertainty
             return result
+        if result.sensitivity is not None:  # the command read, then computed: no re-runs
+            return _propagate_read(result, result.sensitivity())
         _name_inputs(result, tape)
         nominal = _numbers(result)
         terms: dict[str, dict[int, np.ndarray]] = {name: {} for name in nominal}
@@ -187,7 +190,79 @@ def propagate(compute: Callable[[], Any]):
     finally:
         UNCERTAIN_INPUT_HOOK.reset(hook)
         _TAPE.reset(token)
-    _attach(result, tape, nominal, terms, failed)
+    _attach(result, [item.name for item in tape.inputs], nominal, terms, failed)
+    return result
+
+
+class UncertainInput:
+    """One uncertain input of a command that reads, then computes: the name its share of a
+    variance is listed under, its SI value and standard uncertainty."""
+
+    __slots__ = ("name", "si", "sigma")
+
+    def __init__(self, name: str, si: float, sigma: float):
+        self.name, self.si, self.sigma = name, si, sigma
+
+    def __repr__(self) -> str:
+        return f"UncertainInput({self.name!r}, {self.si!r}, {self.sigma!r})"
+
+
+class Sensitivity:
+    """The derivatives of a result's numbers with respect to its uncertain inputs, as the
+    command worked them out on its parsed inputs: ``slopes[result][i]`` is
+    ``d result / d inputs[i]`` in SI (a float or an array shaped like the result), exact
+    where the formula is closed; a result in ``failed`` could not be differentiated."""
+
+    __slots__ = ("inputs", "slopes", "failed")
+
+    def __init__(self, inputs: list[UncertainInput], slopes: dict[str, dict[int, Any]],
+                 failed: set[str] | None = None):
+        self.inputs, self.slopes = inputs, slopes
+        self.failed = set() if failed is None else failed
+
+
+def central_differences(inputs: list[UncertainInput], nominal: dict[str, Any],
+                        rerun: Callable[[int, float], dict[str, Any] | None]) -> Sensitivity:
+    """Slopes by central differences on parsed inputs: ``rerun(i, offset)`` computes again
+    with input ``i`` moved by ``offset`` (SI) and returns the numbers by name (``None`` where
+    that value is refused); nothing is parsed again, so the cost is two computations per
+    uncertain input. For results behind a root find or an ODE, where no closed derivative
+    exists."""
+    slopes: dict[str, dict[int, Any]] = {name: {} for name in nominal}
+    failed: set[str] = set()
+    for index, item in enumerate(inputs):
+        if item.sigma == 0:
+            continue
+        h = RELATIVE_STEP * (abs(item.si) if item.si != 0 else item.sigma)
+        up, down = rerun(index, h), rerun(index, -h)
+        for name, y0 in nominal.items():
+            slope = _slope(np.asarray(y0, dtype=float), h, up, down, name)
+            if slope is None:
+                failed.add(name)
+            else:
+                slopes[name][index] = slope
+    return Sensitivity(inputs, slopes, failed)
+
+
+def _propagate_read(result, sensitivity: Sensitivity):
+    """Attach the uncertainties a command's own :class:`Sensitivity` gives."""
+    if not sensitivity.inputs:
+        return result
+    nominal = _numbers(result)
+    terms: dict[str, dict[int, np.ndarray]] = {name: {} for name in nominal}
+    failed = set(sensitivity.failed)
+    for name in nominal:
+        if name in failed:
+            continue
+        for index, slope in sensitivity.slopes.get(name, {}).items():
+            sigma = sensitivity.inputs[index].sigma
+            with np.errstate(all="ignore"):  # an overflow is caught in _attach
+                term = (np.asarray(slope, dtype=float) * sigma) ** 2
+            if not np.all(np.isfinite(slope)):
+                failed.add(name)
+                break
+            terms[name][index] = term
+    _attach(result, [item.name for item in sensitivity.inputs], nominal, terms, failed)
     return result
 
 
@@ -219,7 +294,7 @@ def _name_inputs(result, tape: _Tape) -> None:
             item.label = entry.name
 
 
-def _attach(result, tape: _Tape, nominal, terms, failed) -> None:
+def _attach(result, names: list[str], nominal, terms, failed) -> None:
     shares: dict[str, dict[str, float]] = {}
     for name, parts in terms.items():
         entry = result.results[name]
@@ -242,7 +317,7 @@ def _attach(result, tape: _Tape, nominal, terms, failed) -> None:
             share: dict[str, float] = {}
             for index, part in parts.items():
                 fraction = float(np.sum(part)) / grand
-                key = tape.inputs[index].name
+                key = names[index]
                 share[key] = share.get(key, 0.0) + (fraction if fraction > 1e-12 else 0.0)
             shares[name] = share
     if not result.amend_explanation(lambda explanation: setattr(explanation, "variance",
