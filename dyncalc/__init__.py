@@ -19,7 +19,7 @@ __all__ = [
 
 _HOME = {
     "Q_": "units", "registry": "units", "parse_quantity": "units", "parse_vector": "units",
-    "InputError": "errors", "network_stiffness": "networks",
+    "InputError": "errors", "network_stiffness": "commands.springs",
     **{name: "physics.springs" for name in __all__ if name.endswith("_stiffness")
        and name != "network_stiffness"},
 }

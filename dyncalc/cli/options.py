@@ -16,7 +16,7 @@ import click
 
 from ..errors import EXIT_CHECK_FAILED, EXIT_OK, InputError, one_line
 
-__all__ = ["Output", "output_options", "complete_scene"]
+__all__ = ["Output", "output_options", "complete_scene", "build_command"]
 
 MAX_DIGITS = 17
 
@@ -152,6 +152,70 @@ def complete_scene(ctx, param, incomplete):
     return _complete_scene(ctx, param, incomplete)
 
 
+def _complete_result(ctx, param, incomplete):
+    """Shell completion of ``--value``, ``--unit`` and ``--check``: the result names of the
+    command's record (``NAME=`` for the two that take an assignment)."""
+    from click.shell_completion import CompletionItem
+
+    record = getattr(ctx.command, "record", None)
+    names = record.result_names() if record is not None else []
+    suffix = "=" if param.name in ("units", "checks") else ""
+    return [CompletionItem(name + suffix) for name in names if name.startswith(incomplete)]
+
+
+def _complete_words(words):
+    """Shell completion from a parameter's words (a tuple, or a function giving one)."""
+    def complete(ctx, param, incomplete):
+        from click.shell_completion import CompletionItem
+
+        choices = words() if callable(words) else words
+        return [CompletionItem(w) for w in choices if w.startswith(incomplete)]
+    return complete
+
+
+def build_command(record, *, rows=None, after=None):
+    """The click command of a :class:`dyncalc.commands.record.Command`: an option per
+    parameter, in the record's order (a ``choice``, or a setting with fixed words, validated
+    by click; words given as a function only completed), the free words as an argument, the
+    shared output options. The callback runs ``record.compute`` on the texts as typed, or
+    with ``--batch`` the row adapter ``rows(settings, out)`` over the file's rows; ``after``
+    acts on the result before it is shown (``--plot``)."""
+
+    def callback(out, words=(), **values):
+        if out.batch is not None:
+            settings = {p.name: values[p.name] for p in record.parameters
+                        if p.kind == "setting"}
+            given: dict[str, object] = {p.flag: values[p.name] for p in record.parameters
+                                        if p.kind != "setting"}
+            if record.words is not None:
+                given[""] = words
+            return out.run_batch(rows(settings, out), given)
+        result = out.compute(lambda: record.compute(values, words, rtol=out.rtol,
+                                                    strict=out.strict))
+        if after is not None:
+            after(result, values)
+        return out.emit(result)
+
+    callback.__name__ = record.name.replace("-", "_")
+    callback.__doc__ = record.help
+    decorated = output_options(callback)
+    for parameter in reversed(record.parameters):
+        extra: dict[str, object] = {}
+        if isinstance(parameter.choices, tuple) and parameter.kind in ("choice", "setting"):
+            extra["type"] = click.Choice(parameter.choices)
+        elif parameter.choices is not None:
+            extra["shell_complete"] = _complete_words(parameter.choices)
+        if parameter.default is not None and parameter.kind == "setting":
+            extra["default"] = parameter.default
+        decorated = click.option(parameter.flag, parameter.name, metavar=parameter.metavar,
+                                 help=parameter.help, **extra)(decorated)
+    if record.words is not None:
+        decorated = click.argument("words", nargs=-1, metavar=record.words)(decorated)
+    command = click.command(record.name, help=record.help, short_help=record.summary)(decorated)
+    command.record = record
+    return command
+
+
 def _positive_rtol(ctx, param, value):
     if value is not None and not (0 < value < 1):
         raise click.BadParameter(f"must be between 0 and 1 (exclusive); got {value:g}")
@@ -174,13 +238,15 @@ def output_options(command):
     decorators = [
         click.option("--json", "as_json", is_flag=True,
                      help="Print one JSON object (full precision)."),
-        click.option("--value", metavar="NAME",
+        click.option("--value", metavar="NAME", shell_complete=_complete_result,
                      help="Print only the number of result NAME (full precision)."),
         click.option("--unit", "units", multiple=True, metavar="NAME=UNIT",
+                     shell_complete=_complete_result,
                      help="Show result NAME in UNIT (repeatable), e.g. --unit k_eq=lbf/in."),
         click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=6,
                      show_default=True, help="Significant digits in human output."),
         click.option("--check", "checks", multiple=True, metavar="NAME=QUANTITY",
+                     shell_complete=_complete_result,
                      help="Compare result NAME with your answer; exit 1 if it differs by more "
                           "than --rtol (repeatable)."),
         click.option("--rtol", type=float, default=None, callback=_positive_rtol,

@@ -24,15 +24,15 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from ..errors import InputError, PhysicsError
+from ..lazy import numpy as np
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
+from .record import Command, Parameter, ResultName
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
                     MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
                     parse_vector)
 
-__all__ = ["coriolis_result", "OPTIONS"]
+__all__ = ["COMMAND", "coriolis_result", "OPTIONS"]
 
 #: Option name -> (dimension, description).
 OPTIONS = {
@@ -619,3 +619,67 @@ def _earth(texts: dict[str, str], strict: bool) -> Result:
              "derived_v": derived}
     return _compute(reader, Omega, v_r, parsed, mass, model="Earth, east-north-up",
                     earth=earth)
+
+
+# --- the command record ----------------------------------------------------------------------
+
+_VECTOR = "VEC"
+#: option -> (metavar, help) of ``dyncalc coriolis --help``, in its order
+_HELP = {
+    "omega": (_VECTOR, "Angular velocity of the frame: '0,0,2 rad/s' (rad/s, deg/s, rpm), or "
+              "a magnitude ('2 rad/s') for perpendicular vectors; with --latitude the rotation "
+              "rate only (default 7.2921159e-5 rad/s)."),
+    "vr": (_VECTOR, "Velocity relative to the frame: '3,0,0 m/s' (km/h ...), or a magnitude; "
+           "with --latitude east, north, up components."),
+    "r": (_VECTOR, "Position in the frame (from its origin); a magnitude is the distance from "
+          "the rotation axis."),
+    "alpha": (_VECTOR, "Angular acceleration of the frame, e.g. '0,0,1 rad/s^2' (a magnitude: "
+              "about the axis of --omega)."),
+    "a0": (_VECTOR, "Acceleration of the frame's origin, e.g. '1,0,0 m/s^2' (vectors only)."),
+    "ar": (_VECTOR, "Acceleration relative to the frame (vectors only)."),
+    "mass": ("M", "Mass: adds the Coriolis force F_c = -m a_c."),
+    "latitude": ("ANGLE", "Earth mode: latitude from -90deg to 90deg (positive north); --vr "
+                 "and the other vectors are then east, north, up components."),
+    "speed": ("V", "Earth mode: horizontal speed (with --heading), instead of --vr."),
+    "heading": ("ANGLE", "Earth mode: compass heading of --speed, 0deg = north, 90deg = "
+                "east."),
+    "vertical": ("V", "Earth mode: vertical speed, positive up (with or without --speed)."),
+}
+
+
+def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
+    return coriolis_result({name: values.get(name) for name in OPTIONS}, strict=strict)
+
+
+COMMAND = Command(
+    "coriolis",
+    "Coriolis acceleration and every term of relative motion.",
+    """Coriolis acceleration a_c = 2 Omega x v_r and every term of the relative-motion formula
+    a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r, in a machine or on Earth.
+
+    Vectors have three components and one unit ("0,0,2 rad/s", "(0, 0, 2) rpm",
+    "[1,0,0] km/h"); results are in SI. With --mass also the Coriolis force F_c = -m a_c (the
+    apparent force, opposite to a_c). Any of --r, --alpha, --a0, --ar adds a_euler
+    (alpha x r), a_centripetal (Omega x (Omega x r)), a_transport and the absolute a; missing
+    ones are zero. a_c_mag, F_c_mag and a_mag are the magnitudes (--check compares those).
+
+    Scalars (--omega 2rad/s --vr 3m/s) are magnitudes of perpendicular vectors: a_c = 2 Omega
+    v_r and F_c = m a_c; --r is then the distance from the axis and --alpha turns about the
+    same axis; --a0, --ar and the absolute a need vectors.
+
+    --latitude sets up the rotating Earth: x east, y north, z up, Omega = Omega_E (0, cos phi,
+    sin phi). --explain lists each term with its numbers, which vanish and why, and on Earth
+    the directions of a_c and of the Coriolis force.
+
+    \b
+    Examples:
+      dyncalc coriolis --omega "2 rad/s" --vr "3 m/s"
+      dyncalc coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m" --mass 2kg
+      dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
+      dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
+    """,
+    tuple(Parameter(name, dim, _HELP[name][1], _HELP[name][0])
+          for name, (dim, _words) in OPTIONS.items()),
+    tuple(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
+    _run,
+)

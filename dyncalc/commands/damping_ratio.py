@@ -23,16 +23,16 @@ from __future__ import annotations
 import math
 import re
 
-import numpy as np
-
 from ..errors import InputError, PhysicsError
+from ..lazy import numpy as np
 from ..result.explain import Formula
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
 from ..result.kinds import DECAY_RATE
-from ..units import (ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS, STIFFNESS, TIME,
-                    Dim, parse_quantity, parse_unit)
+from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS,
+                     STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
+from .record import Command, Parameter, results_from_kinds
 
-__all__ = ["damping_ratio", "parse_amplitudes", "parse_cycles", "damping_scene_names",
+__all__ = ["COMMAND", "damping_ratio", "parse_amplitudes", "parse_cycles", "damping_scene_names",
            "MAX_PEAKS"]
 
 #: The most peaks ``--amplitudes`` reads.
@@ -482,3 +482,70 @@ def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
         ex.latex += [line for line in latex if not line.startswith(r"\zeta =")]
         ex.latex_substituted += [line for line in latex_sub if not line.startswith(r"\zeta =")]
     return result
+
+
+# --- the command record ----------------------------------------------------------------------
+
+_INPUTS = ("c", "k", "m", "omega", "decrement", "ratio", "cycles", "amplitudes", "g")
+
+
+def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
+    return damping_ratio(**{name: values.get(name) for name in _INPUTS},
+                         scene=values.get("scene"), params=tuple(words),
+                         method=values.get("method"), rtol=rtol, strict=strict)
+
+
+COMMAND = Command(
+    "damping-ratio",
+    "Damping ratio, decrement, Q and regime from a measurement.",
+    """Damping ratio zeta, log decrement delta, Q, regime and damped period from a
+    measurement: a damper rating, a decrement, two peaks, a list of peaks or a scene.
+
+    Give exactly one of --c/--k/--m, --decrement, --ratio (with --cycles), --amplitudes or
+    --scene. --omega (or --k and --m) adds the damped frequency and period; k and m add the
+    critical damping coefficient c_c and c. Regime: undamped, underdamped, critically damped
+    (also when c equals c_c to within the rounding of the inputs), overdamped. Peaks that are
+    not exponential (Coulomb friction, noise larger than the decay) come with a warning.
+
+    \b
+    Examples:
+      dyncalc damping-ratio --ratio 10 --cycles 10          # E5.18: zeta = 0.0366
+      dyncalc damping-ratio --c "4 N*s/m" --k 100N/m --m 1kg
+      dyncalc damping-ratio --decrement 0.23 --omega "12 rad/s"
+      dyncalc damping-ratio --amplitudes "12.1, 9.0, 6.8, 5.1, 3.8 mV" --omega 25rad/s \\
+          --plot decay.png
+      dyncalc damping-ratio --scene rod-in-fluid m=1.5kg l=0.8m "beta=2 N*s/m^2"  # E5.14
+    """,
+    (
+        Parameter("c", DAMPING, "Viscous damping coefficient, e.g. '4 N*s/m' (with --k and "
+                  "--m).", "C"),
+        Parameter("k", STIFFNESS, "Stiffness, e.g. '100 N/m': with --c, or with another form "
+                  "for c_c, c and the damped period.", "K"),
+        Parameter("m", MASS, "Mass, e.g. 1kg (goes with --k).", "M"),
+        Parameter("decrement", DIMENSIONLESS, "Logarithmic decrement per cycle, "
+                  "ln(x_i / x_(i+1)).", "DELTA"),
+        Parameter("ratio", DIMENSIONLESS, "Amplitude ratio x_i / x_(i+N) of two peaks N cycles "
+                  "apart (R >= 1).", "R"),
+        Parameter("cycles", None, "Whole cycles between the two peaks of --ratio (default 1).",
+                  "N", kind="text"),
+        Parameter("amplitudes", None, "Successive peaks, one per cycle, one optional unit at "
+                  "the end, e.g. \"12.1, 8.3, 5.9 mV\": the decrement is fitted to all of "
+                  "them.", '"x0,x1,..."', kind="text"),
+        Parameter("scene", None, "A scene with a damper (rod-in-fluid, "
+                  "pendulum-spring-dashpot, frame-brace-damper), its parameters as "
+                  "NAME=QUANTITY words.", "NAME", kind="setting", choices=damping_scene_names),
+        Parameter("omega", ANGULAR_RATE, "Undamped natural angular frequency, e.g. '12 rad/s' "
+                  "or 115rpm: adds omega_d, f_d, T_d.", "OMEGA"),
+        Parameter("g", ACCELERATION, "Gravitational acceleration of a scene (default 9.80665 "
+                  "m/s^2).", "G"),
+        Parameter("method", None, "Fit of --amplitudes: log-linear (default; least squares of "
+                  "ln x) or nonlinear (least squares of x, scipy); a scene's own methods with "
+                  "--scene.", "METHOD", kind="setting"),
+        Parameter("plot", None, "Draw the free decay (the peaks and the fitted envelope for "
+                  "--amplitudes) into FILE (.png, .svg or .pdf); needs matplotlib (the plot "
+                  "extra).", "FILE.png", kind="after"),
+    ),
+    results_from_kinds(_KINDS),
+    _run,
+    words="[NAME=QUANTITY]...",
+)

@@ -8,9 +8,12 @@ from __future__ import annotations
 
 from ..errors import InputError
 from ..result import Result
-from ..scenes import Scene, get_scene
+from ..scenes import Scene, get_scene, scene_names
+from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA,
+                     LENGTH, MASS, STIFFNESS, TIME, TORSIONAL_STIFFNESS)
+from .record import Command, Parameter, ResultName
 
-__all__ = ["STANDARD", "INFERENCE", "collect_parameters", "infer_scene", "compute_scene",
+__all__ = ["COMMAND", "STANDARD", "INFERENCE", "collect_parameters", "infer_scene", "compute_scene",
            "natural_frequency"]
 
 #: Standard options and the scene parameter each one is (SPEC.md).
@@ -81,3 +84,65 @@ def natural_frequency(options: dict[str, str | None], words: tuple[str, ...] | l
     texts, labels = collect_parameters(options, words)
     name = scene if scene is not None else infer_scene(set(texts))
     return compute_scene(name, texts, labels=labels, method=method, rtol=rtol, strict=strict)
+
+
+# --- the command record ----------------------------------------------------------------------
+
+def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
+    return natural_frequency({option: values.get(option) for option in STANDARD}, words,
+                             scene=values.get("scene"), method=values.get("method"),
+                             rtol=rtol, strict=strict)
+
+
+COMMAND = Command(
+    "natural-frequency",
+    "Natural frequency omega (rad/s), f (Hz) and period T (s).",
+    """Natural frequency omega (rad/s), f (Hz) and period T (s) of a scene.
+
+    Scene parameters are given as NAME=QUANTITY words or by the standard options; a
+    parameter that cancels out of the answer is never asked for. Bare numbers are SI.
+
+    \b
+    Examples:
+      dyncalc natural-frequency --k "2 kN/m" --m 4kg
+      dyncalc natural-frequency --k 100N/m --m 2kg --zeta 0.05
+      dyncalc natural-frequency --length 1m --amplitude 170deg
+      dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=2/12 kg*m^2"
+      dyncalc natural-frequency --k 100N/m --m 2kg --check f=1.13Hz
+      dyncalc natural-frequency --batch rows.csv     # header: k [N/m],m [kg]
+    """,
+    (
+        Parameter("scene", None, "The set-up (dyncalc scenes lists them); default: chosen by "
+                  "the parameters given (k, m: mass-spring; kt, J: torsional; l: pendulum).",
+                  "NAME", kind="setting", choices=scene_names),
+        Parameter("k", STIFFNESS, "Stiffness, e.g. '2 kN/m' (k=).", "K"),
+        Parameter("m", MASS, "Mass, e.g. 4kg (m=).", "M"),
+        Parameter("kt", TORSIONAL_STIFFNESS, "Torsional stiffness, e.g. '3 kN*m/rad' (kt=).",
+                  "KT"),
+        Parameter("inertia", INERTIA, "Mass moment of inertia, e.g. '1.2 kg*m^2' (J=).", "J"),
+        Parameter("length", LENGTH, "Pendulum length (l=).", "L"),
+        Parameter("amplitude", ANGLE, "Swing amplitude for the exact large-amplitude period, "
+                  "e.g. 30deg.", "ANGLE"),
+        Parameter("zeta", DIMENSIONLESS, "Damping ratio: adds omega_d, f_d, T_d.", "ZETA"),
+        Parameter("g", ACCELERATION, "Gravitational acceleration (default 9.80665 m/s^2).",
+                  "G"),
+        Parameter("method", None, "auto (default: the cheapest model meeting --rtol), or one "
+                  "the scene offers (dyncalc scenes NAME lists them; pendulums: small-angle, "
+                  "series, elliptic, ode; half-cylinder-shell: linear, quadrature, ode).",
+                  "METHOD", kind="setting"),
+    ),
+    (
+        ResultName("omega", "ω", ANGULAR_RATE.si, "angular frequency"),
+        ResultName("f", "f", CYCLE_RATE.si, "frequency"),
+        ResultName("T", "T", TIME.si, "period"),
+        ResultName("zeta", "ζ", "", "damping ratio (with --zeta or a damped scene)"),
+        ResultName("omega_d", "ωd", ANGULAR_RATE.si, "damped angular frequency"),
+        ResultName("f_d", "fd", CYCLE_RATE.si, "damped frequency"),
+        ResultName("T_d", "Td", TIME.si, "damped period"),
+        ResultName("omega_<i>", "ω<i>", ANGULAR_RATE.si, "angular frequency of mode i"),
+        ResultName("f_<i>", "f<i>", CYCLE_RATE.si, "frequency of mode i"),
+        ResultName("T_<i>", "T<i>", TIME.si, "period of mode i"),
+    ),
+    _run,
+    words="[NAME=QUANTITY]...",
+)

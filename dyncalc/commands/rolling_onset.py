@@ -14,11 +14,12 @@ import time
 from ..constants import STANDARD_GRAVITY_TEXT
 from ..errors import InputError, PhysicsError
 from ..result.explain import Formula
+from .record import Command, Parameter, results_from_kinds
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, TIME, VELOCITY,
                     format_quantity, parse_quantity)
 
-__all__ = ["rolling_onset_result", "METHODS", "DEFAULT_RTOL", "DEFAULT_BODY"]
+__all__ = ["COMMAND", "rolling_onset_result", "METHODS", "DEFAULT_RTOL", "DEFAULT_BODY"]
 
 #: ``--method`` choices: ``auto`` is the closed form (exact to rounding, and the cheapest).
 METHODS = ("auto", "closed-form", "ode")
@@ -371,3 +372,57 @@ def _explain(onset, kappa, body_name, mu, g, v0, radius, omega0, incline, sin_b,
                                             incline, slope)
     return Explanation(formula=formula, substituted=sub, assumptions=assumptions,
                        reference=_REFERENCE, latex=latex, latex_substituted=latex_substituted)
+
+
+# --- the command record ----------------------------------------------------------------------
+
+def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
+    texts = {name: values.get(name) for name in _LABELS}
+    return rolling_onset_result(texts, method=values.get("method"), rtol=rtol, strict=strict)
+
+
+COMMAND = Command(
+    "rolling-onset",
+    "When a sliding ball, cylinder or hoop starts to roll.",
+    """When a ball, cylinder or hoop set down sliding starts to roll without slipping.
+
+    Kinetic friction opposes the slip of the contact point, v0 - r omega0, until it vanishes.
+    Results: t_roll (s), x_roll (m, displacement along the surface), v_roll (m/s), with
+    --radius omega_roll (rad/s), with backspin that brings the body back path_roll (m), on a
+    slope mu_min (the static friction that keeps it rolling). The mass cancels; bare numbers
+    are SI.
+
+    \b
+    Examples:
+      dyncalc rolling-onset --v0 "5 m/s" --mu 0.3 --explain       # E3.45, a bowling ball
+      dyncalc rolling-onset --v0 "2 m/s" --mu 0.2 --radius 28.5mm --omega0 "-300 rad/s"
+      dyncalc rolling-onset --v0 "3 m/s" --mu 0.25 --body hoop --incline -10deg
+      dyncalc rolling-onset --v0 15mph --mu 0.2 --method ode --json
+    """,
+    (
+        Parameter("v0", VELOCITY, "Initial sliding speed of the centre, e.g. '5 m/s' or 12mph "
+                  "(>= 0; its direction is the positive one).", "V0"),
+        Parameter("mu", DIMENSIONLESS, "Kinetic friction coefficient at the contact (> 0).",
+                  "MU"),
+        Parameter("body", None, "solid-sphere (default), hollow-sphere, solid-cylinder, "
+                  "hollow-cylinder or hoop.", "BODY", kind="text",
+                  choices=lambda: tuple(_bodies())),
+        Parameter("kappa", DIMENSIONLESS, "Shape factor J_C/(m r^2) of any body, instead of "
+                  "--body (>= 0).", "KAPPA"),
+        Parameter("radius", LENGTH, "Radius: needed with --omega0, and gives omega_roll.", "R"),
+        Parameter("omega0", ANGULAR_RATE, "Initial spin, e.g. '30 rad/s' or '-600 rpm': "
+                  "positive is the sense of rolling forward, negative is backspin (default 0; "
+                  "needs --radius).", "OMEGA0"),
+        Parameter("g", ACCELERATION, "Gravitational acceleration (default 9.80665 m/s^2).",
+                  "G"),
+        Parameter("incline", ANGLE, "Slope angle, e.g. 10deg: positive when the body moves "
+                  "uphill, negative downhill (between -90 and 90 deg).", "ANGLE"),
+        Parameter("method", None, "auto or closed-form (the default: exact to rounding), or "
+                  "ode: integrate the equations of motion with scipy's solve_ivp to --rtol, "
+                  "and report the difference from the closed form and both timings (JSON "
+                  "error_estimate, timing; --explain).", "METHOD", default="auto",
+                  kind="setting", choices=METHODS),
+    ),
+    results_from_kinds(_KINDS),
+    _run,
+)

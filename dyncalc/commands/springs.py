@@ -30,8 +30,10 @@ from ..errors import InputError, PhysicsError
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed
 from ..units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, SECOND_MOMENT, STIFFNESS,
                     TORSIONAL_STIFFNESS, Dim, parse_quantity)
+from .record import Command, ResultName
 
-__all__ = ["ELEMENTS", "network_stiffness", "parse_network"]
+__all__ = ["SPRING_SERIES", "SPRING_PARALLEL", "ELEMENTS", "network_stiffness", "parse_network",
+           "read", "compute", "NetworkInputs"]
 
 MAX_NETWORK_DEPTH = 16
 MAX_ELEMENTS = 1000
@@ -581,3 +583,60 @@ def _explain(root, stiffness, dim: Dim, k_eq: Entry | None = None) -> Explanatio
     return Explanation(formula, substituted, assumptions,
                        "Gross et al., Engineering Mechanics 3, Examples 5.11, 5.19, 5.26",
                        latex=latex, latex_substituted=latex_substituted)
+
+
+
+# --- the command records ---------------------------------------------------------------------
+
+NETWORK_HELP = """
+\b
+Each ELEMENT is one of:
+  200N/m, "3 kN*m/rad", inf         a stiffness (inf: a rigid link)
+  "series(A, B, ...)"               elements in series, nested freely
+  "parallel(A, B, ...)"             elements in parallel
+  "cantilever(l=2m, EI=...)"        3 EI/l^3   (or E=... and I=...)
+  "simply-supported(l=4m, EI=...)"  48 EI/l^3  at midspan
+  "beam(c=..., l=..., EI=...)"      c EI/l^3   from any beam table
+  "axial(l=..., EA=...)"            EA/l       (or E=... and A=...)
+  "torsion-bar(l=..., GJ_t=...)"    G J_t/l    (or G=... and J_t=...), torsional
+  "coil(G=..., d=..., D=..., n=...)"  G d^4/(8 D^3 n)
+A word NAME=QUANTITY (E=200GPa, EI="2e4 N*m^2", l=1m) is a shared value that every
+element needing NAME and not giving it takes. Linear and torsional elements cannot
+be mixed. The result k_eq is in the unit the elements were typed in when they
+share one, otherwise SI; element functions also report their own stiffness (k1, ...).
+"""
+
+
+def _record(how: str, summary: str, examples: str) -> Command:
+    def run(values, words=(), *, rtol=None, strict=False) -> Result:
+        return network_stiffness(how, list(words), strict=strict)
+
+    results = (ResultName("k_eq", "k_eq", "N/m", f"equivalent stiffness ({how}); N*m/rad for "
+                          "torsional elements"),
+               ResultName("k<i>", "k<i>", "N/m", "the stiffness of element i, when it is a "
+                          "standard element (cantilever(), coil(), ...)"))
+    return Command(f"spring-{how}", summary.split("\n")[0],
+                   f"{summary}\n{NETWORK_HELP}\n{examples}", (), results, run,
+                   words="ELEMENT...")
+
+
+SPRING_SERIES = _record(
+    "series",
+    "Equivalent stiffness of springs in series: 1/k_eq = sum 1/k_i.",
+    """\b
+Examples:
+  dyncalc spring-series "200 N/m" "300 N/m"                      # k_eq = 120 N/m
+  dyncalc spring-series "parallel(cantilever(l=2m), cantilever(l=1m))" 5kN/m \\
+      EI="2e4 N*m^2"                                   # E5.26, system 2
+  dyncalc spring-series "beam(c=1, l=1m, EI=2e4N*m^2)" 5kN/m   # E5.19""")
+
+SPRING_PARALLEL = _record(
+    "parallel",
+    "Equivalent stiffness of springs in parallel: k_eq = sum k_i.",
+    """\b
+Examples:
+  dyncalc spring-parallel "200 N/m" "300 N/m"                    # k_eq = 500 N/m
+  dyncalc spring-parallel "simply-supported(l=2*1.5m)" \\
+      "axial(l=(1+2**0.5)*1.5m)" EI="1e5 N*m^2" EA="2e7 N"        # E5.11
+  dyncalc spring-parallel "cantilever(l=2m)" "cantilever(l=1m)" 5kN/m \\
+      EI="2e4 N*m^2"                                   # E5.26, system 1""")
