@@ -206,3 +206,39 @@ def test_damped_rows_only_where_zeta_is_taken(page, scene):
     else:
         assert damped == set()
         assert scene.no_zeta_because in _section(page, scene.name)
+
+
+# --- docs/architecture.md and the README's pointer to it ---------------------------------------
+
+def _layout_entries() -> list[str]:
+    """The names the tree of docs/architecture.md lists directly under ``dyncalc/``."""
+    text = (DOCS / "architecture.md").read_text(encoding="utf-8")
+    tree = re.search(r"```\ndyncalc/\n(.*?)```", text, re.S)
+    assert tree, "docs/architecture.md has no dyncalc/ tree"
+    return re.findall(r"^  (\S+)", tree.group(1), re.M)
+
+
+def test_architecture_tree_is_the_package():
+    """Every part the page names exists, and every part of the package is named."""
+    package = ROOT / "dyncalc"
+    parts = {p.name + ("/" if p.is_dir() else "") for p in package.iterdir()
+             if not p.name.startswith("_") and p.name != "__pycache__"
+             and (p.is_dir() or p.suffix == ".py")}
+    parts.add("__init__.py")
+    assert set(_layout_entries()) == parts
+
+
+def test_architecture_names_the_layers_contract():
+    text = (DOCS / "architecture.md").read_text(encoding="utf-8")
+    pyproject = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    assert "[tool.importlinter]" in pyproject and "[tool.importlinter]" in text
+    assert "tests/test_architecture.py" in text
+    assert len(text.splitlines()) <= 60
+
+
+def test_readme_points_to_the_docs():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme[readme.index("\n## Where things live\n"):]
+    for target in ("docs/architecture.md", "docs/scenes.md"):
+        assert f"]({target})" in section
+        assert (ROOT / target).is_file()
