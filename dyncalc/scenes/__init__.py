@@ -1,10 +1,11 @@
-"""The scene catalog: one declarative entry per physical set-up of SCENES.md.
+"""The scene catalog: one declarative entry per physical set-up (docs/scenes.md lists them).
 
 A scene is data: its parameters (name, dimension, default, constraint), the physics function it
 calls (a dotted path, imported only when the scene is computed), its equation of motion and
 formula, the textbook example it reproduces and one runnable example command. ``dyncalc
-scenes`` prints from the same data, and one parametrised test runs every scene's example, so
-help and catalog never drift from the code.
+scenes`` prints from the same data, ``tools/gen_docs.py`` writes docs/scenes.md from it, and
+one parametrised test runs every scene's example, so help and catalog never drift from the
+code.
 
 Scenes are added with :func:`register`; the catalog modules that do so are listed in
 :data:`CATALOG_MODULES` and imported on first use of :func:`catalog`.

@@ -1,8 +1,9 @@
-"""Catalog: damped scenes (see SCENES.md): set-ups with their own damper.
+"""Catalog: damped scenes (see docs/scenes.md): set-ups with their own damper.
 
 They take no ``zeta=`` (``accepts_zeta=False``): the damping ratio is a result, computed from
 the damper. The damping parameter may be zero (the undamped limit). Every ``example_result``
-was computed independently with mpmath at 30 digits from the SCENES.md formula.
+was computed independently with mpmath at 30 digits from the formula of the contract,
+../shared/SCENES.md.
 """
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Catalog: rigid scenes (see SCENES.md): rolling bodies, drums, pulleys, compound pendulums.
+"""Catalog: rigid scenes (see docs/scenes.md): rolling bodies, drums, pulleys, compound pendulums.
 
 The physics is in :mod:`dyncalc.physics.rigid`; the references are to Gross et al.,
 *Engineering Mechanics 3*, 2nd ed. (E5.12 = Example 5.12).

@@ -1,8 +1,9 @@
-"""Catalog: nonlinear, coupled, rotating and moving-support scenes (see SCENES.md).
+"""Catalog: nonlinear, coupled, rotating and moving-support scenes (see docs/scenes.md).
 
 The ``example_result`` values were computed independently with mpmath at 30 digits from the
-SCENES.md formulas (the half-cylinder's period by mpmath.quad of its energy integral, the
-rod's equilibrium by mpmath.findroot, the coupled blocks' frequencies by mpmath.eig).
+formulas of the contract, ../shared/SCENES.md (the half-cylinder's period by mpmath.quad of its
+energy integral, the rod's equilibrium by mpmath.findroot, the coupled blocks' frequencies by
+mpmath.eig).
 """
 from __future__ import annotations
 
