@@ -79,7 +79,46 @@ def test_generation_is_deterministic(gen, page):
 
 
 def test_generated_files(gen):
-    assert sorted(gen.generate()) == ["scenes.md"]
+    assert sorted(gen.generate()) == ["commands.md", "scenes.md"]
+
+
+# --- the commands page, from the Command records -------------------------------------------
+
+def test_committed_commands_page_matches_the_records(gen):
+    path = DOCS / "commands.md"
+    assert path.is_file(), "docs/commands.md is missing; run `python tools/gen_docs.py`"
+    assert path.read_bytes() == gen.generate()["commands.md"].encode("utf-8"), (
+        "docs/commands.md differs from what the Command records generate; run "
+        "`python tools/gen_docs.py` and commit the result")
+
+
+def test_commands_page_lists_every_parameter_and_result(gen):
+    from dyncalc.cli import cli
+
+    text = gen.generate()["commands.md"]
+    for name, command in cli.commands.items():
+        if name == "scenes":
+            continue
+        assert f"\n## {name}\n" in text
+        section = text.split(f"\n## {name}\n", 1)[1].split("\n## ", 1)[0]
+        for p in command.record.parameters:
+            assert f"| `{p.flag} {p.metavar}` |" in section, (name, p.name)
+        for r in command.record.results:
+            assert f"| `{r.name}` |" in section, (name, r.name)
+
+
+def test_a_changed_record_changes_the_commands_page(gen):
+    from dyncalc.commands.rolling_onset import COMMAND
+    from dyncalc.commands.record import Command
+
+    values = {slot: getattr(COMMAND, slot) for slot in Command.__slots__}
+    values["parameters"] = values["parameters"][:-1]
+    changed = Command(**values)
+    records = gen.command_records()
+    page = gen.render_commands(records)
+    other = gen.render_commands([changed if r.name == "rolling-onset" else r for r in records])
+    assert "`--method METHOD`" in page.split("## rolling-onset", 1)[1]
+    assert "`--method METHOD`" not in other.split("## rolling-onset", 1)[1]
 
 
 # --- the generator sees the data ---------------------------------------------------------------
@@ -114,8 +153,10 @@ def test_a_dropped_scene_leaves_the_page(gen, page):
 
 
 def test_check_flags_a_stale_or_missing_page(gen, page, tmp_path):
-    assert gen.check(tmp_path) == ["scenes.md"]  # missing
+    assert gen.check(tmp_path) == ["commands.md", "scenes.md"]  # missing
     (tmp_path / "scenes.md").write_bytes(page.encode("utf-8"))
+    assert gen.check(tmp_path) == ["commands.md"]
+    (tmp_path / "commands.md").write_bytes(gen.generate()["commands.md"].encode("utf-8"))
     assert gen.check(tmp_path) == []
     (tmp_path / "scenes.md").write_bytes(page.replace("E5.12", "E5.13", 1).encode("utf-8"))
     assert gen.check(tmp_path) == ["scenes.md"]
