@@ -15,6 +15,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc import batch
+from dyncalc.batch import fast as fast_path, rows as row_specs
 from dyncalc.cli import cli
 from dyncalc.commands.natural_frequency import STANDARD
 
@@ -544,7 +545,7 @@ def test_the_vectorised_path_is_taken():
     spec = batch.NaturalFrequencyRows(STANDARD)
     table = [["100", "2 kN/m", "1e300"], ["2", "4000 g", "1e-300"]]
     columns = [batch.Column(0, "k", "k", "", "k"), batch.Column(1, "m", "m", "", "m")]
-    (block,) = batch._natural_frequency_fast(spec, columns, table, False, {})
+    (block,) = fast_path._natural_frequency_fast(spec, columns, table, False, {})
     assert block.rows.tolist() == [0, 1, 2]
     assert block.values["omega"].tolist() == [
         float(value("natural-frequency", "--k", k, "--m", m, name="omega"))
@@ -556,8 +557,8 @@ def test_generic_path_by_environment(tmp_path, monkeypatch):
     fast = run_file(tmp_path, "natural-frequency", text)
     monkeypatch.setenv(batch.GENERIC_ENV, "1")
     called = []
-    original = batch._natural_frequency_fast
-    monkeypatch.setattr(batch, "_natural_frequency_fast",
+    original = fast_path._natural_frequency_fast
+    monkeypatch.setattr(row_specs, "_natural_frequency_fast",
                         lambda *a: called.append(1) or original(*a))
     slow = run_file(tmp_path, "natural-frequency", text)
     assert slow.stdout == fast.stdout and not called
