@@ -8,8 +8,10 @@ mix units; an empty cell means "not given", exactly as an option left out. Each 
 one-off command with those parameters, so a row's numbers are exactly the one-off's.
 
 Output: the input columns as read, then one column per result, ``omega [rad/s]`` (CSV, full
-precision, the number ``--value`` would print); or, with ``--json``, one JSON object per line,
-the one-off ``--json`` object with the row's line number (``"line"``) in front. Cells may carry
+precision, as ``--value`` prints it); or, with ``--json``, one JSON object per line, the
+one-off ``--json`` object with the row's line number (``"line"``) in front. Results are in
+their canonical unit (:attr:`~dyncalc.result.entries.Entry.canonical_unit`: ``k_eq [N/m]``
+for springs typed in kN/m), unless ``--unit NAME=UNIT`` names another. Cells may carry
 uncertainties (``2.0+/-0.1``, ``(100 ± 5) N/m``): such rows take the generic path, and when the
 first chunk has any, each result column is followed by ``u(NAME) [unit]``, its standard
 uncertainty (empty for rows without one).

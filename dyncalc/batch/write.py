@@ -29,7 +29,9 @@ class _Failure(Exception):
 class _Writer:
     """Turns each chunk's outcomes into text, in order: CSV (the input columns, then a column
     per result) or JSON lines. The result columns are fixed by the first chunk's rows (a chunk
-    is ``chunk_rows`` rows)."""
+    is ``chunk_rows`` rows). Results are given in their canonical unit (SPEC.md, "Batch":
+    ``omega [rad/s]`` whatever units the inputs were typed in), unless ``--unit`` (``units``)
+    names another."""
 
     def __init__(self, header: list[str], as_json: bool, units: dict[str, str], on_error: str,
                  out, err, chunk_rows: int):
@@ -44,15 +46,16 @@ class _Writer:
     def fix_columns(self, outcomes, blocks, upto: int) -> None:
         names: dict[str, Any] = {}
         first: list[tuple[int, list]] = []
-        for block in blocks:
+        for block in blocks:  # (a fast result always has a dimension: its SI unit is canonical)
             position = int(block.rows[0])
             if position < upto:
-                first.append((position, [(name, block.kinds[name].unit, block.kinds[name].dim)
+                first.append((position, [(name, block.kinds[name].dim.si, block.kinds[name].dim)
                                          for name in block.values]))
         for i in range(upto):
             kind, item = outcomes[i]
             if kind == "ok":
-                first.append((i, [(name, e.unit, e.dim) for name, e in item.results.items()]))
+                first.append((i, [(name, e.canonical_unit, e.dim)
+                                  for name, e in item.results.items()]))
                 self.uncertain.update(name for name, e in item.results.items()
                                       if e.uncertainty is not None)
         first.sort(key=lambda pair: pair[0])
@@ -157,11 +160,11 @@ class _Writer:
                 return
         shown = {}
         for name, array in block.values.items():
-            dim, unit = block.kinds[name].dim, block.kinds[name].unit
+            dim = block.kinds[name].dim
             if name in self.units:
                 self.check_unit(name, dim)
-            target = self.units.get(name, unit) if self.as_json else self.col_units[name]
-            if target != unit and target != dim.si:
+            target = self.units.get(name, dim.si) if self.as_json else self.col_units[name]
+            if target != dim.si:  # the arrays are SI
                 with np.errstate(over="ignore", under="ignore"):
                     array = np.asarray(convert(array, dim, target, label=f"--unit {name}",
                                                name=name), dtype=float)
@@ -206,12 +209,13 @@ class _Writer:
         from ..result import encode
 
         if self.as_json:
-            units = {}
-            for name, unit in self.units.items():
+            for name in self.units:
                 entry = result.results.get(name)
                 if entry is not None:
                     self.check_unit(name, entry.dim)
-                    units[name] = unit
+            # every result named, so that none is shown in the units its inputs were typed in
+            units = {name: self.units.get(name, entry.canonical_unit)
+                     for name, entry in result.results.items()}
             data: dict[str, Any] = {"line": line}
             data.update(encode.json_data(result, units, [], False))
             return json.dumps(data, allow_nan=False)
