@@ -15,6 +15,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc import batch
+from dyncalc.batch import fast as fast_path, rows as row_specs
 from dyncalc.cli import cli
 from dyncalc.commands.natural_frequency import STANDARD
 
@@ -150,6 +151,86 @@ def test_unit_option_refusals_are_the_one_off_messages(tmp_path):
     assert result.exit_code == 2
     assert result.stderr == ("Error: --unit x: there is no result named 'x'; the results are "
                              "omega, f, T\n")
+
+
+# --- result columns in canonical units (SPEC v2, "Batch") ---------------------------------------
+
+SPRINGS_KN = "k1 [kN/m],k2 [kN/m]\n2+/-0.1,3\n0.5,1.5 kN/m\n"
+
+
+@pytest.mark.parametrize("command, k_eq", [("spring-series", ["1200.0", "375.0"]),
+                                           ("spring-parallel", ["5000.0", "2000.0"])])
+def test_springs_typed_in_kn_per_m_give_k_eq_in_n_per_m(tmp_path, command, k_eq):
+    result = run_file(tmp_path, command, SPRINGS_KN)
+    assert result.exit_code == 0, result.stderr
+    rows = csv_rows(result)
+    assert rows[0] == ["k1 [kN/m]", "k2 [kN/m]", "k_eq [N/m]", "u(k_eq) [N/m]"]
+    assert [row[2] for row in rows[1:]] == k_eq
+    assert rows[1][2] == value(command, "(2+/-0.1) kN/m", "3 kN/m", "--unit", "k_eq=N/m",
+                               name="k_eq")
+    assert rows[1][3] == value(command, "(2+/-0.1) kN/m", "3 kN/m", "--unit", "k_eq=N/m",
+                               name="u(k_eq)")
+    # series: dk_eq/dk1 = (k2 / (k1 + k2))^2 = 0.36, times 100 N/m; parallel: 100 N/m
+    assert math.isclose(float(rows[1][3]), 36.0 if command == "spring-series" else 100.0,
+                        rel_tol=1e-9)
+    assert rows[2][3] == ""
+    lines = json_lines(run_file(tmp_path, f"{command} --json", SPRINGS_KN))
+    assert [line["results"]["k_eq"]["unit"] for line in lines] == ["N/m", "N/m"]
+    assert [line["results"]["k_eq"]["value"] for line in lines] == [float(k) for k in k_eq]
+    assert lines[1]["inputs"]["k1"] == {"value": 0.5, "unit": "kN/m"}  # inputs as typed
+
+
+PENDULUM = "l,a0\n1 m,3 m/s^2\n2 ft,-1 ft/s^2\n"
+PENDULUM_ROWS = (("1 m", "3 m/s^2"), ("2 ft", "-1 ft/s^2"))
+
+
+def test_an_angle_result_is_in_rad_and_a_cycle_rate_in_hz(tmp_path):
+    """phi_0, shown in deg by the one-off's table, is a batch column in rad; f in Hz."""
+    scene = ("--scene", "pendulum-accelerating-support")
+    result = run_file(tmp_path, "natural-frequency", PENDULUM, *scene)
+    assert result.exit_code == 0, result.stderr
+    rows = csv_rows(result)
+    assert rows[0][2:] == ["omega [rad/s]", "f [Hz]", "T [s]", "phi_0 [rad]"]
+    assert rows[1][2:] == ["3.2023836894876436", "0.5096751938588198", "1.962033883636488",
+                           "-0.29687440246051633"]
+    for row, (l, a0) in zip(rows[1:], PENDULUM_ROWS):
+        args = ("natural-frequency", *scene, f"l={l}", f"a0={a0}")
+        assert row[3] == value(*args, "--unit", "f=Hz", name="f")
+        assert row[5] == value(*args, "--unit", "phi_0=rad", name="phi_0")
+    # phi_0 = -atan(a0 / g); f = omega / (2 pi)
+    assert math.isclose(float(rows[1][5]), -math.atan(3 / 9.80665), rel_tol=1e-15)
+    assert math.isclose(float(rows[2][5]), math.atan(0.3048 / 9.80665), rel_tol=1e-15)
+    assert math.isclose(float(rows[1][3]), float(rows[1][2]) / (2 * math.pi), rel_tol=1e-15)
+    lines = json_lines(run_file(tmp_path, "natural-frequency --json", PENDULUM, *scene))
+    for line, row in zip(lines, rows[1:]):
+        assert {name: item["unit"] for name, item in line["results"].items()} == {
+            "omega": "rad/s", "f": "Hz", "T": "s", "phi_0": "rad"}
+        assert [item["value"] for item in line["results"].values()] == list(map(float, row[2:]))
+
+
+def test_the_unit_option_still_names_another_unit(tmp_path):
+    scene = ("--scene", "pendulum-accelerating-support")
+    units = ("--unit", "phi_0=deg", "--unit", "f=rpm")
+    result = run_file(tmp_path, "natural-frequency", PENDULUM, *scene, *units)
+    assert result.exit_code == 0, result.stderr
+    rows = csv_rows(result)
+    assert rows[0][2:] == ["omega [rad/s]", "f [rpm]", "T [s]", "phi_0 [deg]"]
+    assert rows[1][5] == "-17.009650306455807"
+    for row, (l, a0) in zip(rows[1:], PENDULUM_ROWS):
+        args = ("natural-frequency", *scene, f"l={l}", f"a0={a0}", *units)
+        assert row[3] == value(*args, name="f")
+        assert row[5] == value(*args, name="phi_0")
+    lines = json_lines(run_file(tmp_path, "natural-frequency --json", PENDULUM, *scene, *units))
+    assert lines[0]["results"]["phi_0"] == {"value": -17.009650306455807, "unit": "deg"}
+    assert lines[0]["results"]["f"] == {"value": float(rows[1][3]), "unit": "rpm"}
+    # on the spring commands too, typed in N/m and asked for kN/m
+    result = run_file(tmp_path, "spring-series", "k1,k2\n200 N/m,300 N/m\n", "--unit",
+                      "k_eq=kN/m")
+    assert result.exit_code == 0, result.stderr
+    assert csv_rows(result) == [["k1", "k2", "k_eq [kN/m]"], ["200 N/m", "300 N/m", "0.12"]]
+    (line,) = json_lines(run_file(tmp_path, "spring-series --json", "k1,k2\n200 N/m,300 N/m\n",
+                                  "--unit", "k_eq=kN/m"))
+    assert line["results"]["k_eq"] == {"value": 0.12, "unit": "kN/m"}
 
 
 # --- bad rows ----------------------------------------------------------------------------------
@@ -387,7 +468,10 @@ COMMANDS = [
     ("damping-ratio", "decrement,omega [rad/s],ratio,cycles,c,k,m",
      ["0.23,12,,,,,", ",,10,10,,,", ",,,,0.7 lbf*s/in,2.4 kN/m,1.5 kg"],
      [["--decrement", "0.23", "--omega", "12 rad/s"], ["--ratio", "10", "--cycles", "10"],
-      ["--c", "0.7 lbf*s/in", "--k", "2.4 kN/m", "--m", "1.5 kg"]]),
+      # batch gives every result in its canonical unit (SPEC.md, "Batch"); the one-off is
+      # asked for it by name, where its --json shows the unit c was typed in
+      ["--c", "0.7 lbf*s/in", "--k", "2.4 kN/m", "--m", "1.5 kg",
+       "--unit", "c_c=N*s/m", "--unit", "c=N*s/m"]]),
     ("rolling-onset", "v0 [m/s],mu,body,radius,omega0",
      ["5,0.3,,,", "2,0.2,,28.5 mm,-300 rad/s", "3,0.25,hoop,,"],
      [["--v0", "5 m/s", "--mu", "0.3"],
@@ -416,15 +500,15 @@ def test_every_command_in_batch_equals_its_one_offs(tmp_path, command, header, r
     assert len(result.stdout.splitlines()) == 1 + len(rows)
 
 
-def test_csv_result_columns_take_the_first_rows_unit(tmp_path):
+def test_csv_result_columns_are_in_the_canonical_unit_not_the_first_rows(tmp_path):
     text = "k1,k2\n2 kN/m,3 kN/m\n200 N/m,300 N/m\n"
     result = run_file(tmp_path, "spring-series", text)
     assert result.exit_code == 0, result.stderr
     rows = csv_rows(result)
-    assert rows[0] == ["k1", "k2", "k_eq [kN/m]"]
-    assert rows[1][2] == value("spring-series", "2 kN/m", "3 kN/m", name="k_eq")
-    assert rows[2][2] == value("spring-series", "200 N/m", "300 N/m", "--unit", "k_eq=kN/m",
+    assert rows[0] == ["k1", "k2", "k_eq [N/m]"]
+    assert rows[1][2] == value("spring-series", "2 kN/m", "3 kN/m", "--unit", "k_eq=N/m",
                                name="k_eq")
+    assert rows[2][2] == value("spring-series", "200 N/m", "300 N/m", name="k_eq")
 
 
 def test_a_result_named_like_an_input_column(tmp_path):
@@ -544,7 +628,7 @@ def test_the_vectorised_path_is_taken():
     spec = batch.NaturalFrequencyRows(STANDARD)
     table = [["100", "2 kN/m", "1e300"], ["2", "4000 g", "1e-300"]]
     columns = [batch.Column(0, "k", "k", "", "k"), batch.Column(1, "m", "m", "", "m")]
-    (block,) = batch._natural_frequency_fast(spec, columns, table, False, {})
+    (block,) = fast_path._natural_frequency_fast(spec, columns, table, False, {})
     assert block.rows.tolist() == [0, 1, 2]
     assert block.values["omega"].tolist() == [
         float(value("natural-frequency", "--k", k, "--m", m, name="omega"))
@@ -556,8 +640,8 @@ def test_generic_path_by_environment(tmp_path, monkeypatch):
     fast = run_file(tmp_path, "natural-frequency", text)
     monkeypatch.setenv(batch.GENERIC_ENV, "1")
     called = []
-    original = batch._natural_frequency_fast
-    monkeypatch.setattr(batch, "_natural_frequency_fast",
+    original = fast_path._natural_frequency_fast
+    monkeypatch.setattr(row_specs, "_natural_frequency_fast",
                         lambda *a: called.append(1) or original(*a))
     slow = run_file(tmp_path, "natural-frequency", text)
     assert slow.stdout == fast.stdout and not called

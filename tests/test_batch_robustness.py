@@ -18,6 +18,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc import batch
+from dyncalc.batch import source
 from dyncalc.cli import cli
 
 HEADER = "k [N/m],m [kg]"
@@ -167,8 +168,8 @@ def test_a_long_line_reads_in_bounded_memory():
             asked.append(size)
             return super().readline(size)
 
-    lines = list(batch._bounded_lines(Stream("a,b\n" + "x" * 1_000_000 + "\nc,d\n")))
-    assert lines == ["a,b\n", batch._TOO_LONG + "\n", "c,d\n"]
+    lines = list(source._bounded_lines(Stream("a,b\n" + "x" * 1_000_000 + "\nc,d\n")))
+    assert lines == ["a,b\n", source._TOO_LONG + "\n", "c,d\n"]
     assert asked and all(0 < size <= batch.MAX_LINE + 1 for size in asked)
 
 

@@ -1,0 +1,163 @@
+"""Reading a whole column of cells at once (the vectorised path): a unit per group of cells."""
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+
+from ..errors import InputError
+from .header import _LITERAL
+
+#: A unit the vectorised path may read once for a whole column: names, ``*``, ``/``, and
+#: numbers only as exponents (so ``X unit`` is ``X`` times the unit, exactly, in floats).
+#: (Only spaces and tabs separate tokens, as in dyncalc's tokenizer, which refuses others.)
+_NAME = (r"[A-Za-z_µμΩΩÅ°%][A-Za-z0-9_µμΩΩÅ°]*"
+         r"(?:[ \t]*(?:\*\*|\^)[ \t]*[+-]?[0-9]+(?:\.[0-9]+)?|[²³])?")
+_SIMPLE_UNIT = rf"{_NAME}(?:[ \t]*[*/·×]?[ \t]*{_NAME})*"
+_SIMPLE_UNIT_RE = re.compile(_SIMPLE_UNIT)
+#: A cell the vectorised path reads: a plain number and perhaps a simple unit. The number is
+#: an atomic group, so it is the literal dyncalc's tokenizer would read, never a shorter one.
+_CELL_RE = re.compile(rf"[ \t]*([+-]?(?>{_LITERAL}))[ \t]*({_SIMPLE_UNIT})?[ \t]*")
+#: Every line of a column joined by line breaks, split in one pass into the number and the
+#: rest (which must then be a simple unit, checked once per distinct unit).
+_CELL_LINE_RE = re.compile(rf"^[ \t]*([+-]?(?>{_LITERAL}))[ \t]*(.*)$", re.M)
+_PLAIN_COLUMN_CHARS_RE = re.compile(r"[0-9.eE+\- \t\n]*")
+#: A number with a leading zero (``007``), which the one-off reader refuses; an exponent's
+#: zero (``1e-05``) is not one.
+_LEADING_ZERO_RE = re.compile(r"0(?<![0-9.eE]0)(?<![eE][+-]0)[0-9]")
+
+
+def _plain_floats(cells) -> np.ndarray | None:
+    """The values of a column whose every cell is a plain number, read at once; ``None``
+    otherwise (a cell with a unit, an empty cell, anything the one-off reader would read
+    differently from ``float``)."""
+    joined = "\n".join(cells)
+    if not joined or not _PLAIN_COLUMN_CHARS_RE.fullmatch(joined) \
+            or _LEADING_ZERO_RE.search(joined):
+        return None
+    try:
+        return np.fromiter(map(float, cells), dtype=float, count=len(cells))
+    except ValueError:
+        return None
+
+
+class _UnitInfo:
+    """What reading ``X unit`` gives for every plain number ``X``, found once by reading
+    ``1 unit`` the one-off way: the pint unit, the SI unit, and how the input entry shows it."""
+
+    __slots__ = ("units", "target", "typed", "unit_json")
+
+
+def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
+    key = ("unit", unit, dim, strict)
+    if key in cache:
+        return cache[key]
+    from ..units import parse_quantity
+
+    info = None
+    if not unit or _SIMPLE_UNIT_RE.fullmatch(unit):
+        try:
+            sample = parse_quantity(f"1 {unit}" if unit else "1", dim, label="batch",
+                                    strict=strict)
+        except InputError:
+            sample = None
+        if sample is not None and dim.kind in ("plain", "dimensionless") \
+                and float(sample.quantity.magnitude) == 1.0:
+            info = _UnitInfo()
+            info.units = sample.quantity.units
+            info.target = dim.si.replace("^", "**") if dim.si else ""
+            info.typed = bool(sample.unit_text)
+            info.unit_json = (json.dumps(sample.unit_text or dim.si)
+                              + (', "assumed_si": true' if sample.assumed_si else ""))
+    cache[key] = info
+    return info
+
+
+class _ColumnValues:
+    """A parameter column read for the vectorised path: which rows it can take (``ok``), their
+    SI values, and for JSON the value each input entry shows and its unit text."""
+
+    __slots__ = ("ok", "si", "shown", "unit_json")
+
+
+def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
+                 plain: np.ndarray | None = None) -> _ColumnValues:
+    """Read the cells of one parameter column (rows known to give it): a unit is read once per
+    group of cells that share it, and pint converts the group's values as one array."""
+    from ..units import registry
+
+    n = len(cells)
+    out = _ColumnValues()
+    out.ok = np.zeros(n, dtype=bool)
+    out.si = np.zeros(n)
+    out.shown = np.zeros(n)
+    out.unit_json = [""] * n
+    if plain is None:
+        plain = _plain_floats(cells)
+    groups: dict[str, tuple[list[int] | None, np.ndarray, list[str]]] = {}
+    if plain is not None:
+        groups[header_unit] = (None, plain, cells)
+    else:
+        joined = "\n".join(cells)
+        pairs = _CELL_LINE_RE.findall(joined) if n else []
+        if len(pairs) == n and joined.count("\n") == n - 1:  # one pass over the column
+            literals, raw_units = zip(*pairs)
+            values = np.fromiter(map(float, literals), dtype=float, count=n)
+            # the unit each cell is in: its own (trailing blanks off), or the header's
+            code_of = {raw: raw.rstrip(" \t") or header_unit for raw in set(raw_units)}
+            distinct = sorted(set(code_of.values()))
+            if len(distinct) == 1:
+                unit = distinct[0]
+                if not unit or _SIMPLE_UNIT_RE.fullmatch(unit):
+                    groups[unit] = (None, values, literals)
+            else:
+                index = {unit: k for k, unit in enumerate(distinct)}
+                codes = np.fromiter(map(index.__getitem__, map(code_of.__getitem__, raw_units)),
+                                    dtype=np.intp, count=n)
+                for k, unit in enumerate(distinct):
+                    if unit and not _SIMPLE_UNIT_RE.fullmatch(unit):
+                        continue  # not a plain unit: those cells go to the generic path
+                    rows = np.flatnonzero(codes == k).tolist()
+                    groups[unit] = (rows, values[rows], [literals[i] for i in rows])
+        else:
+            members: dict[str, list[int]] = {}
+            literals = [""] * n
+            for i, cell in enumerate(cells):
+                m = _CELL_RE.fullmatch(cell)
+                if m is None:
+                    continue
+                literals[i] = m.group(1)
+                members.setdefault((m.group(2) or "").strip() or header_unit, []).append(i)
+            for unit, rows in members.items():
+                lits = [literals[i] for i in rows]
+                groups[unit] = (rows, np.array(list(map(float, lits)), dtype=float), lits)
+    ureg = registry()
+    for unit, (rows, values, literals) in groups.items():
+        info = _unit_info(unit, param.dim, strict, cache)
+        if info is None:
+            continue
+        good = np.isfinite(values)  # a literal beyond float64 is refused by the one-off reader
+        for j in np.flatnonzero(values == 0.0):  # ... and so is one that underflows to zero
+            if re.search(r"[1-9]", re.split(r"[eE]", literals[j])[0]):
+                good[j] = False
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+            converted = np.asarray(ureg.Quantity(values, info.units).to(info.target).magnitude,
+                                   dtype=float)
+        good &= np.isfinite(converted)
+        if param.constraint == "positive":
+            good &= converted > 0
+        elif param.constraint == "nonnegative":
+            good &= converted >= 0
+        elif param.constraint == "nonzero":
+            good &= converted != 0
+        index = slice(None) if rows is None else np.asarray(rows, dtype=np.intp)
+        out.ok[index] = good
+        out.si[index] = converted
+        out.shown[index] = values if info.typed else converted
+        if rows is None:
+            out.unit_json = [info.unit_json] * n
+        else:
+            for i in rows:
+                out.unit_json[i] = info.unit_json
+    return out

@@ -1,0 +1,161 @@
+"""Opening the ``--batch`` source (a file, ``-``, a FIFO) and reading its records in chunks."""
+from __future__ import annotations
+
+import csv
+import io
+import itertools
+import re
+import sys
+
+from ..errors import InputError
+from .csvlines import _csv_lines
+
+
+def open_source(source: str):
+    """The CSV text stream of ``--batch SOURCE`` (``-``: standard input): UTF-8, with or
+    without a byte-order mark, any line ending."""
+    if source == "-":
+        raw = getattr(sys.stdin, "buffer", sys.stdin)
+    else:
+        try:
+            raw = open(source, "rb")  # noqa: SIM115 (closed by run_batch)
+        except OSError as exc:
+            raise InputError(f"--batch: cannot read {source!r}: "
+                             f"{exc.strerror or exc}") from None
+    # bytes that are not UTF-8 are kept as lone surrogates, so that the row holding them is
+    # refused with its line number and the other rows go on
+    return io.TextIOWrapper(raw, encoding="utf-8-sig", newline="", errors="surrogateescape")
+
+
+#: Characters that make a chunk need the csv module: quotes, and line breaks that
+#: ``str.splitlines`` knows but CSV does not.
+_NEEDS_CSV_RE = re.compile('["\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]')
+_NEEDS_CSV_ASCII = ('"', "\x0b", "\x0c", "\x1c", "\x1d", "\x1e")
+#: Bytes that were not UTF-8, kept by the ``surrogateescape`` decoding; and ``_TOO_LONG``, the
+#: line that stands for a line longer than :data:`MAX_LINE` (a lone surrogate that decoding
+#: never produces).
+_NOT_UTF8_RE = re.compile("[\udc00\udc80-\udcff]")
+_TOO_LONG = "\udc00"
+#: Characters a line may hold; a longer one is refused without being held in memory.
+MAX_LINE = 100_000
+
+
+def _bounded_lines(stream, limit: int = MAX_LINE):
+    """The lines of ``stream``, each read ``limit + 1`` characters at most: a longer line is
+    skipped to its end and yields ``_TOO_LONG`` in its place (so the line numbers hold)."""
+    while line := stream.readline(limit + 1):
+        if len(line) <= limit or line.endswith(("\n", "\r")):
+            yield line
+            continue
+        while (rest := stream.readline(limit)) and not rest.endswith(("\n", "\r")):
+            pass
+        yield _TOO_LONG + "\n"
+
+
+class _Chunk:
+    """Consecutive records of the CSV: the line each starts on (``numbers``), and either the
+    text lines of a chunk without quotes (``lines``: each is one record, split at commas) or
+    the records the csv module read (``rows``)."""
+
+    __slots__ = ("numbers", "lines", "rows", "not_utf8")
+
+    def __init__(self, numbers, *, lines=None, rows=None, suspect: bool = False):
+        self.numbers, self.lines, self.rows = numbers, lines, rows
+        #: rows refused before reading their cells: index -> why
+        self.not_utf8: dict[int, str] = {}
+        if suspect:
+            records = lines if lines is not None else map(",".join, rows)
+            self.not_utf8 = {
+                i: (f"the line is longer than {MAX_LINE} characters" if _TOO_LONG in text
+                    else "the line is not UTF-8 text")
+                for i, text in enumerate(records) if _NOT_UTF8_RE.search(text)}
+
+    def __len__(self) -> int:
+        return len(self.numbers)
+
+    def row(self, i: int) -> list[str]:
+        return self.lines[i].split(",") if self.rows is None else self.rows[i]
+
+    def widths(self) -> list[int]:
+        """The number of cells of each row (in a chunk without quotes, one more than its
+        commas)."""
+        if self.rows is not None:
+            return list(map(len, self.rows))
+        return list(map(str.count, self.lines, itertools.repeat(",")))
+
+    def table(self, width: int, keep: list[int] | None):
+        """The cells column by column, of all rows (``keep`` None) or of the rows ``keep``;
+        they all have ``width`` cells."""
+        if self.rows is not None:
+            return list(zip(*(self.rows if keep is None else [self.rows[i] for i in keep])))
+        lines = self.lines if keep is None else [self.lines[i] for i in keep]
+        flat = ",".join(lines).split(",")
+        return [flat[j::width] for j in range(width)]
+
+    def echo(self, keep: list[int] | None) -> list[str]:
+        """The rows (all, or ``keep``) as CSV lines, as ``csv.writer`` writes them."""
+        if self.rows is None:  # no quotes, no line breaks in a cell: the line is its CSV
+            return self.lines if keep is None else [self.lines[i] for i in keep]
+        return _csv_lines(self.rows if keep is None else [self.rows[i] for i in keep])
+
+
+class _Reader:
+    """The CSV's records a chunk at a time, with the line each starts on (the header is line
+    1). A chunk without quotes is split at commas directly (what the csv module does, faster);
+    one with quotes goes through the csv module, which reads on past the chunk's lines to
+    finish a quoted cell that holds line breaks. A record the csv module cannot read, or an
+    I/O error (a failing disk, a broken pipe), ends the reading, with ``fatal`` set to its
+    message; the records read before it are still handed out. Lines longer than
+    :data:`MAX_LINE` are refused one by one (:func:`_bounded_lines`)."""
+
+    def __init__(self, stream):
+        self.stream = _bounded_lines(stream)
+        self.last = 0      # lines read so far
+        self.fatal: str | None = None
+        self.done = False
+
+    def chunk(self, size: int) -> _Chunk | None:
+        if self.done:
+            return None
+        raw: list[str] = []
+        try:
+            raw.extend(itertools.islice(self.stream, size))  # keeps the lines read before
+        except OSError as exc:  # a disk or pipe error: the lines before it are computed
+            self._failed(self.last + len(raw) + 1, exc)
+        if len(raw) < size:
+            self.done = True
+        if not raw:
+            return None
+        text = "".join(raw)
+        ascii_only = text.isascii()
+        suspect = not ascii_only and _NOT_UTF8_RE.search(text) is not None
+        start = self.last + 1
+        if not (any(c in text for c in _NEEDS_CSV_ASCII) if ascii_only
+                else _NEEDS_CSV_RE.search(text)):
+            lines = text.splitlines()
+            self.last += len(lines)
+            return _Chunk(list(range(start, start + len(lines))), lines=lines, suspect=suspect)
+        # strict: a quote left open at the end, or text after a closing quote, is refused
+        reader = csv.reader(itertools.chain(raw, self.stream), strict=True)
+        rows, numbers = [], []
+        try:
+            while reader.line_num < len(raw):
+                row = next(reader, None)
+                if row is None:
+                    break
+                rows.append(row)
+                numbers.append(start)
+                start = self.last + reader.line_num + 1
+        except csv.Error as exc:
+            self.fatal = f"line {self.last + reader.line_num}: cannot read the CSV: {exc}"
+            self.done = True
+        except OSError as exc:
+            self._failed(self.last + reader.line_num + 1, exc)
+        if reader.line_num > len(raw) and not self.fatal:
+            self.done = False  # a quoted cell ran on past the chunk's lines: more may follow
+        self.last += reader.line_num
+        return _Chunk(numbers, rows=rows, suspect=suspect) if rows else None
+
+    def _failed(self, line: int, exc: OSError) -> None:
+        self.fatal = f"line {line}: reading the file failed: {exc.strerror or exc}"
+        self.done = True

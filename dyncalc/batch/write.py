@@ -1,0 +1,243 @@
+"""Writing each chunk's outcomes in order: CSV rows (the result columns) or JSON lines."""
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError, one_line
+from .csvlines import _csv_lines
+from .header import _HEADER_RE
+
+#: The outcome of a row the vectorised path computed, and of a blank row.
+_FAST = ("fast", None)
+_BLANK = ("blank", None)
+
+
+def _reprs(values: list[float]) -> list[str]:
+    """``list(map(repr, values))``, a third faster: the list's repr writes every float's repr
+    in C (no float repr holds ``", "``)."""
+    return str(values)[1:-1].split(", ") if values else []
+
+
+class _Failure(Exception):
+    """A row that cannot be written (its message, without the line number)."""
+
+
+class _Writer:
+    """Turns each chunk's outcomes into text, in order: CSV (the input columns, then a column
+    per result) or JSON lines. The result columns are fixed by the first chunk's rows (a chunk
+    is ``chunk_rows`` rows). Results are given in their canonical unit (SPEC.md, "Batch":
+    ``omega [rad/s]`` whatever units the inputs were typed in), unless ``--unit`` (``units``)
+    names another."""
+
+    def __init__(self, header: list[str], as_json: bool, units: dict[str, str], on_error: str,
+                 out, err, chunk_rows: int):
+        self.header, self.as_json, self.units, self.on_error = header, as_json, units, on_error
+        self.out, self.err, self.chunk_rows = out, err, chunk_rows
+        self.columns: list[str] | None = None  # result names, in order of first appearance
+        self.col_units: dict[str, str] = {}
+        self.checked_units: set[str] = set()
+        self.uncertain: set[str] = set()  # results given a u(NAME) column after their own
+
+    # -- the result columns, from the first chunk's rows
+    def fix_columns(self, outcomes, blocks, upto: int) -> None:
+        names: dict[str, Any] = {}
+        first: list[tuple[int, list]] = []
+        for block in blocks:  # (a fast result always has a dimension: its SI unit is canonical)
+            position = int(block.rows[0])
+            if position < upto:
+                first.append((position, [(name, block.kinds[name].dim.si, block.kinds[name].dim)
+                                         for name in block.values]))
+        for i in range(upto):
+            kind, item = outcomes[i]
+            if kind == "ok":
+                first.append((i, [(name, e.canonical_unit, e.dim)
+                                  for name, e in item.results.items()]))
+                self.uncertain.update(name for name, e in item.results.items()
+                                      if e.uncertainty is not None)
+        first.sort(key=lambda pair: pair[0])
+        for _position, pairs in first:
+            for name, unit, dim in pairs:
+                if name not in names:
+                    names[name] = dim
+                    self.col_units[name] = self.units.get(name, unit)
+        if not names:
+            return
+        for name in self.units:
+            if name not in names:
+                raise InputError(f"--unit {name}: there is no result named {name!r}; the "
+                                 f"results are {', '.join(names)}")
+        for name, dim in names.items():
+            self.check_unit(name, dim)
+        self.columns = list(names)
+        if not self.as_json:
+            header = list(self.header)
+            inputs = {_HEADER_RE.match(h).group(1) for h in self.header}
+            for name in self.columns:
+                unit = self.col_units[name]
+                shown = f"{name}_result" if name in inputs else name  # k1 in, k1 out
+                header.append(f"{shown} [{unit}]" if unit else shown)
+                if name in self.uncertain:
+                    header.append(f"u({shown}) [{unit}]" if unit else f"u({shown})")
+            self.out.write(_csv_lines([header])[0] + "\n")
+
+    def check_unit(self, name: str, dim) -> None:
+        """``--unit NAME=UNIT`` refused, as the one-off refuses it, when the unit cannot show
+        the result (the whole run stops: the option is wrong, not a row)."""
+        if name in self.units and name not in self.checked_units and dim is not None:
+            from ..units import convert
+
+            convert(1.0, dim, self.units[name], label=f"--unit {name}", name=name)
+            self.checked_units.add(name)
+
+    # -- one chunk
+    def write(self, chunk, outcomes, blocks, upto: int) -> tuple[bool, bool]:
+        """Write the first ``upto`` rows of a chunk in order; (a row failed, stopped)."""
+        if self.columns is None:
+            self.fix_columns(outcomes, blocks, upto)
+        n = len(chunk.numbers)
+        lines = chunk.numbers
+        texts: list = [None] * n
+        for block in blocks:
+            self._fast_texts(block, chunk, texts)
+        messages: list[tuple[int, str]] = []
+        failed = stopped = False
+        slow = range(upto)
+        if not any(isinstance(texts[int(b.rows[0])], _Failure) for b in blocks if len(b.rows)):
+            fast_count = sum(len(b.rows) for b in blocks)
+            if fast_count == upto == n:
+                slow = ()  # every row computed by the vectorised path: nothing to check
+            elif fast_count:
+                slow = [i for i in range(upto) if outcomes[i] is not _FAST]
+        for i in slow:
+            kind, item = outcomes[i]
+            try:
+                if kind == "fast":
+                    if isinstance(texts[i], _Failure):
+                        raise texts[i]
+                elif kind == "ok":
+                    texts[i] = self._result_text(lines[i], chunk.row(i), item)
+                    if not self.as_json and item.warnings:
+                        messages += [(i, f"warning: line {lines[i]}: {w}")
+                                     for w in item.warnings]
+                elif kind == "error":
+                    raise _Failure(item)
+            except _Failure as exc:
+                texts[i] = None
+                messages.append((i, f"Error: line {lines[i]}: {exc}"))
+                failed = True
+                if self.on_error == "stop":
+                    stopped = True
+                    upto = i
+                    break
+        shown = texts[:upto] if upto < n else texts
+        if None in shown:
+            shown = [t for t in shown if t is not None and not isinstance(t, _Failure)]
+        if shown:
+            self.out.write("\n".join(shown) + "\n")
+        if messages:
+            self.out.flush()
+            self.err.write("\n".join(one_line(m) for _i, m in sorted(messages,
+                                                                      key=lambda p: p[0]))
+                           + "\n")
+            self.err.flush()
+        return failed, stopped
+
+    def _fast_texts(self, block, chunk, texts) -> None:
+        """Fill ``texts`` at the block's rows: CSV lines or JSON lines."""
+        from ..units import convert
+
+        rows = block.rows.tolist()
+        if not self.as_json:
+            missing = [name for name in block.values if name not in self.col_units]
+            if missing:
+                failure = _Failure(self._not_a_column(missing[0]))
+                for i in rows:
+                    texts[i] = failure
+                return
+        shown = {}
+        for name, array in block.values.items():
+            dim = block.kinds[name].dim
+            if name in self.units:
+                self.check_unit(name, dim)
+            target = self.units.get(name, dim.si) if self.as_json else self.col_units[name]
+            if target != dim.si:  # the arrays are SI
+                with np.errstate(over="ignore", under="ignore"):
+                    array = np.asarray(convert(array, dim, target, label=f"--unit {name}",
+                                               name=name), dtype=float)
+            numbers = _reprs(array.tolist())
+            if self.as_json and not np.isfinite(array).all():  # JSON has no infinity
+                numbers = [t if math.isfinite(v) else "null"
+                           for t, v in zip(numbers, array.tolist())]
+            shown[name] = (numbers, target)
+        whole = len(rows) == len(texts)
+        line_numbers = chunk.numbers if whole else [chunk.numbers[i] for i in rows]
+        if self.as_json:
+            parts = []
+            for name, (numbers, unit) in shown.items():
+                entry = (json.dumps(name).replace("%", "%%") + ': {"value": %s, "unit": '
+                         + json.dumps(unit).replace("%", "%%") + "}")
+                parts.append(list(map(entry.__mod__, numbers)))
+            template = '{"line": %d, ' + block.head.replace("%", "%%") + \
+                ', "inputs": {%s}, "results": {%s}, "warnings": []}'
+            made = list(map(template.__mod__, zip(line_numbers, block.inputs,
+                                                  map(", ".join, zip(*parts)))))
+        else:
+            empty = [""] * len(rows)
+            cells = []
+            for name in self.columns:
+                cells.append(shown[name][0] if name in shown else empty)
+                if name in self.uncertain:  # no uncertainty on this path: an empty u(NAME)
+                    cells.append(empty)
+            echo = chunk.echo(None if whole else rows)
+            made = list(map(",".join, zip(echo, *cells)))
+        if whole:
+            texts[:] = made
+        else:
+            for i, text in zip(rows, made):
+                texts[i] = text
+
+    def _not_a_column(self, name: str) -> str:
+        return (f"its result {name} is not a column of the output (the columns come from the "
+                f"first {self.chunk_rows} rows); use --json, whose lines carry every result, or "
+                f"put such a row first")
+
+    def _result_text(self, line, cells, result) -> str:
+        from ..result import encode
+
+        if self.as_json:
+            for name in self.units:
+                entry = result.results.get(name)
+                if entry is not None:
+                    self.check_unit(name, entry.dim)
+            # every result named, so that none is shown in the units its inputs were typed in
+            units = {name: self.units.get(name, entry.canonical_unit)
+                     for name, entry in result.results.items()}
+            data: dict[str, Any] = {"line": line}
+            data.update(encode.json_data(result, units, [], False))
+            return json.dumps(data, allow_nan=False)
+        for name in result.results:
+            if name not in self.col_units:
+                raise _Failure(self._not_a_column(name))
+        row = list(cells)
+        for name in self.columns:
+            entry = result.results.get(name)
+            if entry is None:
+                row.append("")
+                if name in self.uncertain:
+                    row.append("")
+                continue
+            try:
+                row.append(encode.batch_cell(entry, self.col_units[name]))
+                if name in self.uncertain:
+                    sigma = entry.uncertainty_in(self.col_units[name])
+                    row.append("" if sigma is None else encode.full_number(sigma))
+            except InputError:
+                raise _Failure(f"its {name} cannot be shown in the column's unit "
+                               f"{self.col_units[name]} (it is a "
+                               f"{entry.dim.name if entry.dim else 'word'}); give such rows a "
+                               "file of their own") from None
+        return _csv_lines([row])[0]
