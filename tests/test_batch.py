@@ -664,3 +664,18 @@ def test_sqrt_ratio_array_random():
     b = [rng.uniform(1, 2) * 2.0 ** rng.randint(-1074, 1023) for _ in range(2000)]
     got = sqrt_ratio_array(a, b).tolist()
     assert got == [sqrt_ratio(x, y) for x, y in zip(a, b)]
+
+
+def test_row_columns_come_from_the_command_records():
+    """The batch adapters of rolling-onset, coriolis and damping-ratio are generated from the
+    commands' records: their columns are the records' physics inputs, in order (settings such
+    as --method and outputs such as --plot are no columns)."""
+    from dyncalc.commands import coriolis, damping_ratio, rolling_onset
+
+    for record, spec in ((rolling_onset.COMMAND, batch.RollingRows()),
+                         (coriolis.COMMAND, batch.CoriolisRows()),
+                         (damping_ratio.COMMAND, batch.DampingRows())):
+        names = [p.name for p in record.parameters if p.kind in ("quantity", "text", "choice")]
+        assert spec.known() == f"{record.name} reads {', '.join(names)}"
+        assert all(spec.key(name) == name for name in names)
+        assert spec.key("method") is None and spec.key("plot") is None

@@ -109,85 +109,59 @@ class SpringRows(RowSpec):
         return network_stiffness(self.how, words, strict=self.strict)
 
 
-class DampingRows(RowSpec):
-    """``damping-ratio``: columns ``c``, ``k``, ``m``, ``decrement``, ``ratio``, ``cycles``,
-    ``amplitudes``, ``omega``, ``g``; with ``--scene``, also that scene's parameters."""
+class RecordRows(RowSpec):
+    """A command's rows, generated from its Command record
+    (:class:`dyncalc.commands.record.Command`): a column may be named for any of the record's
+    physics inputs (``v0``, ``mu``, ...; settings such as ``--method`` apply to every row and
+    are no columns) or, with a scene, for one of that scene's parameters (passed on as the
+    ``NAME=QUANTITY`` words of the one-off); each row runs ``record.compute``."""
 
-    command = "damping-ratio"
-    example_header = "decrement,omega [rad/s]"
-    OPTIONS = ("c", "k", "m", "decrement", "ratio", "cycles", "amplitudes", "omega", "g")
-
-    def __init__(self, *, scene: str | None = None, method: str | None = None,
-                 rtol: float | None = None, strict: bool = False):
-        self.scene, self.method, self.rtol, self.strict = scene, method, rtol, strict
-        self.scene_params: list[str] = []
-        if scene is not None:
-            from ..scenes import get_scene
-
-            self.scene_params = [p.name for p in get_scene(scene).params
-                                 if p.name not in self.OPTIONS]
+    def __init__(self, record, settings: dict | None = None, *, scene_words: tuple = (),
+                 rtol: float | None = None, strict: bool = False, example: str = ""):
+        self.record, self.settings = record, dict(settings or {})
+        self.command = record.name
+        self.columns = [p.name for p in record.inputs]
+        self.scene_words = [name for name in scene_words if name not in self.columns]
+        self.rtol, self.strict = rtol, strict
+        self.example_header = example or self.example_header
 
     def key(self, name):
-        return name if name in self.OPTIONS or name in self.scene_params else None
+        return name if name in self.columns or name in self.scene_words else None
 
     def known(self):
-        names = [*self.OPTIONS, *self.scene_params]
-        return f"damping-ratio reads {', '.join(names)}"
+        return f"{self.command} reads {', '.join([*self.columns, *self.scene_words])}"
 
     def compute(self, texts, labels):
-        from ..commands.damping_ratio import damping_ratio
-
-        options = {name: texts.get(name) for name in self.OPTIONS}
-        params = tuple(f"{k}={v}" for k, v in texts.items() if k not in self.OPTIONS)
-        return damping_ratio(**options, scene=self.scene, params=params, method=self.method,
-                             rtol=self.rtol, strict=self.strict)
+        values = {name: texts.get(name) for name in self.columns}
+        values.update(self.settings)
+        words = tuple(f"{k}={v}" for k, v in texts.items() if k not in self.columns)
+        return self.record.compute(values, words, rtol=self.rtol, strict=self.strict)
 
 
-class RollingRows(RowSpec):
-    """``rolling-onset``: columns ``v0``, ``mu``, ``body``, ``kappa``, ``radius``, ``omega0``,
-    ``g``, ``incline``."""
+def DampingRows(*, scene: str | None = None, method: str | None = None,
+                rtol: float | None = None, strict: bool = False) -> RecordRows:
+    """``damping-ratio``: its record's columns (``c``, ``k``, ``m``, ``decrement``, ...);
+    with ``--scene``, also that scene's parameters."""
+    from ..commands.damping_ratio import COMMAND
+    from ..scenes import get_scene
 
-    command = "rolling-onset"
-    example_header = "v0 [m/s],mu"
-    OPTIONS = ("v0", "mu", "body", "kappa", "radius", "omega0", "g", "incline")
-
-    def __init__(self, *, method: str | None = None, rtol: float | None = None,
-                 strict: bool = False):
-        self.method, self.rtol, self.strict = method, rtol, strict
-
-    def key(self, name):
-        return name if name in self.OPTIONS else None
-
-    def known(self):
-        return f"rolling-onset reads {', '.join(self.OPTIONS)}"
-
-    def compute(self, texts, labels):
-        from ..commands.rolling_onset import rolling_onset_result
-
-        return rolling_onset_result(dict(texts), method=self.method, rtol=self.rtol,
-                                    strict=self.strict)
+    words = tuple(p.name for p in get_scene(scene).params) if scene is not None else ()
+    return RecordRows(COMMAND, {"scene": scene, "method": method}, scene_words=words,
+                      rtol=rtol, strict=strict, example="decrement,omega [rad/s]")
 
 
-class CoriolisRows(RowSpec):
-    """``coriolis``: columns named for its options (``omega``, ``vr``, ``r``, ``alpha``,
-    ``a0``, ``ar``, ``mass``, ``latitude``, ``speed``, ``heading``, ``vertical``)."""
+def RollingRows(*, method: str | None = None, rtol: float | None = None,
+                strict: bool = False) -> RecordRows:
+    """``rolling-onset``: its record's columns (``v0``, ``mu``, ``body``, ...)."""
+    from ..commands.rolling_onset import COMMAND
 
-    command = "coriolis"
-    example_header = "omega [rad/s],vr [m/s]"
+    return RecordRows(COMMAND, {"method": method}, rtol=rtol, strict=strict,
+                      example="v0 [m/s],mu")
 
-    def __init__(self, *, strict: bool = False):
-        from ..commands.coriolis import OPTIONS
 
-        self.options = tuple(OPTIONS)
-        self.strict = strict
+def CoriolisRows(*, strict: bool = False) -> RecordRows:
+    """``coriolis``: its record's columns (``omega``, ``vr``, ``r``, ...)."""
+    from ..commands.coriolis import COMMAND
 
-    def key(self, name):
-        return name if name in self.options else None
+    return RecordRows(COMMAND, strict=strict, example="omega [rad/s],vr [m/s]")
 
-    def known(self):
-        return f"coriolis reads {', '.join(self.options)}"
-
-    def compute(self, texts, labels):
-        from ..commands.coriolis import coriolis_result
-
-        return coriolis_result(dict(texts), strict=self.strict)
