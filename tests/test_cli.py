@@ -386,7 +386,7 @@ def test_scenes_reads_the_registry(monkeypatch):
         name="test-oscillator", summary="a block on a spring", figure="a block on a spring",
         params=(registry.Param("k", STIFFNESS, "spring stiffness"),
                 registry.Param("m", MASS, "block mass", default="1 kg")),
-        compute="math:sqrt", equation="m x'' + k x = 0", formula="omega^2 = k/m",
+        compute=math.sqrt, equation="m x'' + k x = 0", formula="omega^2 = k/m",
         reference="E5.11", example="dyncalc natural-frequency --k 100N/m --m 2kg")
     monkeypatch.setitem(registry._SCENES, scene.name, scene)
     listing = run("scenes").stdout.splitlines()
@@ -398,7 +398,7 @@ def test_scenes_reads_the_registry(monkeypatch):
                                    "choices": None, "default": None, "required": True,
                                    "description": "spring stiffness"}
     assert "equation of motion: m x'' + k x = 0" in run("scenes", "test-oscillator").stdout
-    assert scene.function() is math.sqrt
+    assert scene.compute is math.sqrt
 
 
 # --- the README and CI stay in step ----------------------------------------------------------

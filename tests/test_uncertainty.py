@@ -522,8 +522,6 @@ def test_propagation_reads_every_text_once(monkeypatch):
     from dyncalc.scenes import get_scene
 
     scene = get_scene("mass-spring")
-    physics = scene.function()
-    monkeypatch.setattr(type(scene), "function",
-                        lambda self: (lambda **kw: scene_calls.append(1) or physics(**kw)))
-    propagate(lambda: run_scene("mass-spring", {"k": "100+/-5 N/m", "m": "2+/-0.1 kg"}))
+    counted = scene.replace(compute=lambda **kw: scene_calls.append(1) or scene.compute(**kw))
+    propagate(lambda: run_scene(counted, {"k": "100+/-5 N/m", "m": "2+/-0.1 kg"}))
     assert len(scene_calls) == 1 + 2 * 2

@@ -65,7 +65,7 @@ def damping_scene_names() -> list[str]:
     from ..scenes import catalog
 
     return [name for name, scene in catalog().items()
-            if scene.compute.startswith("dyncalc.physics.damping:")]
+            if scene.compute.__module__ == "dyncalc.physics.damping"]
 
 
 # --- reading the inputs ----------------------------------------------------------------------

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from decimal import Decimal, localcontext
 
-import numpy as np
+from ..lazy import numpy as np
 
 from ..errors import PhysicsError
 from .oscillators import _si

@@ -31,9 +31,10 @@ References
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass, field
 
-import numpy as np
+from ..lazy import numpy as np
 
 from ..errors import PhysicsError
 
@@ -55,7 +56,7 @@ _T_999 = (636.6192, 31.5991, 12.9240, 8.6103, 6.8688, 5.9588, 5.4079, 5.0413, 4.
           4.4370, 4.3178, 4.2208, 4.1405, 4.0728, 4.0150, 3.9651, 3.9216, 3.8834, 3.8495,
           3.8193, 3.7921, 3.7676, 3.7454, 3.7251, 3.7066, 3.6896, 3.6739, 3.6594, 3.6460)
 
-_TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
+_TINY, _HUGE = sys.float_info.min, sys.float_info.max
 
 #: The normal 0.9995 quantile.
 _Z_999 = 3.2905267314919255

@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-import numpy as np
+from ..lazy import numpy as np
 
 from ..constants import EARTH_RATE
 from ..errors import InputError, PhysicsError

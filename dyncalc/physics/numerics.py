@@ -9,7 +9,7 @@ import math
 import struct
 from typing import NamedTuple
 
-import numpy as np
+from ..lazy import numpy as np
 
 __all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm",
            "half_complement_sin", "pendulum_period_factor", "sqrt_ratio", "sqrt_ratio_array",

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-import numpy as np
+from ..lazy import numpy as np
 
 from ..units import Q_
 from ..records import Record

@@ -70,7 +70,8 @@ class Constraint(Frozen):
 class Scene(Frozen):
     """One set-up: what it is, what it needs, what it computes and where it comes from.
 
-    ``compute`` is the physics function as ``"module:name"``; ``equation`` the equation of
+    ``compute`` is the physics function itself (its module loads numpy, pint and scipy only
+    when it computes, through :mod:`dyncalc.lazy` and imports inside functions); ``equation`` the equation of
     motion, ``formula`` the closed form (or how it is solved), ``reference`` the textbook
     example (``"E5.12"``), ``example`` a runnable command line and ``example_result`` the value
     text it gives per result; ``one_of`` holds groups of which exactly one must be given,
@@ -87,7 +88,7 @@ class Scene(Frozen):
                  "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes")
 
     def __init__(self, name: str, summary: str, figure: str, params: tuple[Param, ...],
-                 compute: str, equation: str, formula: str, reference: str, example: str,
+                 compute: Any, equation: str, formula: str, reference: str, example: str,
                  example_result: dict | None = None, constraints: tuple[Constraint, ...] = (),
                  one_of: tuple[tuple[str, ...], ...] = (), methods: tuple[str, ...] = (),
                  accepts_zeta: bool = True,
@@ -109,9 +110,6 @@ class Scene(Frozen):
     def signature(self) -> str:
         return ", ".join(p.signature() for p in self.params)
 
-    def function(self):
-        module, _, name = self.compute.partition(":")
-        return getattr(importlib.import_module(module), name)
 
 
 def _set_all(record, *values) -> None:

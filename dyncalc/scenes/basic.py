@@ -2,8 +2,10 @@
 from __future__ import annotations
 
 from ..constants import STANDARD_GRAVITY_TEXT
+from ..physics.oscillators import mass_spring, pendulum, physical_pendulum, torsional
 from ..result.explain import Formula
-from ..units import ACCELERATION, ANGLE, INERTIA, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
+from ..units import (ACCELERATION, ANGLE, INERTIA, LENGTH, MASS, STIFFNESS,
+                     TORSIONAL_STIFFNESS)
 from . import Param, Scene, register
 
 G_DEFAULT = STANDARD_GRAVITY_TEXT
@@ -31,7 +33,7 @@ register(Scene(
     figure="a block of mass m hangs on (or slides on a frictionless floor against) a spring "
            "of stiffness k",
     params=(Param("k", STIFFNESS, "spring stiffness"), Param("m", MASS, "mass")),
-    compute="dyncalc.physics.oscillators:mass_spring",
+    compute=mass_spring,
     equation="m x'' + k x = 0",
     formula="omega^2 = k / m",
     latex=(r"$omega = \sqrt{\frac{$k}{$m}}",),
@@ -48,7 +50,7 @@ register(Scene(
     figure="a disk of moment of inertia J on a shaft of torsional stiffness kt",
     params=(Param("kt", TORSIONAL_STIFFNESS, "torsional stiffness"),
             Param("J", INERTIA, "moment of inertia about the shaft")),
-    compute="dyncalc.physics.oscillators:torsional",
+    compute=torsional,
     equation="J phi'' + kt phi = 0",
     formula="omega^2 = kt / J",
     latex=(r"$omega = \sqrt{\frac{$kt}{$J}}",),
@@ -64,7 +66,7 @@ register(Scene(
     summary="a simple pendulum, exact at any amplitude below 180 degrees",
     figure="a point mass on a massless rod of length l swinging in a vertical plane",
     params=(Param("l", LENGTH, "length"), gravity(), amplitude()),
-    compute="dyncalc.physics.oscillators:pendulum",
+    compute=pendulum,
     equation="theta'' + (g/l) sin(theta) = 0",
     formula="omega_0^2 = g / l; at amplitude theta0: T = 2 pi / (omega_0 AGM(1, cos(theta0/2)))",
     latex=(Formula(r"$omega = \sqrt{\frac{$g}{$l}}", lambda v: "omega_0" not in v),
@@ -90,7 +92,7 @@ register(Scene(
             Param("J_A", INERTIA, "moment of inertia about the pivot", optional=True),
             gravity(), amplitude()),
     one_of=(("J", "J_A"),),
-    compute="dyncalc.physics.oscillators:physical_pendulum",
+    compute=physical_pendulum,
     equation="J_A phi'' + m g a sin(phi) = 0",
     formula="omega_0^2 = m g a / J_A, J_A = J + m a^2; large amplitude as for pendulum",
     latex=(r"$J_A = $J + $m\,$a^2",

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+from ..physics.damping import frame_brace_damper, pendulum_spring_dashpot, rod_in_fluid
 from ..units import ACCELERATION, DAMPING, LENGTH, MASS, STIFFNESS
 from ..result.explain import Formula
 from . import Param, Scene, register
@@ -38,7 +39,7 @@ register(Scene(
             Param("d", DAMPING, "dashpot coefficient at a (may be 0)",
                   constraint="nonnegative"),
             gravity()),
-    compute="dyncalc.physics.damping:pendulum_spring_dashpot",
+    compute=pendulum_spring_dashpot,
     equation="4 m a^2 phi'' + d a^2 phi' + (4 k a^2 + 2 m g a) phi = 0",
     formula="omega^2 = k/m + g/(2a), xi = d/(8m), zeta = xi/omega, "
             "omega_d = omega sqrt(1 - zeta^2); underdamped iff d < 8 sqrt(k m + g m^2/(2a))",
@@ -66,7 +67,7 @@ register(Scene(
             Param("beta", LINEAR_DRAG, "drag force per unit length per unit velocity (may be 0)",
                   constraint="nonnegative"),
             gravity()),
-    compute="dyncalc.physics.damping:rod_in_fluid",
+    compute=rod_in_fluid,
     equation="(m l^2/3) phi'' + (beta l^3/3) phi' + (m g l/2) phi = 0",
     formula="omega^2 = 3g/(2l), xi = beta l/(2m), zeta = xi/omega = beta/beta_crit, "
             "critical beta_crit = (m/l) sqrt(6 g/l)",
@@ -97,7 +98,7 @@ register(Scene(
             Param("d", DAMPING, "coefficient of the brace dashpot (may be 0)",
                   constraint="nonnegative"),
             Param("b0", ACCELERATION, "amplitude of the ground acceleration")),
-    compute="dyncalc.physics.damping:frame_brace_damper",
+    compute=frame_brace_damper,
     equation="m y'' + (d/2) y' + (k/2) y = -m b0 cos(Omega t) (y relative to the ground)",
     formula="omega^2 = k/(2m), zeta = (d/2) sqrt(1/(2 k m)), y0 = 2 m b0/k, "
             "y_max = y0/(2 zeta sqrt(1 - zeta^2)) for zeta < 1/sqrt(2), else y0 "

@@ -6,6 +6,9 @@ The physics is in :mod:`dyncalc.physics.rigid`; the references are to Gross et a
 from __future__ import annotations
 
 from ..physics.bodies import KAPPA
+from ..physics.rigid import (angled_member, board_on_drums, clock_pendulum,
+                             disk_torsion_offset_mass, drum_block_spring, pulley_block_spring,
+                             rolling_disk_spring, rolling_in_track, wheel_on_moving_beam)
 from ..units import DIMENSIONLESS, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from . import Constraint, Param, Scene, register
 from .basic import gravity, small_swings
@@ -13,7 +16,6 @@ from .basic import gravity, small_swings
 #: Shape factors ``kappa = J_C / (m r^2)`` of the bodies a ``body=`` parameter names.
 BODIES = KAPPA
 
-PHYSICS = "dyncalc.physics.rigid"
 
 
 def body(default: str = "solid-cylinder") -> Param:
@@ -39,7 +41,7 @@ register(Scene(
     params=(Param("k", STIFFNESS, "spring stiffness (attached at the centre)"),
             Param("m", MASS, "mass of the body"), body(), kappa()),
     one_of=(("body", "kappa"),),
-    compute=f"{PHYSICS}:rolling_disk_spring",
+    compute=rolling_disk_spring,
     equation="(1 + kappa) m x'' + k x = 0 (x the centre's displacement; rolling: x' = r phi')",
     formula="omega^2 = k / ((1 + kappa) m); a disk (kappa = 1/2) gives 2k/(3m)",
     latex=(r"$omega = \sqrt{\frac{$k}{(1 + $kappa)\,$m}}",),
@@ -62,7 +64,7 @@ register(Scene(
     constraints=(Constraint("R > r", lambda si: si["R"] > si["r"],
                             ": the body rolls inside the track, so its radius r must be "
                             "smaller than the track's radius R"),),
-    compute=f"{PHYSICS}:rolling_in_track",
+    compute=rolling_in_track,
     equation="(1 + kappa) (R - r) phi'' + g sin(phi) = 0 (phi the angle of the body's centre "
              "from the lowest point)",
     formula="omega^2 = g / ((1 + kappa) (R - r))",
@@ -83,7 +85,7 @@ register(Scene(
            "rope does not slip, so the drum turns at x'/R",
     params=(Param("k", STIFFNESS, "spring stiffness"), Param("m", MASS, "mass of the block"),
             Param("M", MASS, "mass of the drum (homogeneous disk)")),
-    compute=f"{PHYSICS}:drum_block_spring",
+    compute=drum_block_spring,
     equation="(m + M/2) x'' + k x = 0 (x the block's displacement from equilibrium)",
     formula="omega^2 = 2k / (M + 2m); the drum radius cancels",
     latex=(r"$omega = \sqrt{\frac{2\,$k}{$M + 2\,$m}}",),
@@ -106,7 +108,7 @@ register(Scene(
             Param("sense", None, "turning sense of the drums: inward (tops moving toward "
                   "each other) or outward (tops moving apart)", default="inward",
                   constraint=None, choices={"inward": "inward", "outward": "outward"})),
-    compute=f"{PHYSICS}:board_on_drums",
+    compute=board_on_drums,
     equation="x'' + (2 mu g / a) x = 0 (x the board's centre from midway between the drums)",
     formula="omega^2 = 2 mu g / a (independent of the drums' speed and the board's mass); "
             "turning outward, the board runs off exponentially instead",
@@ -128,7 +130,7 @@ register(Scene(
     params=(Param("m", MASS, "mass of the rod"), Param("l", LENGTH, "length of the rod"),
             Param("M", MASS, "mass of the disk"), Param("r", LENGTH, "radius of the disk"),
             Param("a", LENGTH, "pivot to the disk's centre"), gravity()),
-    compute=f"{PHYSICS}:clock_pendulum",
+    compute=clock_pendulum,
     equation="J_A phi'' + (m l/2 + M a) g sin(phi) = 0",
     formula="J_A = m l^2/3 + M (r^2 + 2a^2)/2, omega^2 = (m l + 2 M a) g / (2 J_A)",
     latex=(r"$J_A = \frac{$m\,$l^2}{3} + \frac{$M\,($r^2 + 2\,$a^2)}{2}",
@@ -150,7 +152,7 @@ register(Scene(
     params=(Param("k", STIFFNESS, "spring stiffness (on the pulley's axle)"),
             Param("m", MASS, "mass of the block"),
             Param("M", MASS, "mass of the pulley (homogeneous disk)")),
-    compute=f"{PHYSICS}:pulley_block_spring",
+    compute=pulley_block_spring,
     equation="(4m + 3M/2) x'' + k x = 0 (x the pulley's centre; the block moves 2x)",
     formula="omega^2 = k / (4m + 3M/2)",
     latex=(r"$omega = \sqrt{\frac{$k}{4\,$m + \frac{3}{2}\,$M}}",),
@@ -177,7 +179,7 @@ register(Scene(
             Param("kt", TORSIONAL_STIFFNESS, "torsional stiffness of the shaft",
                   constraint="nonnegative"),
             gravity()),
-    compute=f"{PHYSICS}:disk_torsion_offset_mass",
+    compute=disk_torsion_offset_mass,
     equation="(M R^2/2 + m (r^2/2 + a^2)) phi'' + kt phi + m g a sin(phi) = 0",
     formula="omega^2 = (kt + m g a) / (M R^2/2 + m (r^2/2 + a^2)); J_A the denominator",
     latex=(r"$J_A = \frac{$M\,$R^2}{2} + $m\,\left(\frac{$r^2}{2} + $a^2\right)",
@@ -201,7 +203,7 @@ register(Scene(
             Param("m", MASS, "mass of the wheel"), Param("M", MASS, "mass of the beam"),
             body(), kappa()),
     one_of=(("body", "kappa"),),
-    compute=f"{PHYSICS}:wheel_on_moving_beam",
+    compute=wheel_on_moving_beam,
     equation="m x'' + kappa m (x'' - X'') + k x = 0, M X'' = kappa m (x'' - X'') (x the "
              "wheel's centre, X the beam)",
     formula="omega^2 = k / (m + M / (1 + M/(kappa m))) = k (kappa m + M) / (m (kappa m + M "
@@ -221,7 +223,7 @@ register(Scene(
            "of length l hangs from a pivot at the free end of the long arm and swings in its "
            "own vertical plane",
     params=(Param("l", LENGTH, "length of the short arm (the long one is 2l)"), gravity()),
-    compute=f"{PHYSICS}:angled_member",
+    compute=angled_member,
     equation="7 m l^2 phi'' + (sqrt(65)/2) m g l sin(phi) = 0 (m the mass per length l; phi "
              "from the equilibrium)",
     formula="omega^2 = (sqrt(65)/14) g / l",

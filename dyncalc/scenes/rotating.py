@@ -9,6 +9,10 @@ from __future__ import annotations
 
 import math
 
+from ..physics.coupled import coupled_blocks
+from ..physics.nonlinear import half_cylinder_shell, rod_torsion_spring
+from ..physics.rotating import (bead_on_rotating_ring, pendulum_accelerating_support,
+                                pendulum_on_rotating_disk, quarter_car)
 from ..units import (ACCELERATION, ANGULAR_RATE, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS,
                      VELOCITY)
 from ..result.explain import Formula
@@ -28,7 +32,7 @@ register(Scene(
            "a horizontal floor and rocks without slipping; phi is its tilt from the upright "
            "position",
     params=(Param("r", LENGTH, "shell radius"), gravity(), amplitude("below 90 deg", "phi0")),
-    compute="dyncalc.physics.nonlinear:half_cylinder_shell",
+    compute=half_cylinder_shell,
     equation="phi'' (pi - 2 cos phi) + phi'^2 sin phi + (g/r) sin phi = 0",
     formula="omega_0^2 = g / ((pi - 2) r); at amplitude phi0: T = 4 sqrt(r/g) "
             "int_0^(pi/2) sqrt(pi - 2 + 4 k^2 sin^2 u) / sqrt(1 - k^2 sin^2 u) du, "
@@ -57,7 +61,7 @@ register(Scene(
     params=(Param("m", MASS, "tip mass"), Param("l", LENGTH, "rod length"),
             Param("kt", TORSIONAL_STIFFNESS, "torsion spring stiffness (unstretched with the "
                   "rod horizontal)"), gravity()),
-    compute="dyncalc.physics.nonlinear:rod_torsion_spring",
+    compute=rod_torsion_spring,
     equation="m l^2 phi'' + kt phi - m g l cos(phi) = 0 (phi below the horizontal)",
     formula="(g/l) cos(phi_0) = kt phi_0 / (m l^2) (a bracketed root find on (0, pi/2)); "
             "omega^2 = (g/l) sin(phi_0) + kt / (m l^2)",
@@ -82,7 +86,7 @@ register(Scene(
     constraints=(Constraint("at least two of k1, k2, k3 positive",
                             lambda si: sum(si[n] > 0 for n in ("k1", "k2", "k3")) >= 2,
                             "; otherwise a block drifts freely (a mode of zero frequency)"),),
-    compute="dyncalc.physics.coupled:coupled_blocks",
+    compute=coupled_blocks,
     equation="M x'' + K x = 0, K = [[k1+k3, -k3], [-k3, k2+k3]], M = diag(m1, m2)",
     formula="K v = omega^2 M v: omega_1 < omega_2 and the mode shapes mode_1, mode_2 "
             "(amplitude ratios (x1, x2), unit length, first non-zero component positive)",
@@ -112,7 +116,7 @@ register(Scene(
     params=(Param("l", LENGTH, "length"),
             Param("a0", ACCELERATION, "support acceleration (any sign; 0 is at rest)",
                   constraint=None), gravity()),
-    compute="dyncalc.physics.rotating:pendulum_accelerating_support",
+    compute=pendulum_accelerating_support,
     equation="l phi'' + g sin(phi) + a0 cos(phi) = 0",
     formula="phi_0 = -atan(a0/g) (the bob trails behind); omega^2 = sqrt(g^2 + a0^2) / l",
     latex=(r"$phi_0 = -\arctan\left(\frac{$a0}{$g}\right)",
@@ -133,7 +137,7 @@ register(Scene(
     params=(Param("r", LENGTH, "disk centre to pivot"), Param("l", LENGTH, "pendulum length"),
             Param("Omega", ANGULAR_RATE, "spin of the disk (rad/s, rpm, ...)",
                   constraint="nonzero")),
-    compute="dyncalc.physics.rotating:pendulum_on_rotating_disk",
+    compute=pendulum_on_rotating_disk,
     equation="phi'' + (r/l) Omega^2 sin(phi) = 0 (phi from the radial direction)",
     formula="omega = sqrt(r/l) Omega",
     latex=(r"$omega = \sqrt{\frac{$r}{$l}}\,$Omega",),
@@ -152,7 +156,7 @@ register(Scene(
     params=(Param("r", LENGTH, "ring radius"),
             Param("Omega", ANGULAR_RATE, "spin of the ring (rad/s, rpm, ...)",
                   constraint=None), gravity()),
-    compute="dyncalc.physics.rotating:bead_on_rotating_ring",
+    compute=bead_on_rotating_ring,
     equation="theta'' = sin(theta) (Omega^2 cos(theta) - g/r)",
     formula="Omega^2 < g/r: theta_eq = 0, omega^2 = g/r - Omega^2; Omega^2 > g/r: "
             "theta_eq = acos(g/(r Omega^2)) (and -theta_eq), omega^2 = Omega^2 - "
@@ -177,7 +181,7 @@ register(Scene(
     params=(Param("k", STIFFNESS, "suspension stiffness"), Param("m", MASS, "body mass"),
             Param("L", LENGTH, "road wavelength"), Param("U0", LENGTH, "road amplitude"),
             Param("v0", VELOCITY, "speed", constraint="nonnegative")),
-    compute="dyncalc.physics.rotating:quarter_car",
+    compute=quarter_car,
     equation="m x'' + k x = k U0 cos(Omega t)",
     formula="omega^2 = k/m, Omega = 2 pi v0 / L, x_amp = U0 / |1 - Omega^2/omega^2|, "
             "v_crit = L sqrt(k/m) / (2 pi)",

@@ -229,7 +229,7 @@ def compute_values(scene: Scene, kwargs: dict[str, Any], zeta: float | None,
         kwargs["method"] = method or "auto"
         kwargs["rtol"] = DEFAULT_RTOL if rtol is None else rtol
 
-    outcome = scene.function()(**kwargs)
+    outcome = scene.compute(**kwargs)
     values = dict(outcome.values)
     warnings = list(outcome.warnings)
     if zeta is not None:
