@@ -22,6 +22,7 @@ import random
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -38,10 +39,13 @@ PENDULUM = ["natural-frequency", "--scene", "physical-pendulum", "m=(2 ± 0.02) 
 
 
 def run_once(argv: list[str], tree: Path) -> tuple[float, str]:
+    """One one-off of the dyncalc package in ``tree``: first on PYTHONPATH, and run from a
+    neutral folder (``python -m`` puts the working directory first on the path, ahead of
+    PYTHONPATH, so a run from a checkout would always load that checkout)."""
     env = {**os.environ, "PYTHONPATH": str(tree)}
     start = time.perf_counter()
     proc = subprocess.run([sys.executable, "-m", "dyncalc", *argv], capture_output=True,
-                          text=True, env=env, timeout=900)
+                          text=True, env=env, timeout=900, cwd=tempfile.gettempdir())
     elapsed = time.perf_counter() - start
     if proc.returncode != 0:
         raise SystemExit(f"{' '.join(argv[:3])} ... failed in {tree}: {proc.stderr.strip()}")

@@ -525,3 +525,27 @@ def test_propagation_reads_every_text_once(monkeypatch):
     counted = scene.replace(compute=lambda **kw: scene_calls.append(1) or scene.compute(**kw))
     propagate(lambda: run_scene(counted, {"k": "100+/-5 N/m", "m": "2+/-0.1 kg"}))
     assert len(scene_calls) == 1 + 2 * 2
+
+
+def test_inverse_problem_propagates_by_the_implicit_function_theorem(monkeypatch):
+    """f = (5 ± 0.1) Hz, m = (2 ± 0.05) kg, k solved: k = (2 pi f)^2 m, so dk/df = 2 k / f and
+    dk/dm = k / m; the root is searched for once (the derivatives come from the forward scene
+    next to it, not from solving again)."""
+    from dyncalc.commands.natural_frequency import compute_scene
+    from dyncalc.scenes import inverse
+
+    searches = []
+    original = inverse._Problem.roots
+
+    def counting(self, goal):
+        searches.append(goal)
+        return original(self, goal)
+
+    monkeypatch.setattr(inverse._Problem, "roots", counting)
+    result = propagate(lambda: compute_scene("mass-spring",
+                                             {"f": "(5 ± 0.1) Hz", "m": "(2 ± 0.05) kg"}))
+    k = (2 * math.pi * 5) ** 2 * 2
+    assert result.results["k"].si == pytest.approx(k, rel=1e-14)
+    expected = k * math.hypot(2 * 0.1 / 5, 0.05 / 2)
+    assert result.results["k"].uncertainty == pytest.approx(expected, rel=DIFF_TOL)
+    assert len(searches) == 1

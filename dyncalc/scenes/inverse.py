@@ -96,11 +96,108 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
                         f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
     result = make_result(scene, inputs, outcome, values, warnings, command, solved)
+    result.sensitivity = lambda: _sensitivity(problem, roots, names, parsed_goal, target,
+                                              bool(values))
     result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
     if how[1]:
         note = f"{unknown.name} solved from {target}: {how[1]}"
         result.amend_explanation(lambda explanation: explanation.assumptions.append(note))
     return result
+
+
+def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed_goal,
+                 target: str, with_values: bool):
+    """Derivatives of the solved unknown (and, with one root, of the other results) with
+    respect to the uncertain inputs, by the implicit function theorem at each root ``x``:
+    ``y(x, p) = goal`` gives ``dx/dgoal = 1 / y_x`` and ``dx/dp = -y_p / y_x``, and another
+    result ``z(x, p)`` moves by ``z_p + z_x dx/dp``. The partial derivatives are central
+    differences of the forward scene on the parameters as read (two scene computations per
+    uncertain input and per root, plus two for ``y_x``): no root is searched for again and
+    nothing is parsed again."""
+    from ..result.propagate import RELATIVE_STEP, Sensitivity, UncertainInput
+    from .runner import _nudged
+
+    scene, prepared = problem.scene, problem.prepared
+    params = [n for n, e in prepared.inputs.items()
+              if e.uncertainty is not None and n in prepared.si]
+    inputs = [UncertainInput(n, float(prepared.si[n]), float(prepared.inputs[n].uncertainty))
+              for n in params]
+    goal_index = None
+    if parsed_goal.uncertainty is not None:
+        goal_index = len(inputs)
+        inputs.append(UncertainInput(target, float(parsed_goal.si),
+                                     float(parsed_goal.uncertainty)))
+    slopes: dict[str, dict[int, object]] = {}
+    failed: set[str] = set()
+
+    def numbers(at: _Problem, x: float) -> dict[str, object] | None:
+        try:
+            with np.errstate(all="ignore"):
+                _outcome, values, _warnings = at.evaluate(x)
+        except (InputError, ArithmeticError, ValueError):
+            return None
+        out = {}
+        for name, value in values.items():
+            entry = _entry(name, value)
+            if not isinstance(entry.si, str):
+                out[name] = np.asarray(entry.si, dtype=float)
+        return out
+
+    def step(value: float, sigma: float) -> float:
+        return RELATIVE_STEP * (abs(value) if value != 0 else sigma or 1.0)
+
+    for name, x in zip(names, roots):
+        base = numbers(problem, x) or {}
+        # a root whose derivative cannot be worked out leaves every result it sets without one
+        unknowable = {name, *(base if with_values else ())} - {target}
+        hx = step(x, 0.0)
+        up, down = numbers(problem, x + hx), numbers(problem, x - hx)
+        if up is None or down is None or target not in up or target not in down:
+            failed.update(unknowable)
+            continue
+        z_x = {k: (up[k] - down[k]) / (2 * hx) for k in up if k in down}
+        y_x = float(z_x[target])
+        if y_x == 0 or not math.isfinite(y_x):
+            failed.update(unknowable)
+            continue
+        for index, item in enumerate(inputs):
+            if item.sigma == 0:
+                continue
+            if index == goal_index:
+                dx = 1.0 / y_x
+                slopes.setdefault(name, {})[index] = dx
+                if with_values:
+                    for k, slope in z_x.items():
+                        if k != target:
+                            slopes.setdefault(k, {})[index] = slope * dx
+                continue
+            h = step(item.si, item.sigma)
+            moved = []
+            for offset in (h, -h):
+                nudged = _nudged(scene, prepared, item.name, offset)
+                moved.append(None if nudged is None else numbers(
+                    _Problem(scene, nudged, problem.param, target, problem.method,
+                             problem.rtol), x))
+            if moved[0] is not None and moved[1] is not None:
+                partial = {k: (moved[0][k] - moved[1][k]) / (2 * h) for k in moved[0]
+                           if k in moved[1]}
+            else:  # one side refused (a value at its bound): the one-sided difference
+                one = moved[0] if moved[0] is not None else moved[1]
+                if one is None or not base:
+                    failed.update(unknowable)
+                    continue
+                sign = 1.0 if moved[0] is not None else -1.0
+                partial = {k: sign * (one[k] - base[k]) / h for k in one if k in base}
+            if target not in partial:
+                failed.update(unknowable)
+                continue
+            dx = -float(partial[target]) / y_x
+            slopes.setdefault(name, {})[index] = dx
+            if with_values:
+                for k, slope in partial.items():
+                    if k != target and k in z_x:
+                        slopes.setdefault(k, {})[index] = slope + z_x[k] * dx
+    return Sensitivity(inputs, slopes, failed)
 
 
 def _split(scene: Scene, texts: dict[str, str], labels: dict[str, str]):
