@@ -154,3 +154,32 @@ def test_click_options_are_generated_from_the_records():
         assert options[len(flags)] == "--json", name
         assert (record.words is None) == all(
             not isinstance(p, __import__("click").Argument) for p in command.params), name
+
+
+def test_every_scene_physics_function_checks_the_scene_dimensions():
+    """One physics face: every scene's physics function checks on entry the dimension of each
+    quantity the scene passes it, the same dimension the scene's parameter declares."""
+    from dyncalc.scenes import catalog
+    from dyncalc.units import DIMENSIONLESS
+
+    for scene in catalog().values():
+        declared = scene.compute.dimensions
+        for param in scene.params:
+            if param.dim is None or param.dim is DIMENSIONLESS or param.name == "zeta":
+                continue
+            assert declared.get(param.name) is param.dim, (scene.name, param.name)
+
+
+def test_a_physics_function_refuses_a_wrong_dimension():
+    from dyncalc.errors import InputError
+    from dyncalc.physics.oscillators import mass_spring, pendulum
+    from dyncalc.units import Q_
+
+    with pytest.raises(InputError) as raised:
+        mass_spring(Q_(5, "kg"), Q_(2, "kg"))
+    assert str(raised.value) == "k must be a stiffness [force]/[length]; got 5 kilogram ([mass])"
+    with pytest.raises(InputError) as raised:
+        pendulum(Q_(1, "m"), Q_(9.81, "m/s^2"), Q_(30, "deg/s"))
+    assert str(raised.value).startswith("amplitude must be an angle [angle]; got 30 ")
+    assert mass_spring(100.0, 2.0).values["omega"].magnitude == pytest.approx(50 ** 0.5,
+                                                                              rel=1e-15)

@@ -27,9 +27,8 @@ from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from ..result.explain import Formula
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
-from ..result.kinds import DECAY_RATE
-from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS,
-                     STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
+from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DECAY_RATE,
+                     DIMENSIONLESS, MASS, STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
 from .record import Command, Parameter, results_from_kinds
 
 __all__ = ["COMMAND", "damping_ratio", "parse_amplitudes", "parse_cycles", "damping_scene_names",

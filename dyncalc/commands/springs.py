@@ -28,8 +28,8 @@ from dataclasses import dataclass, field
 
 from ..errors import InputError, PhysicsError
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed
-from ..units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, SECOND_MOMENT, STIFFNESS,
-                    TORSIONAL_STIFFNESS, Dim, parse_quantity)
+from ..units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, RIGIDITY, SECOND_MOMENT,
+                     STIFFNESS, TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS, Dim, parse_quantity)
 from .record import Command, ResultName
 
 __all__ = ["SPRING_SERIES", "SPRING_PARALLEL", "ELEMENTS", "network_stiffness", "parse_network",
@@ -38,9 +38,6 @@ __all__ = ["SPRING_SERIES", "SPRING_PARALLEL", "ELEMENTS", "network_stiffness", 
 MAX_NETWORK_DEPTH = 16
 MAX_ELEMENTS = 1000
 
-RIGIDITY = Dim("bending stiffness", "[force]*[length]^2", "[force]*[length]**2", "N*m^2")
-TORSIONAL_RIGIDITY = Dim("torsional rigidity", "[force]*[length]^2", "[force]*[length]**2",
-                         "N*m^2")
 
 
 @dataclass(frozen=True)

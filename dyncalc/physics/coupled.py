@@ -14,7 +14,9 @@ from decimal import Decimal, localcontext
 from ..lazy import numpy as np
 
 from ..errors import PhysicsError
-from .oscillators import _si
+from ..units import MASS, STIFFNESS
+from .face import check_units, magnitude
+
 from .outcome import Outcome, periodic
 
 __all__ = ["coupled_blocks", "two_by_two_modes"]
@@ -91,6 +93,7 @@ def _unit_mode(u1: Decimal, u2: Decimal, m1: Decimal, m2: Decimal) -> np.ndarray
     return v + 0.0  # no negative zeros
 
 
+@check_units(m1=MASS, m2=MASS, k1=STIFFNESS, k2=STIFFNESS, k3=STIFFNESS)
 def coupled_blocks(m1, m2, k1, k2, k3) -> Outcome:
     """Two blocks on a frictionless floor between two walls: ``k1`` ties block 1 to its wall,
     ``k2`` block 2 to the other wall, ``k3`` couples the blocks.
@@ -127,8 +130,8 @@ def coupled_blocks(m1, m2, k1, k2, k3) -> Outcome:
     >>> out.values["mode_2"].round(12).tolist()
     [0.707106781187, -0.707106781187]
     """
-    m1_, m2_ = _si(m1, "kg"), _si(m2, "kg")
-    k1_, k2_, k3_ = _si(k1, "N/m"), _si(k2, "N/m"), _si(k3, "N/m")
+    m1_, m2_ = magnitude(m1, "kg"), magnitude(m2, "kg")
+    k1_, k2_, k3_ = magnitude(k1, "N/m"), magnitude(k2, "N/m"), magnitude(k3, "N/m")
     if min(k1_, k2_, k3_) < 0.0 or (k1_ > 0.0) + (k2_ > 0.0) + (k3_ > 0.0) < 2:
         raise PhysicsError("coupled-blocks needs k1, k2, k3 >= 0 with at least two of them "
                            "positive; otherwise a block drifts freely (a zero-frequency mode)")

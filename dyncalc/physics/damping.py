@@ -16,6 +16,8 @@ from __future__ import annotations
 import math
 
 from ..units import Q_
+from ..units import ACCELERATION, ANGULAR_RATE, DAMPING, LENGTH, LINEAR_DRAG, MASS, STIFFNESS
+from .face import check_units, magnitude
 from .numerics import Wide, monomial, root_monomial, sqrt_ratio, two_product
 from .outcome import Outcome, damped, periodic
 
@@ -33,9 +35,6 @@ FRAME_METHODS = ("exact", "small-damping")
 _PEAK_LIMIT = math.sqrt(0.5)
 
 
-def _si(quantity, unit: str) -> float:
-    """The magnitude of ``quantity`` in ``unit`` (pint refuses a wrong dimension here)."""
-    return float(quantity.to(unit).magnitude)
 
 
 def _hypot(a: float, b: float) -> float:
@@ -45,6 +44,7 @@ def _hypot(a: float, b: float) -> float:
         return math.inf
 
 
+@check_units(m=MASS, a=LENGTH, k=STIFFNESS, d=DAMPING, g=ACCELERATION)
 def pendulum_spring_dashpot(m, a, k, d, g) -> Outcome:
     """Pendulum with a point mass at 2a, a spring at 2a and a dashpot at a from the pivot.
 
@@ -92,8 +92,8 @@ def pendulum_spring_dashpot(m, a, k, d, g) -> Outcome:
     >>> round(out.values["zeta"], 6)
     0.035786
     """
-    m_, a_, k_ = _si(m, "kg"), _si(a, "m"), _si(k, "N/m")
-    d_, g_ = _si(d, "N*s/m"), _si(g, "m/s**2")
+    m_, a_, k_ = magnitude(m, "kg"), magnitude(a, "m"), magnitude(k, "N/m")
+    d_, g_ = magnitude(d, "N*s/m"), magnitude(g, "m/s**2")
     omega = _hypot(root_monomial(1.0, [(k_, 1), (m_, -1)]), root_monomial(0.5, [(g_, 1), (a_, -1)]))
     if d_ == 0.0:
         xi = zeta = 0.0
@@ -115,6 +115,7 @@ def pendulum_spring_dashpot(m, a, k, d, g) -> Outcome:
     return Outcome(values, warnings=notes)
 
 
+@check_units(m=MASS, l=LENGTH, beta=LINEAR_DRAG, g=ACCELERATION)
 def rod_in_fluid(m, l, beta, g) -> Outcome:
     """Uniform rod pivoted at its upper end, swinging in a fluid with linear drag.
 
@@ -159,7 +160,8 @@ def rod_in_fluid(m, l, beta, g) -> Outcome:
     >>> round(out.values["zeta"], 9)
     0.124376335
     """
-    m_, l_, beta_, g_ = _si(m, "kg"), _si(l, "m"), _si(beta, "N*s/m**2"), _si(g, "m/s**2")
+    m_, l_ = magnitude(m, "kg"), magnitude(l, "m")
+    beta_, g_ = magnitude(beta, "N*s/m**2"), magnitude(g, "m/s**2")
     omega = root_monomial(1.5, [(g_, 1), (l_, -1)])
     xi = monomial(0.5, [(beta_, 1), (l_, 1), (m_, -1)]) if beta_ else 0.0
     zeta = root_monomial(1.0 / 6.0, [(beta_, 2), (l_, 3), (g_, -1), (m_, -2)])
@@ -191,6 +193,7 @@ def small_damping_error(zeta: float) -> float:
     return (2.0 * zeta - 1.0) / (2.0 * zeta)
 
 
+@check_units(m=MASS, k=STIFFNESS, d=DAMPING, b0=ACCELERATION)
 def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) -> Outcome:
     """Frame (a beam on massless columns) braced by a diagonal spring and dashpot at 45 degrees,
     its ground shaken with acceleration amplitude ``b0``.
@@ -249,7 +252,8 @@ def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) ->
     >>> out.method
     'exact'
     """
-    m_, k_, d_, b0_ = _si(m, "kg"), _si(k, "N/m"), _si(d, "N*s/m"), _si(b0, "m/s**2")
+    m_, k_ = magnitude(m, "kg"), magnitude(k, "N/m")
+    d_, b0_ = magnitude(d, "N*s/m"), magnitude(b0, "m/s**2")
     omega = root_monomial(0.5, [(k_, 1), (m_, -1)])
     zeta = root_monomial(0.125, [(d_, 2), (k_, -1), (m_, -1)])
     extra, warnings = damped(omega, zeta)
@@ -380,6 +384,7 @@ def _overdamped_note(zeta: float, regime: str) -> str:
             "damped frequency, period or logarithmic decrement")
 
 
+@check_units(c=DAMPING, k=STIFFNESS, m=MASS)
 def damping_from_coefficients(c, k, m) -> Outcome:
     """Damping ratio and damped motion of a mass ``m`` on a spring ``k`` with a viscous
     damper ``c``: ``m x'' + c x' + k x = 0``.
@@ -424,7 +429,7 @@ def damping_from_coefficients(c, k, m) -> Outcome:
     >>> damping_from_coefficients(Q_(20, "N*s/m"), Q_(100, "N/m"), Q_(1, "kg")).values["regime"]
     'critically damped'
     """
-    c_, k_, m_ = _si(c, "N*s/m"), _si(k, "N/m"), _si(m, "kg")
+    c_, k_, m_ = magnitude(c, "N*s/m"), magnitude(k, "N/m"), magnitude(m, "kg")
     critical = _critical_wide(k_, m_)
     values: dict = {"c_c": Q_(float(critical), "N*s/m"), "c": Q_(c_, "N*s/m"),
                     "omega": Q_(sqrt_ratio(k_, m_), "rad/s")}
@@ -464,6 +469,7 @@ def damping_from_coefficients(c, k, m) -> Outcome:
     return _ordered(values, notes)
 
 
+@check_units(omega=ANGULAR_RATE, k=STIFFNESS, m=MASS)
 def damping_from_decrement(delta: float, omega=None, k=None, m=None) -> Outcome:
     """Damping ratio and damped motion from a logarithmic decrement per cycle.
 
@@ -512,9 +518,9 @@ def damping_from_decrement(delta: float, omega=None, k=None, m=None) -> Outcome:
         notes.append("zeta = 0: undamped; Q is unbounded and not given")
     omega_si = None
     if omega is not None:
-        omega_si = _si(omega, "rad/s")
+        omega_si = magnitude(omega, "rad/s")
     elif k is not None and m is not None:
-        k_, m_ = _si(k, "N/m"), _si(m, "kg")
+        k_, m_ = magnitude(k, "N/m"), magnitude(m, "kg")
         omega_si = sqrt_ratio(k_, m_)
         critical = _critical_wide(k_, m_)
         values["omega"] = Q_(omega_si, "rad/s")

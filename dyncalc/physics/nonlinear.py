@@ -15,8 +15,10 @@ import math
 
 from ..errors import PhysicsError
 from ..units import Q_
+from ..units import ACCELERATION, ANGLE, LENGTH, MASS, TORSIONAL_STIFFNESS
+from .face import check_units, magnitude
 from .numerics import HALF_TURN, PI_LO, UNIT_ROUNDOFF, monomial, sqrt_ratio
-from .oscillators import _SHORT, _amplitude_parts, _si
+from .oscillators import _SHORT, _amplitude_parts
 from .outcome import Outcome, periodic
 
 __all__ = ["half_cylinder_shell", "rod_torsion_spring", "SHELL_METHODS", "WOUND_THRESHOLD"]
@@ -125,6 +127,7 @@ def _shell_ode(phi0: float, rtol: float) -> float:
     return 4.0 * float(sol.t_events[0][0]) / small_period
 
 
+@check_units(r=LENGTH, g=ACCELERATION, amplitude=ANGLE)
 def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
                         rtol: float = 1e-9) -> Outcome:
     """A thin half-cylinder shell rocking without slipping on flat ground.
@@ -196,7 +199,7 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
     >>> round(out.values["T"].magnitude, 12)  # mpmath.quad at 30 digits: 1.949968530966157
     1.949968530966
     """
-    omega0 = sqrt_ratio(_si(g, "m/s**2"), PI_MINUS_2 * _si(r, "m"))
+    omega0 = sqrt_ratio(magnitude(g, "m/s**2"), PI_MINUS_2 * magnitude(r, "m"))
     if amplitude is None:
         if method in ("quadrature", "ode"):
             raise PhysicsError(f"--method {method} needs an amplitude (--amplitude or "
@@ -205,10 +208,10 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
         out.assumptions.append("small oscillations; give --amplitude for the "
                                "amplitude-dependent period")
         return out
-    magnitude, unit, phi0 = _amplitude_parts(amplitude)
+    amount, unit, phi0 = _amplitude_parts(amplitude)
     limit = 0.5 * HALF_TURN[unit] if unit in HALF_TURN else 0.5 * math.pi
-    if magnitude >= limit:
-        shown = f"{magnitude:g} {_SHORT.get(unit, unit)}"
+    if amount >= limit:
+        shown = f"{amount:g} {_SHORT.get(unit, unit)}"
         raise PhysicsError(f"the amplitude must be below 90 degrees; at {shown} the rim of "
                            "the half-cylinder shell touches the ground and the rocking model "
                            "ends")
@@ -216,7 +219,7 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
     bound = _shell_small_error_bound(k2)
     if method == "auto":
         method = "linear" if bound <= rtol else "quadrature"
-    shown = f"{magnitude:.6g} {_SHORT.get(unit, unit)}"
+    shown = f"{amount:.6g} {_SHORT.get(unit, unit)}"
     omega_0 = periodic(omega0)["omega"]
     if method == "linear":
         error, size = bound, "at most "
@@ -288,6 +291,7 @@ def _rod_equilibrium(kappa: float) -> float:
     return phi
 
 
+@check_units(m=MASS, l=LENGTH, kt=TORSIONAL_STIFFNESS, g=ACCELERATION)
 def rod_torsion_spring(m, l, kt, g) -> Outcome:
     """A massless rod with a point mass at its tip, pivoted at the other end on a torsion spring
     that is unstretched with the rod horizontal; gravity bends it down to ``phi_0``.
@@ -334,7 +338,8 @@ def rod_torsion_spring(m, l, kt, g) -> Outcome:
     >>> round(out.values["omega"].magnitude, 12)  # mpmath: 4.491602048489267
     4.491602048489
     """
-    m_, l_, kt_, g_ = _si(m, "kg"), _si(l, "m"), _si(kt, "N*m/rad"), _si(g, "m/s**2")
+    m_, l_ = magnitude(m, "kg"), magnitude(l, "m")
+    kt_, g_ = magnitude(kt, "N*m/rad"), magnitude(g, "m/s**2")
     if not kt_ > 0.0:
         raise PhysicsError(f"kt must be positive; got {kt_:g} N*m/rad")
     kappa = monomial(1.0, [(kt_, 1), (m_, -1), (g_, -1), (l_, -1)])

@@ -12,6 +12,9 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
+from ..units import (ACCELERATION, ANGLE, INERTIA, LENGTH, MASS, STIFFNESS,
+                     TORSIONAL_STIFFNESS)
+from .face import check_units, magnitude
 from .numerics import (HALF_TURN, PI_HI, PI_LO, SERIES_MAX_TERMS, UNIT_ROUNDOFF, agm,
                        agm_compensated, half_complement_sin, monomial, pendulum_series,
                        root_monomial, sqrt_ratio)
@@ -33,10 +36,9 @@ _SHORT = {"degree": "deg", "radian": "rad", "grade": "grad", "arcminute": "arcmi
           "arcsecond": "arcsec"}
 
 
-def _si(quantity, unit: str) -> float:
-    return float(quantity.to(unit).magnitude)
 
 
+@check_units(k=STIFFNESS, m=MASS)
 def mass_spring(k, m) -> Outcome:
     """Mass on a linear spring.
 
@@ -61,9 +63,10 @@ def mass_spring(k, m) -> Outcome:
     >>> mass_spring(Q_(100, "N/m"), Q_(2, "kg")).values["omega"].magnitude  # rad/s
     7.0710678118654755
     """
-    return Outcome(periodic(sqrt_ratio(_si(k, "N/m"), _si(m, "kg"))))
+    return Outcome(periodic(sqrt_ratio(magnitude(k, "N/m"), magnitude(m, "kg"))))
 
 
+@check_units(kt=TORSIONAL_STIFFNESS, J=INERTIA)
 def torsional(kt, J) -> Outcome:
     """Rotor on a torsional spring.
 
@@ -80,14 +83,14 @@ def torsional(kt, J) -> Outcome:
     >>> torsional(Q_(3, "kN*m/rad"), Q_(1.2, "kg*m^2")).values["f"].magnitude  # Hz
     7.957747154594767
     """
-    return Outcome(periodic(sqrt_ratio(_si(kt, "N*m/rad"), _si(J, "kg*m**2"))))
+    return Outcome(periodic(sqrt_ratio(magnitude(kt, "N*m/rad"), magnitude(J, "kg*m**2"))))
 
 
 def _amplitude_parts(amplitude) -> tuple[float, str, float]:
     """(magnitude, unit name, radians) of an amplitude: in the unit typed where half a turn is
     exact in it (degree, grade, ...) or it is the radian; otherwise converted to radians."""
     units = list(amplitude.units._units.items())
-    radians = _si(amplitude, "rad")
+    radians = magnitude(amplitude, "rad")
     if len(units) == 1 and units[0][1] == 1 and (units[0][0] in HALF_TURN
                                                  or units[0][0] == "radian"):
         return float(amplitude.magnitude), units[0][0], radians
@@ -308,6 +311,7 @@ def _ode_outcome(omega0, omega_0, radians, complement, factor, rtol, shown, assu
     return out
 
 
+@check_units(l=LENGTH, g=ACCELERATION, amplitude=ANGLE)
 def pendulum(l, g, amplitude=None, method: str = "auto", rtol: float = 1e-9) -> Outcome:
     """Simple pendulum: a point mass on a massless rod or string.
 
@@ -336,9 +340,11 @@ def pendulum(l, g, amplitude=None, method: str = "auto", rtol: float = 1e-9) -> 
     >>> round(out.values["T"].magnitude / 2.006409, 4)  # 1.18034 = 2K(1/sqrt 2)/pi
     1.1803
     """
-    return large_amplitude(sqrt_ratio(_si(g, "m/s**2"), _si(l, "m")), amplitude, method, rtol)
+    omega0 = sqrt_ratio(magnitude(g, "m/s**2"), magnitude(l, "m"))
+    return large_amplitude(omega0, amplitude, method, rtol)
 
 
+@check_units(m=MASS, a=LENGTH, J=INERTIA, J_A=INERTIA, g=ACCELERATION, amplitude=ANGLE)
 def physical_pendulum(m, a, g, J=None, J_A=None, amplitude=None, method: str = "auto",
                       rtol: float = 1e-9) -> Outcome:
     """Rigid body swinging about a fixed pivot.
@@ -374,9 +380,9 @@ def physical_pendulum(m, a, g, J=None, J_A=None, amplitude=None, method: str = "
     >>> round(rod.values["omega"].magnitude ** 2, 12)  # g / (2/3)
     14.715
     """
-    m_, a_, g_ = _si(m, "kg"), _si(a, "m"), _si(g, "m/s**2")
+    m_, a_, g_ = magnitude(m, "kg"), magnitude(a, "m"), magnitude(g, "m/s**2")
     steiner = monomial(1.0, [(m_, 1), (a_, 2)])                  # m a^2, no overflow midway
-    ja = _si(J_A, "kg*m**2") if J_A is not None else _si(J, "kg*m**2") + steiner
+    ja = magnitude(J_A, "kg*m**2") if J_A is not None else magnitude(J, "kg*m**2") + steiner
     if J_A is not None and ja < steiner * (1 - 1e-12):
         raise PhysicsError(f"J_A = {ja:.6g} kg*m^2 is less than m a^2 = {steiner:.6g} "
                            "kg*m^2, which no body can have (J_A = J + m a^2 with J >= 0)")

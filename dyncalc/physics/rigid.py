@@ -21,6 +21,8 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
+from ..units import ACCELERATION, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
+from .face import check_units, magnitude
 from .numerics import Wide
 from .outcome import Outcome, periodic
 
@@ -34,7 +36,8 @@ ANGLED_MEMBER_FACTOR = 0.7588646476479823
 
 
 def _si(quantity, unit: str) -> Wide:
-    return Wide(float(quantity.to(unit).magnitude))
+    """The magnitude in ``unit`` as a double-double (:func:`~dyncalc.physics.face.magnitude`)."""
+    return Wide(magnitude(quantity, unit))
 
 
 def _check_kappa(kappa: float) -> float:
@@ -54,6 +57,7 @@ def _outcome(omega_squared: Wide, **extra) -> Outcome:
     return Outcome(values)
 
 
+@check_units(k=STIFFNESS, m=MASS)
 def rolling_disk_spring(k, m, kappa: float = 0.5) -> Outcome:
     """A round body rolling without slipping on level ground, held by a spring at its centre.
 
@@ -92,6 +96,7 @@ def rolling_disk_spring(k, m, kappa: float = 0.5) -> Outcome:
     return _outcome(_si(k, "N/m") / (mass + kappa * mass))
 
 
+@check_units(R=LENGTH, r=LENGTH, g=ACCELERATION)
 def rolling_in_track(R, r, g, kappa: float = 0.5) -> Outcome:
     """A round body rolling without slipping inside a circular track, about the bottom.
 
@@ -142,6 +147,7 @@ def rolling_in_track(R, r, g, kappa: float = 0.5) -> Outcome:
     return _outcome(_si(g, "m/s**2") / (length + kappa * length))
 
 
+@check_units(k=STIFFNESS, m=MASS, M=MASS)
 def drum_block_spring(k, m, M) -> Outcome:
     """A block on a rope wound on a drum (a homogeneous disk), held by a spring.
 
@@ -175,6 +181,7 @@ def drum_block_spring(k, m, M) -> Outcome:
     return _outcome(2.0 * _si(k, "N/m") / (_si(M, "kg") + 2.0 * _si(m, "kg")))
 
 
+@check_units(a=LENGTH, g=ACCELERATION)
 def board_on_drums(mu: float, a, g, sense: str = "inward") -> Outcome:
     """A board lying on two drums that turn in opposite senses, sliding on them with friction.
 
@@ -232,6 +239,7 @@ def board_on_drums(mu: float, a, g, sense: str = "inward") -> Outcome:
     return _outcome(rate_squared)
 
 
+@check_units(m=MASS, l=LENGTH, M=MASS, r=LENGTH, a=LENGTH, g=ACCELERATION)
 def clock_pendulum(m, l, M, r, a, g) -> Outcome:
     """A clock pendulum: a uniform rod pivoted at one end carrying a disk on it.
 
@@ -277,6 +285,7 @@ def clock_pendulum(m, l, M, r, a, g) -> Outcome:
     return _outcome(moment / (2.0 * inertia), J_A=(inertia, "kg*m**2"))
 
 
+@check_units(k=STIFFNESS, m=MASS, M=MASS)
 def pulley_block_spring(k, m, M) -> Outcome:
     """A loose pulley (a homogeneous disk) held by a spring, with a block moving twice as far.
 
@@ -311,6 +320,7 @@ def pulley_block_spring(k, m, M) -> Outcome:
     return _outcome(_si(k, "N/m") / (4.0 * _si(m, "kg") + 1.5 * _si(M, "kg")))
 
 
+@check_units(M=MASS, R=LENGTH, m=MASS, r=LENGTH, a=LENGTH, kt=TORSIONAL_STIFFNESS, g=ACCELERATION)
 def disk_torsion_offset_mass(M, R, m, r, a, kt, g) -> Outcome:
     """A disk on a torsion shaft carrying a small disk whose centre hangs below the axis.
 
@@ -368,6 +378,7 @@ def disk_torsion_offset_mass(M, R, m, r, a, kt, g) -> Outcome:
     return _outcome(stiffness / inertia, J_A=(inertia, "kg*m**2"))
 
 
+@check_units(k=STIFFNESS, m=MASS, M=MASS)
 def wheel_on_moving_beam(k, m, M, kappa: float = 0.5) -> Outcome:
     """A wheel held by a spring, rolling on a beam that runs freely on rollers.
 
@@ -418,6 +429,7 @@ def wheel_on_moving_beam(k, m, M, kappa: float = 0.5) -> Outcome:
     return out
 
 
+@check_units(l=LENGTH, g=ACCELERATION)
 def angled_member(l, g) -> Outcome:
     """An L-shaped uniform bar swinging in its plane about the free end of its long arm.
 

@@ -47,7 +47,10 @@ import math
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from ..constants import STANDARD_GRAVITY
 from ..errors import PhysicsError
+from ..units import ACCELERATION, ANGLE, ANGULAR_RATE, LENGTH, VELOCITY
+from .face import check_units, magnitude
 from .numerics import HALF_TURN, PI_HI, PI_LO, Wide
 from .outcome import Outcome
 
@@ -319,8 +322,8 @@ def _greater(a: Wide, b: Wide) -> bool:
     return (a.e, a.m) > (b.e, b.m)
 
 
-def _signed(magnitude: Wide, sign: float) -> float:
-    return math.copysign(float(magnitude), sign) if magnitude.m else 0.0
+def _signed(size: Wide, sign: float) -> float:
+    return math.copysign(float(size), sign) if size.m else 0.0
 
 
 def onset_ode(v0: float, mu: float, kappa: float, g: float, r: float | None = None,
@@ -415,6 +418,7 @@ def onset_ode(v0: float, mu: float, kappa: float, g: float, r: float | None = No
 
 # --- the Python API ------------------------------------------------------------------------------
 
+@check_units(v0=VELOCITY, g=ACCELERATION, r=LENGTH, omega0=ANGULAR_RATE, incline=ANGLE)
 def rolling_onset(v0, mu: float, kappa: float = 0.4, g=None, r=None, omega0=None,
                   incline=None) -> Outcome:
     """When a round body set down sliding starts to roll: ``t_roll``, ``x_roll``, ``v_roll``
@@ -431,11 +435,11 @@ def rolling_onset(v0, mu: float, kappa: float = 0.4, g=None, r=None, omega0=None
     """
     from ..units import Q_
 
-    g_si = 9.80665 if g is None else float(g.to("m/s**2").magnitude)
-    r_si = None if r is None else float(r.to("m").magnitude)
-    w_si = 0.0 if omega0 is None else float(omega0.to("rad/s").magnitude)
+    g_si = STANDARD_GRAVITY if g is None else magnitude(g, "m/s**2")
+    r_si = None if r is None else magnitude(r, "m")
+    w_si = 0.0 if omega0 is None else magnitude(omega0, "rad/s")
     sin_b, cos_b = (0.0, 1.0) if incline is None else slope_sin_cos(incline)
-    onset = onset_closed_form(float(v0.to("m/s").magnitude), float(mu), float(kappa), g_si,
+    onset = onset_closed_form(magnitude(v0, "m/s"), float(mu), float(kappa), g_si,
                               r_si, w_si, sin_b, cos_b)
     units = {"t_roll": "s", "x_roll": "m", "v_roll": "m/s", "omega_roll": "rad/s",
              "path_roll": "m"}

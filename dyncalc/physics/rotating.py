@@ -19,8 +19,10 @@ from fractions import Fraction
 
 from ..errors import PhysicsError
 from ..units import Q_
+from ..units import ACCELERATION, ANGULAR_RATE, LENGTH, MASS, STIFFNESS, VELOCITY
+from .face import check_units, magnitude
 from .numerics import PI_LO, sqrt_ratio
-from .oscillators import _si
+
 from .outcome import Outcome, periodic
 
 __all__ = ["pendulum_accelerating_support", "pendulum_on_rotating_disk",
@@ -43,6 +45,7 @@ LARGE_AMPLIFICATION = 1e6
 _PI2 = (Fraction(math.pi) + Fraction(PI_LO)) ** 2
 
 
+@check_units(l=LENGTH, a0=ACCELERATION, g=ACCELERATION)
 def pendulum_accelerating_support(l, a0, g) -> Outcome:
     """A simple pendulum whose support moves horizontally with constant acceleration ``a0``.
 
@@ -85,7 +88,7 @@ def pendulum_accelerating_support(l, a0, g) -> Outcome:
     >>> round(out.values["omega"].magnitude ** 2 / 9.81, 15)  # sqrt(2)
     1.414213562373095
     """
-    l_, a_, g_ = _si(l, "m"), _si(a0, "m/s**2"), _si(g, "m/s**2")
+    l_, a_, g_ = magnitude(l, "m"), magnitude(a0, "m/s**2"), magnitude(g, "m/s**2")
     phi0 = 0.0 - math.atan2(a_, g_)  # 0.0 - ... : no negative zero for a0 = 0
     values = periodic(sqrt_ratio(math.hypot(g_, a_), l_))
     values["phi_0"] = Q_(phi0, "rad")
@@ -94,6 +97,7 @@ def pendulum_accelerating_support(l, a0, g) -> Outcome:
                                 "constant support acceleration"])
 
 
+@check_units(r=LENGTH, l=LENGTH, Omega=ANGULAR_RATE)
 def pendulum_on_rotating_disk(r, l, Omega) -> Outcome:
     """A pendulum pivoted on a disk spinning at ``Omega`` about a vertical axis, swinging in
     the horizontal plane (weight neglected): the centrifugal field holds it radially outward.
@@ -123,7 +127,7 @@ def pendulum_on_rotating_disk(r, l, Omega) -> Outcome:
     >>> out.values["omega"].magnitude  # 2 Omega
     6.0
     """
-    r_, l_, spin = _si(r, "m"), _si(l, "m"), abs(_si(Omega, "rad/s"))
+    r_, l_, spin = magnitude(r, "m"), magnitude(l, "m"), abs(magnitude(Omega, "rad/s"))
     if spin == 0.0:
         raise PhysicsError("Omega must not be zero: a pendulum on a disk at rest has no "
                            "restoring force in the horizontal plane")
@@ -132,6 +136,7 @@ def pendulum_on_rotating_disk(r, l, Omega) -> Outcome:
                                 "neglected, constant spin"])
 
 
+@check_units(r=LENGTH, Omega=ANGULAR_RATE, g=ACCELERATION)
 def bead_on_rotating_ring(r, Omega, g) -> Outcome:
     """A bead sliding without friction on a circular ring of radius ``r`` that spins at
     ``Omega`` about its vertical diameter; ``theta`` is measured from the bottom.
@@ -183,7 +188,7 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
     >>> round(out.values["omega"].magnitude, 12)  # 10 sqrt(1 - 0.4905^2)
     8.714411913606
     """
-    r_, spin, g_ = _si(r, "m"), abs(_si(Omega, "rad/s")), _si(g, "m/s**2")
+    r_, spin, g_ = magnitude(r, "m"), abs(magnitude(Omega, "rad/s")), magnitude(g, "m/s**2")
     critical = sqrt_ratio(g_, r_)
     pull = Fraction(r_) * Fraction(spin) ** 2   # r Omega^2, exact
     excess = pull - Fraction(g_)                # r Omega^2 - g, exact; its sign is the regime
@@ -221,6 +226,7 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
                    exact_zeros=set() if excess > 0 else {"theta_eq"})
 
 
+@check_units(k=STIFFNESS, m=MASS, L=LENGTH, U0=LENGTH, v0=VELOCITY)
 def quarter_car(k, m, L, U0, v0) -> Outcome:
     """A quarter-car: body mass ``m`` on a suspension spring ``k`` whose lower end follows a
     sinusoidal road ``u = U0 cos(2 pi x / L)`` at speed ``v0`` (undamped).
@@ -277,8 +283,8 @@ def quarter_car(k, m, L, U0, v0) -> Outcome:
     >>> round(out.values["v_crit"].magnitude, 12)  # 10 * 10 / (2 pi)
     15.91549430919
     """
-    k_, m_, L_, U_, v_ = (_si(k, "N/m"), _si(m, "kg"), _si(L, "m"), _si(U0, "m"),
-                          _si(v0, "m/s"))
+    k_, m_, L_ = magnitude(k, "N/m"), magnitude(m, "kg"), magnitude(L, "m")
+    U_, v_ = magnitude(U0, "m"), magnitude(v0, "m/s")
     omega = sqrt_ratio(k_, m_)
     v_crit = L_ * omega / (2.0 * math.pi)
     forcing = 2.0 * math.pi * v_ / L_

@@ -13,6 +13,8 @@ from __future__ import annotations
 import math
 
 from ..units import Q_
+from ..units import AREA, FORCE, LENGTH, MODULUS, RIGIDITY, SECOND_MOMENT, TORSIONAL_RIGIDITY
+from .face import check_units, magnitude
 from .numerics import monomial, parallel_sum, series_sum
 
 __all__ = [
@@ -21,8 +23,6 @@ __all__ = [
 ]
 
 
-def _si(quantity, unit: str) -> float:
-    return float(quantity.to(unit).magnitude)
 
 
 def _common_unit(stiffnesses):
@@ -91,12 +91,13 @@ def _rigidity(name: str, unit: str, product, factors) -> list[tuple[float, int]]
     """The factors of a rigidity given either as the product (``EI``) or as its two factors
     (``E`` and ``I``), so that ``E * I`` is never formed where it could overflow."""
     if product is not None:
-        return [(_si(product, unit), 1)]
+        return [(magnitude(product, unit), 1)]
     if any(f is None for f, _u in factors):
         raise TypeError(f"give {name} or both of its factors")
-    return [(_si(f, u), 1) for f, u in factors]
+    return [(magnitude(f, u), 1) for f, u in factors]
 
 
+@check_units(l=LENGTH, EI=RIGIDITY, E=MODULUS, I=SECOND_MOMENT)
 def beam_stiffness(c, l, *, EI=None, E=None, I=None):  # noqa: E741 (the textbook's symbol)
     """Stiffness of a beam at its load point from a beam table.
 
@@ -129,9 +130,10 @@ def beam_stiffness(c, l, *, EI=None, E=None, I=None):  # noqa: E741 (the textboo
     <Quantity(20000.0, 'newton / meter')>
     """
     factors = _rigidity("EI", "N*m**2", EI, [(E, "Pa"), (I, "m**4")])
-    return Q_(monomial(float(c), factors + [(_si(l, "m"), -3)]), "N/m")
+    return Q_(monomial(float(c), factors + [(magnitude(l, "m"), -3)]), "N/m")
 
 
+@check_units(l=LENGTH, EI=RIGIDITY, E=MODULUS, I=SECOND_MOMENT)
 def cantilever_stiffness(l, *, EI=None, E=None, I=None):  # noqa: E741
     """Tip stiffness of a cantilever under a tip load: ``3 EI / l^3`` (see :func:`beam_stiffness`).
 
@@ -141,6 +143,7 @@ def cantilever_stiffness(l, *, EI=None, E=None, I=None):  # noqa: E741
     return beam_stiffness(3.0, l, EI=EI, E=E, I=I)
 
 
+@check_units(l=LENGTH, EI=RIGIDITY, E=MODULUS, I=SECOND_MOMENT)
 def midspan_stiffness(l, *, EI=None, E=None, I=None):  # noqa: E741
     """Midspan stiffness of a simply supported beam under a central load: ``48 EI / l^3``.
 
@@ -152,6 +155,7 @@ def midspan_stiffness(l, *, EI=None, E=None, I=None):  # noqa: E741
     return beam_stiffness(48.0, l, EI=EI, E=E, I=I)
 
 
+@check_units(l=LENGTH, EA=FORCE, E=MODULUS, A=AREA)
 def axial_stiffness(l, *, EA=None, E=None, A=None):
     """Axial stiffness of a bar.
 
@@ -170,9 +174,10 @@ def axial_stiffness(l, *, EA=None, E=None, A=None):
     <Quantity(10000000.0, 'newton / meter')>
     """
     factors = _rigidity("EA", "N", EA, [(E, "Pa"), (A, "m**2")])
-    return Q_(monomial(1.0, factors + [(_si(l, "m"), -1)]), "N/m")
+    return Q_(monomial(1.0, factors + [(magnitude(l, "m"), -1)]), "N/m")
 
 
+@check_units(l=LENGTH, GJ_t=TORSIONAL_RIGIDITY, G=MODULUS, J_t=SECOND_MOMENT)
 def torsion_bar_stiffness(l, *, GJ_t=None, G=None, J_t=None):
     """Torsional stiffness of a bar.
 
@@ -196,9 +201,10 @@ def torsion_bar_stiffness(l, *, GJ_t=None, G=None, J_t=None):
     <Quantity(1600.0, 'newton * meter / radian')>
     """
     factors = _rigidity("GJ_t", "N*m**2", GJ_t, [(G, "Pa"), (J_t, "m**4")])
-    return Q_(monomial(1.0, factors + [(_si(l, "m"), -1)]), "N*m/rad")
+    return Q_(monomial(1.0, factors + [(magnitude(l, "m"), -1)]), "N*m/rad")
 
 
+@check_units(G=MODULUS, d=LENGTH, D=LENGTH)
 def coil_spring_stiffness(G, d, D, n):
     """Stiffness of a helical coil spring.
 
@@ -222,5 +228,6 @@ def coil_spring_stiffness(G, d, D, n):
     >>> coil_spring_stiffness(Q_(80, "GPa"), Q_(2, "mm"), Q_(20, "mm"), 10)
     <Quantity(2000.0, 'newton / meter')>
     """
-    factors = [(_si(G, "Pa"), 1), (_si(d, "m"), 4), (_si(D, "m"), -3), (float(n), -1)]
+    factors = [(magnitude(G, "Pa"), 1), (magnitude(d, "m"), 4), (magnitude(D, "m"), -3),
+               (float(n), -1)]
     return Q_(monomial(0.125, factors), "N/m")

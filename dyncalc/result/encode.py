@@ -12,7 +12,8 @@ from .entries import Entry, Result
 if TYPE_CHECKING:
     from .checks import Check
 
-__all__ = ["shown", "explain_format", "to_json", "json_data", "bare_value", "full_number", "batch_cell"]
+__all__ = ["shown", "explain_format", "to_json", "json_data", "bare_value", "full_number",
+           "batch_cell"]
 
 
 def shown(entry: Entry, units: dict[str, str]):

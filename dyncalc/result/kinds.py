@@ -7,15 +7,12 @@ from __future__ import annotations
 
 import re
 
-from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA, LENGTH, TIME,
-                     VELOCITY, Dim)
+from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DECAY_RATE, DIMENSIONLESS, INERTIA,
+                     LENGTH, LINEAR_DRAG, TIME, VELOCITY, Dim)
 from ..records import Frozen
 
 __all__ = ["ResultKind", "result_kind", "DECAY_RATE", "LINEAR_DRAG"]
 
-DECAY_RATE = Dim("decay rate", "1/[time]", "1/[time]", "1/s")
-LINEAR_DRAG = Dim("drag per unit length", "[force]*[time]/[length]^2",
-                  "[force]*[time]/[length]**2", "N*s/m^2")
 
 
 class ResultKind(Frozen):

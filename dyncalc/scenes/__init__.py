@@ -71,8 +71,8 @@ class Scene(Frozen):
     """One set-up: what it is, what it needs, what it computes and where it comes from.
 
     ``compute`` is the physics function itself (its module loads numpy, pint and scipy only
-    when it computes, through :mod:`dyncalc.lazy` and imports inside functions); ``equation`` the equation of
-    motion, ``formula`` the closed form (or how it is solved), ``reference`` the textbook
+    when it computes, through :mod:`dyncalc.lazy` and imports inside functions); ``equation``
+    the equation of motion, ``formula`` the closed form (or how it is solved), ``reference`` the textbook
     example (``"E5.12"``), ``example`` a runnable command line and ``example_result`` the value
     text it gives per result; ``one_of`` holds groups of which exactly one must be given,
     ``methods`` the methods besides ``auto`` (empty: closed form only); ``accepts_zeta``: whether

@@ -10,11 +10,10 @@ from __future__ import annotations
 import math
 
 from ..physics.damping import frame_brace_damper, pendulum_spring_dashpot, rod_in_fluid
-from ..units import ACCELERATION, DAMPING, LENGTH, MASS, STIFFNESS
+from ..units import ACCELERATION, DAMPING, LENGTH, LINEAR_DRAG, MASS, STIFFNESS
 from ..result.explain import Formula
 from . import Param, Scene, register
 from .basic import gravity
-from ..result.kinds import LINEAR_DRAG
 
 
 def small_damping_error(values) -> str | None:

@@ -9,7 +9,8 @@ from .registry import registry
 __all__ = [
     "Dim", "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "AREA",
     "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
-    "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS",
+    "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS", "DECAY_RATE",
+    "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY",
 ]
 
 # --------------------------------------------------------------------------------------------
@@ -57,6 +58,12 @@ ANGULAR_ACCELERATION = Dim("angular acceleration", "[angle]/[time]^2", "1/[time]
                            "rad/s^2", "angular-rate")
 CYCLE_RATE = Dim("frequency", "[cycles]/[time]", "1/[time]", "Hz", "cycle-rate")
 DIMENSIONLESS = Dim("pure number", "dimensionless", "", "", "dimensionless")
+DECAY_RATE = Dim("decay rate", "1/[time]", "1/[time]", "1/s")
+LINEAR_DRAG = Dim("drag per unit length", "[force]*[time]/[length]^2",
+                  "[force]*[time]/[length]**2", "N*s/m^2")
+RIGIDITY = Dim("bending stiffness", "[force]*[length]^2", "[force]*[length]**2", "N*m^2")
+TORSIONAL_RIGIDITY = Dim("torsional rigidity", "[force]*[length]^2", "[force]*[length]**2",
+                         "N*m^2")
 
 _TURN_UNITS = {"turn", "revolutions_per_minute", "revolutions_per_second"}
 _CYCLE_ONLY_UNITS = {"hertz"}
