@@ -26,8 +26,6 @@ INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum
 
 def collect_parameters(options: dict[str, str | None], words: tuple[str, ...] | list[str]):
     """Standard options and NAME=QUANTITY words -> (texts by parameter, labels by parameter)."""
-    from ..result.checks import split_assignment
-
     texts: dict[str, str] = {}
     labels: dict[str, str] = {}
     for option, param in STANDARD.items():
@@ -35,6 +33,8 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...] | 
             texts[param] = options[option]
             labels[param] = f"--{option}"
     for word in words:
+        from ..result.checks import split_assignment  # only when words are given (start-up)
+
         name, text = split_assignment(word, "a scene parameter")
         if name in texts:
             raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
@@ -64,12 +64,13 @@ def compute_scene(scene: Scene | str, texts: dict[str, str], *,
                   command: str = "natural-frequency") -> Result:
     """``scene`` computed from the parameter texts: solved for the unknown when a result is
     given as an input (``f=5Hz`` with ``k`` left out or ``k=?``), run forward otherwise."""
-    from ..scenes.inverse import is_inverse, solve
-    from ..scenes.runner import run_scene
+    from ..scenes.runner import is_inverse, run_scene
 
     if isinstance(scene, str):
         scene = get_scene(scene)
     if is_inverse(scene, texts):
+        from ..scenes.inverse import solve  # the solver (and scipy) only for inverse problems
+
         return solve(scene, texts, labels=labels or {}, method=method, rtol=rtol,
                      strict=strict, command=command)
     return run_scene(scene, texts, labels=labels, method=method, rtol=rtol, strict=strict,

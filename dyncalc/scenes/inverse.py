@@ -42,7 +42,7 @@ from ..result.kinds import result_kind
 from .runner import (Prepared, check_constraints, compute_values, is_result_name,
                      make_result, read_inputs, set_parameter, _entry, _parameter_list)
 
-__all__ = ["is_inverse", "solve"]
+__all__ = ["solve"]
 
 #: Positive parameters are searched from 10^LOW to 10^HIGH (in SI), every STEP decades.
 LOW, HIGH, STEP = -300, 300, 5
@@ -52,12 +52,6 @@ FINE = 50
 ANGLE_STEP, FINE_ANGLE = 2, 8
 #: More roots than this: the result hardly depends on the unknown; refused.
 MAX_ROOTS = 8
-
-
-def is_inverse(scene: Scene, texts: dict[str, str]) -> bool:
-    """Whether ``texts`` pose an inverse problem: a result of the scene given as an input
-    (``f=5Hz``), which is not also the name of one of its parameters."""
-    return any(scene.param(name) is None and is_result_name(name) for name in texts)
 
 
 def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method, rtol,

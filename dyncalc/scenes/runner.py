@@ -17,7 +17,7 @@ from ..units import DIMENSIONLESS, parse_quantity, to_si
 from . import Scene, get_scene
 from ..result.kinds import result_kind
 
-__all__ = ["run_scene", "is_result_name", "read_inputs", "compute_values",
+__all__ = ["run_scene", "is_inverse", "is_result_name", "read_inputs", "compute_values",
            "make_result", "DEFAULT_RTOL"]
 
 DEFAULT_RTOL = 1e-9
@@ -130,6 +130,12 @@ def _nudged(scene: Scene, prepared: Prepared, name: str, offset: float) -> Prepa
         quantity = si
     set_parameter(scene, copy, name, si, quantity)
     return copy
+
+
+def is_inverse(scene: Scene, texts: dict[str, str]) -> bool:
+    """Whether ``texts`` pose an inverse problem: a result of the scene given as an input
+    (``f=5Hz``), which is not also the name of one of its parameters."""
+    return any(scene.param(name) is None and is_result_name(name) for name in texts)
 
 
 def is_result_name(name: str) -> bool:
