@@ -99,7 +99,8 @@ def test_a_column_may_mix_units_and_a_cell_overrides_the_header_unit(tmp_path):
 def test_bare_numbers_without_a_header_unit_are_si_and_marked(tmp_path):
     result = run_file(tmp_path, "natural-frequency --json", "k,m\n100,2\n")
     obj = json_lines(result)[0]
-    assert obj["inputs"]["k"] == {"value": 100.0, "unit": "N/m", "assumed_si": True}
+    assert obj["inputs"]["k"] == {"value": 100.0, "unit": "N/m", "text": "100",
+                                  "assumed_si": True}
     assert without_line(obj) == one_off("natural-frequency", "--k", "100", "--m", "2")
 
 
@@ -422,7 +423,8 @@ def test_csv_result_columns_take_the_first_rows_unit(tmp_path):
     assert result.exit_code == 0, result.stderr
     rows = csv_rows(result)
     assert rows[0] == ["k1", "k2", "k_eq [kN/m]"]
-    assert rows[1][2] == value("spring-series", "2 kN/m", "3 kN/m", name="k_eq")
+    assert rows[1][2] == value("spring-series", "2 kN/m", "3 kN/m", "--unit", "k_eq=kN/m",
+                               name="k_eq")
     assert rows[2][2] == value("spring-series", "200 N/m", "300 N/m", "--unit", "k_eq=kN/m",
                                name="k_eq")
 
@@ -526,7 +528,7 @@ def test_a_percent_unit_in_json_lines(tmp_path):
                                                                (("zeta", "%"),))
     assert fast == slow
     first = json.loads(fast[1].splitlines()[0])
-    assert first["inputs"]["zeta"] == {"value": 5.0, "unit": "%"}
+    assert first["inputs"]["zeta"] == {"value": 5.0, "unit": "%", "text": "5 %"}
     assert first["results"]["zeta"]["unit"] == "%"
 
 
