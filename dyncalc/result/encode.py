@@ -16,14 +16,23 @@ from .entries import Entry, Result
 if TYPE_CHECKING:
     from .checks import Check
 
-__all__ = ["SCHEMA", "TOP_KEYS", "shown", "machine", "explain_format", "to_json", "json_data",
-           "bare_value", "full_number", "batch_cell"]
+__all__ = ["SCHEMA", "SCHEMA_FILE", "TOP_KEYS", "json_schema", "shown", "machine",
+           "explain_format", "to_json", "json_data", "bare_value", "full_number", "batch_cell"]
 
 #: The value of the JSON object's ``"schema"`` key.
 SCHEMA = "dyncalc/2"
+#: The JSON Schema (draft 2020-12) of the object, relative to this package (package data).
+SCHEMA_FILE = "schema/dyncalc-2.schema.json"
 #: The JSON object's top-level keys, in order; nothing else is at the top level.
 TOP_KEYS = ("schema", "command", "scene", "model", "method", "inputs", "results", "warnings",
             "extra")
+
+
+def json_schema() -> dict:
+    """The JSON Schema of the ``--json`` object, as shipped inside the installed package."""
+    from importlib.resources import files
+
+    return json.loads(files(__package__).joinpath(SCHEMA_FILE).read_text(encoding="utf-8"))
 
 
 def shown(entry: Entry, units: dict[str, str]):
