@@ -100,7 +100,8 @@ def test_a_column_may_mix_units_and_a_cell_overrides_the_header_unit(tmp_path):
 def test_bare_numbers_without_a_header_unit_are_si_and_marked(tmp_path):
     result = run_file(tmp_path, "natural-frequency --json", "k,m\n100,2\n")
     obj = json_lines(result)[0]
-    assert obj["inputs"]["k"] == {"value": 100.0, "unit": "N/m", "assumed_si": True}
+    assert obj["inputs"]["k"] == {"value": 100.0, "unit": "N/m", "text": "100",
+                                  "assumed_si": True}
     assert without_line(obj) == one_off("natural-frequency", "--k", "100", "--m", "2")
 
 
@@ -177,7 +178,8 @@ def test_springs_typed_in_kn_per_m_give_k_eq_in_n_per_m(tmp_path, command, k_eq)
     lines = json_lines(run_file(tmp_path, f"{command} --json", SPRINGS_KN))
     assert [line["results"]["k_eq"]["unit"] for line in lines] == ["N/m", "N/m"]
     assert [line["results"]["k_eq"]["value"] for line in lines] == [float(k) for k in k_eq]
-    assert lines[1]["inputs"]["k1"] == {"value": 0.5, "unit": "kN/m"}  # inputs as typed
+    assert lines[1]["inputs"]["k1"] == {"value": 0.5, "unit": "kN/m",  # inputs as typed
+                                        "text": "0.5 kN/m"}
 
 
 PENDULUM = "l,a0\n1 m,3 m/s^2\n2 ft,-1 ft/s^2\n"
@@ -610,7 +612,7 @@ def test_a_percent_unit_in_json_lines(tmp_path):
                                                                (("zeta", "%"),))
     assert fast == slow
     first = json.loads(fast[1].splitlines()[0])
-    assert first["inputs"]["zeta"] == {"value": 5.0, "unit": "%"}
+    assert first["inputs"]["zeta"] == {"value": 5.0, "unit": "%", "text": "5 %"}
     assert first["results"]["zeta"]["unit"] == "%"
 
 

@@ -81,11 +81,13 @@ def test_json_shape_and_numbers():
     assert result.exit_code == 0
     data = json.loads(result.stdout)
     assert data == {
-        "command": "spring-series", "scene": None, "model": "series",
+        "schema": "dyncalc/2", "command": "spring-series", "scene": None, "model": "series",
         "method": "closed-form",
-        "inputs": {"k1": {"value": 200.0, "unit": "N/m"}, "k2": {"value": 300.0, "unit": "N/m"}},
+        "inputs": {"k1": {"value": 200.0, "unit": "N/m", "text": "200 N/m"},
+                   "k2": {"value": 300.0, "unit": "N/m", "text": "300 N/m"}},
         "results": {"k_eq": {"value": 120.0, "unit": "N/m"}},
         "warnings": [],
+        "extra": {},
     }
 
 
@@ -112,8 +114,9 @@ def test_json_rigid_network_gives_null_and_a_warning():
 
 def test_json_marks_assumed_si():
     data = json.loads(run("spring-series", "200", "300 N/m", "--json").stdout)
-    assert data["inputs"]["k1"] == {"value": 200.0, "unit": "N/m", "assumed_si": True}
-    assert data["inputs"]["k2"] == {"value": 300.0, "unit": "N/m"}
+    assert data["inputs"]["k1"] == {"value": 200.0, "unit": "N/m", "text": "200",
+                                    "assumed_si": True}
+    assert data["inputs"]["k2"] == {"value": 300.0, "unit": "N/m", "text": "300 N/m"}
 
 
 def test_value_is_full_precision_repr():
@@ -213,7 +216,7 @@ def test_check_in_other_units_and_rtol():
     result = run("spring-series", "200 N/m", "300 N/m", "--check", f"k_eq={answer:.4f} lbf/in",
                  "--rtol", "1e-4", "--json")
     assert result.exit_code == 0
-    check = json.loads(result.stdout)["checks"][0]
+    check = json.loads(result.stdout)["extra"]["checks"][0]
     assert check["unit"] == "lbf/in" and check["pass"] is True
     assert check["expected"] == pytest.approx(answer, rel=1e-14)
     result = run("spring-series", "200 N/m", "300 N/m", "--check", "k_eq=0.68 lbf/in",
@@ -267,8 +270,9 @@ def test_explain_text_and_json():
     assert "  k1 = 3 EI / l^3  (cantilever)" in result.stdout
     assert "  k3 = 5000 N/m" in result.stdout
     data = json.loads(run("spring-series", "1 N/m", "1 N/m", "--explain", "--json").stdout)
-    assert data["explanation"]["formula"] == ["k_eq = 1/(1/k1 + 1/k2)"]
-    assert "explanation" not in json.loads(run("spring-series", "1 N/m", "--json").stdout)
+    assert data["extra"]["explanation"]["formula"] == ["k_eq = 1/(1/k1 + 1/k2)"]
+    assert "explanation" not in json.loads(run("spring-series", "1 N/m", "--json").stdout)[
+        "extra"]
 
 
 def test_strict_units():

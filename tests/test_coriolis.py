@@ -63,7 +63,7 @@ def test_contract_scalar():
     data = run("--omega", "2 rad/s", "--vr", "3 m/s")
     assert data["results"]["a_c"] == {"value": 12.0, "unit": "m/s^2"}
     assert data["command"] == "coriolis" and data["warnings"] == []
-    assert data["inputs"]["omega"] == {"value": 2.0, "unit": "rad/s"}
+    assert data["inputs"]["omega"] == {"value": 2.0, "unit": "rad/s", "text": "2 rad/s"}
 
 
 def test_scalar_form_terms():
@@ -310,8 +310,8 @@ def test_northward_train_at_45_north():
     assert res["F_c"] == pytest.approx([4e5 * 2 * W * v * s45, 0, 0], rel=1e-14)  # east
     assert res["Omega"] == pytest.approx([0, W * s45, W * s45], rel=1e-15)
     assert res["v_r"].tolist() == [0.0, 50.0, 0.0]
-    assert data["directions"] == {"a_c": "west", "F_c": "east"}
-    assert data["frame"] == "east-north-up"
+    assert data["extra"]["directions"] == {"a_c": "west", "F_c": "east"}
+    assert data["extra"]["frame"] == "east-north-up"
 
 
 def test_northward_train_explains_the_directions():
@@ -333,7 +333,7 @@ def test_eastward_car_at_30_north():
     assert res["a_c"]["value"][1] == W * v * 2 * 0.5  # sin 30 deg is exactly 0.5
     assert res["a_c_mag"]["value"] == pytest.approx(2 * W * v, rel=1e-15)
     assert res["coriolis_parameter"]["value"] == W  # 2 Omega sin 30 deg
-    assert data["directions"] == {"a_c": "north and down", "F_c": "south and up"}
+    assert data["extra"]["directions"] == {"a_c": "north and down", "F_c": "south and up"}
     assert res["F_c"]["value"] == pytest.approx(
         [0, -1200 * W * v, 1200 * 2 * W * v * math.cos(math.pi / 6)], rel=1e-14)
 
@@ -367,7 +367,7 @@ def test_poles(latitude, sign):
 
 def test_south_pole_deflects_left():
     data = run("--latitude", "-90deg", "--speed", "10 m/s", "--heading", "90deg")
-    assert data["directions"] == {"a_c": "south", "F_c": "north"}
+    assert data["extra"]["directions"] == {"a_c": "south", "F_c": "north"}
     out = CliRunner().invoke(cli, ["coriolis", "--latitude", "-90deg", "--speed", "10 m/s",
                                    "--heading", "90deg", "--explain"]).stdout
     assert "to the left of the horizontal motion" in out
@@ -387,7 +387,7 @@ def test_falling_body_is_deflected_east():
     data = run("--latitude", "45deg", "--vertical=-10m/s")
     assert data["results"]["a_c"]["value"] == pytest.approx(
         [-20 * W * math.sqrt(0.5), 0, 0], rel=1e-14)
-    assert data["directions"]["F_c"] == "east"
+    assert data["extra"]["directions"]["F_c"] == "east"
 
 
 def test_custom_rotation_rate():
@@ -491,7 +491,7 @@ def test_explain_lists_every_term_and_why_it_vanishes():
                  "a = a_transport + 2 Omega x v_r + a_r = (0, 0, 0) m/s^2, |a| = 0 m/s^2"]:
         assert line in out, line
     json_data = run("--omega", "0,0,2", "--vr", "1,0,0", "--explain")
-    assert json_data["explanation"]["formula"][0].startswith("a = a0 + alpha x r")
+    assert json_data["extra"]["explanation"]["formula"][0].startswith("a = a0 + alpha x r")
 
 
 def test_explain_with_numbers():

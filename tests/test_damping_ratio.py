@@ -289,9 +289,9 @@ def test_coulomb_friction_peaks_are_not_exponential():
     data = run_json("--amplitudes", text)
     systematic = [w for w in data["warnings"] if "bends systematically" in w]
     assert len(systematic) == 1 and "Coulomb" in systematic[0]
-    assert data["fit"]["systematic"] is True
-    assert data["fit"]["delta_end"] > 3 * data["fit"]["delta_start"]
-    assert abs(data["fit"]["curvature_t"]) > t_critical(10 - 3)
+    assert data["extra"]["fit"]["systematic"] is True
+    assert data["extra"]["fit"]["delta_end"] > 3 * data["extra"]["fit"]["delta_start"]
+    assert abs(data["extra"]["fit"]["curvature_t"]) > t_critical(10 - 3)
 
 
 def test_amplitude_dependent_damping_bends_the_other_way():
@@ -422,14 +422,17 @@ def test_coefficients_in_other_units():
     si = run_json("--c", "3 N*s/m", "--k", "400 N/m", "--m", "2 kg")["results"]
     us = run_json("--c", f"{3 / LBF_S_PER_IN!r} lbf*s/in", "--k", f"{400 / LBF_PER_IN!r} lbf/in",
                   "--m", f"{2 / LB!r} lb")["results"]
-    assert us["c"]["unit"] == "lbf*s/in"
+    # JSON gives c and c_c in the canonical N*s/m, whatever unit c was typed in
+    assert us["c"]["unit"] == "N*s/m" and us["c_c"]["unit"] == "N*s/m"
+    assert us["c"]["value"] == pytest.approx(3.0, rel=1e-14)
     for name in ("zeta", "delta", "Q", "omega", "omega_d", "T_d", "xi"):
         assert us[name]["value"] == pytest.approx(si[name]["value"], rel=1e-14)
-    assert us["c_c"]["value"] * LBF_S_PER_IN == pytest.approx(si["c_c"]["value"], rel=1e-14)
+    assert us["c_c"]["value"] == pytest.approx(si["c_c"]["value"], rel=1e-14)
     # --unit converts either way
     again = run_json("--c", "3 N*s/m", "--k", "400 N/m", "--m", "2 kg",
                      "--unit", "c_c=lbf*s/in")["results"]["c_c"]
-    assert again["value"] == pytest.approx(us["c_c"]["value"], rel=1e-14)
+    assert again["unit"] == "lbf*s/in"
+    assert again["value"] * LBF_S_PER_IN == pytest.approx(us["c_c"]["value"], rel=1e-14)
 
 
 def test_omega_in_other_units_and_amplitudes_in_any_unit():
@@ -534,9 +537,10 @@ def test_json_shape_regime_and_method():
     assert data["command"] == "damping-ratio" and data["scene"] is None
     assert data["model"] == "linear" and data["method"] == "log-linear"
     assert data["results"]["regime"] == {"value": "underdamped", "unit": ""}
-    assert data["inputs"]["amplitudes"] == {"value": [12.1, 9.0, 6.8, 5.1, 3.8], "unit": "mV"}
-    assert set(data["fit"]) >= {"peaks", "residual", "delta_se", "r_squared", "x0"}
-    assert data["results"]["residual"]["value"] == data["fit"]["residual"]
+    assert data["inputs"]["amplitudes"] == {"value": [12.1, 9.0, 6.8, 5.1, 3.8], "unit": "mV",
+                                            "text": "12.1, 9.0, 6.8, 5.1, 3.8 mV"}
+    assert set(data["extra"]["fit"]) >= {"peaks", "residual", "delta_se", "r_squared", "x0"}
+    assert data["results"]["residual"]["value"] == data["extra"]["fit"]["residual"]
     for key in ("zeta", "delta", "Q", "omega_d", "T_d", "f_d", "xi", "residual", "delta_se"):
         assert isinstance(data["results"][key]["value"], float)
     assert run_json("--amplitudes", "3,2,1.4", "--method", "nonlinear")["method"] == "nonlinear"
@@ -694,7 +698,7 @@ def test_plot_is_a_real_png(tmp_path, args):
     size, width, height = png_size(target)
     assert size > 5000
     assert (width, height) == (900, 480)
-    assert json.loads(result.stdout)["plot"] == str(target)
+    assert json.loads(result.stdout)["extra"]["plot"] == str(target)
 
 
 def test_plot_without_a_natural_frequency_says_so(tmp_path):

@@ -23,7 +23,7 @@ def check(*args):
     """(exit code, the JSON check objects) of ``dyncalc ARGS --json``."""
     result = invoke(*args, "--json")
     assert result.exit_code in (0, 1), result.stderr
-    return result.exit_code, json.loads(result.stdout)["checks"]
+    return result.exit_code, json.loads(result.stdout)["extra"]["checks"]
 
 
 def human_check_lines(*args):
@@ -249,5 +249,5 @@ def test_nested_network_swapped_throughout():
     result = CliRunner().invoke(cli, ["spring-series", "parallel(100N/m, 200N/m)", "300N/m",
                                       "400N/m", "--check", f"k_eq={swapped!r}N/m", "--json"])
     assert result.exit_code == 1
-    check = json.loads(result.output)["checks"][0]
+    check = json.loads(result.output)["extra"]["checks"][0]
     assert check["diagnosis"] == "series and parallel swapped throughout the network"

@@ -92,7 +92,7 @@ def test_scene_explains_in_every_format(name, fmt):
     result = run(*words, option)
     assert result.exit_code == 0, result.output
     data = json.loads(run(*words, option, "--json").stdout)
-    ex = data["explanation"]
+    ex = data["extra"]["explanation"]
     assert ex["latex"]["formula"] and ex["latex"]["substituted"], name
     # the substituted lines end in the results they compute, to 6 digits
     omega = next(v for k, v in data["results"].items() if k.startswith("omega"))
@@ -123,7 +123,7 @@ def test_command_explains_in_every_format(key, fmt):
     option = "--explain" if fmt == "text" else f"--explain={fmt}"
     result = run(*words, option)
     assert result.exit_code == 0, result.output
-    ex = json.loads(run(*words, option, "--json").stdout)["explanation"]
+    ex = json.loads(run(*words, option, "--json").stdout)["extra"]["explanation"]
     assert set(ex) >= {"formula", "substituted", "assumptions", "reference", "latex",
                        "example", "variance"}
     assert ex["latex"]["formula"], key
@@ -140,7 +140,7 @@ def test_command_explains_in_every_format(key, fmt):
 def test_mass_spring_substitutes_the_values():
     data = json.loads(run("natural-frequency", "--k", "100N/m", "--m", "2kg", "--explain",
                           "--json").stdout)
-    ex = data["explanation"]
+    ex = data["extra"]["explanation"]
     assert ex["substituted"][0] == "omega = sqrt((100 N/m) / (2 kg)) = 7.07107 rad/s"
     assert ex["latex"]["formula"][0] == r"\omega = \sqrt{\frac{k}{m}}"
     assert ex["latex"]["substituted"][0] == (
@@ -155,7 +155,7 @@ def test_mass_spring_substitutes_the_values():
 def test_assumption_sizes():
     def assumptions(*words):
         return json.loads(run("natural-frequency", *words, "--explain", "--json")
-                          .stdout)["explanation"]["assumptions"]
+                          .stdout)["extra"]["explanation"]["assumptions"]
 
     found = assumptions("--length", "1m", "--amplitude", "30deg")
     assert any("1.71% short at an amplitude of 30 deg" in a for a in found)
@@ -240,10 +240,10 @@ def _fragments():
     out = []
     for name in scene_names():
         ex = json.loads(run(*example_words(name), "--explain=latex", "--json").stdout)
-        out.append(ex["explanation"]["rendered"])
+        out.append(ex["extra"]["explanation"]["rendered"])
     for words in COMMANDS.values():
         ex = json.loads(run(*shlex.split(words), "--explain=latex", "--json").stdout)
-        out.append(ex["explanation"]["rendered"])
+        out.append(ex["extra"]["explanation"]["rendered"])
     return out
 
 

@@ -34,8 +34,8 @@ def test_contract_smoke_mass_spring():
     data = results("--k", "100 N/m", "--m", "2 kg")
     assert data["scene"] == "mass-spring" and data["model"] == "linear"
     assert data["method"] == "closed-form"
-    assert data["inputs"] == {"k": {"value": 100.0, "unit": "N/m"},
-                              "m": {"value": 2.0, "unit": "kg"}}
+    assert data["inputs"] == {"k": {"value": 100.0, "unit": "N/m", "text": "100 N/m"},
+                              "m": {"value": 2.0, "unit": "kg", "text": "2 kg"}}
     omega = math.sqrt(50)
     assert data["results"]["omega"] == {"value": omega, "unit": "rad/s"}
     assert data["results"]["f"]["unit"] == "Hz" and data["results"]["T"]["unit"] == "s"
@@ -47,7 +47,7 @@ def test_the_units_they_typed():
     """2 kN/m and 4 kg: omega = sqrt(500) rad/s, f in Hz, T in s."""
     data = results("--k", "2 kN/m", "--m", "4kg")
     assert data["results"]["omega"]["value"] == pytest.approx(math.sqrt(500), rel=1e-16)
-    assert data["inputs"]["k"] == {"value": 2.0, "unit": "kN/m"}
+    assert data["inputs"]["k"] == {"value": 2.0, "unit": "kN/m", "text": "2 kN/m"}
 
 
 @settings(max_examples=60, deadline=None)
@@ -92,7 +92,7 @@ def test_length_chooses_pendulum():
     assert data["scene"] == "pendulum"
     assert data["results"]["T"]["value"] == pytest.approx(TWO_PI / math.sqrt(9.80665),
                                                           rel=1e-15)
-    assert data["inputs"]["g"] == {"value": 9.80665, "unit": "m/s^2"}
+    assert data["inputs"]["g"] == {"value": 9.80665, "unit": "m/s^2", "text": "9.80665 m/s^2"}
 
 
 def test_g_option():
@@ -190,7 +190,7 @@ def test_explain_shows_formula_values_and_reference():
 
 def test_explain_pendulum_says_how_wrong_small_angle_is():
     data = results("--length", "1m", "--amplitude", "30deg", "--explain")
-    assumptions = data["explanation"]["assumptions"]
+    assumptions = data["extra"]["explanation"]["assumptions"]
     assert any("the small-angle period is 1.71% short at an amplitude of 30 deg" in a
                for a in assumptions), assumptions
 

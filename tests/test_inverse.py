@@ -248,10 +248,10 @@ def test_readme_example_on_the_command_line():
     assert data["results"]["omega"]["value"] == pytest.approx(TWO_PI * 5, rel=1e-12)
     assert data["results"]["f"]["value"] == pytest.approx(5.0, rel=1e-12)
     assert data["results"]["T"]["value"] == pytest.approx(0.2, rel=1e-12)
-    assert data["inputs"] == {"m": {"value": 2.0, "unit": "kg"},
-                              "f": {"value": 5.0, "unit": "Hz"}}
-    assert data["inverse"] == {"unknown": "k", "method": "closed-form",
-                               "detail": "f is proportional to k^(1/2): inverted exactly"}
+    assert data["inputs"] == {"m": {"value": 2.0, "unit": "kg", "text": "2kg"},
+                              "f": {"value": 5.0, "unit": "Hz", "text": "5Hz"}}
+    assert data["extra"]["inverse"] == {"unknown": "k", "method": "closed-form",
+                                        "detail": "f is proportional to k^(1/2): inverted exactly"}
     human = invoke("natural-frequency", "f=5Hz", "m=2kg")
     assert human.exit_code == 0
     assert human.stdout.splitlines()[0].endswith("solved for k: closed-form")
@@ -320,7 +320,7 @@ def test_mass_spring_zeta_from_damped_frequency():
     """omega_d = omega sqrt(1 - zeta^2): zeta = sqrt(1 - (omega_d/omega)^2) (zeta optional)."""
     data = json_of("natural-frequency", "--k", "100N/m", "--m", "2kg", "--zeta", "?",
                    "omega_d=7rad/s")
-    assert data["inverse"]["unknown"] == "zeta"
+    assert data["extra"]["inverse"]["unknown"] == "zeta"
     assert data["results"]["zeta"]["value"] == pytest.approx(math.sqrt(1 - 49 / 50),
                                                              rel=ROOT_TOL)
     assert data["results"]["omega_d"]["value"] == pytest.approx(7.0, rel=ROOT_TOL)
@@ -344,9 +344,9 @@ def test_bead_two_spins_give_one_frequency():
     assert data["warnings"] == [f"4 values of Omega give omega = 2 rad/s: {-high:.6g} rad/s, "
                                 f"{-low:.6g} rad/s, {low:.6g} rad/s, {high:.6g} rad/s; each is "
                                 "a result"]
-    assert data["inverse"] == {"unknown": "Omega", "method": "bracketed-root",
-                               "detail": "a sign change on a grid of Omega, refined by "
-                                         "Brent's method"}
+    assert data["extra"]["inverse"] == {"unknown": "Omega", "method": "bracketed-root",
+                                        "detail": "a sign change on a grid of Omega, refined "
+                                                  "by Brent's method"}
 
 
 def test_bead_spinning_the_other_way_is_found_too():
@@ -397,7 +397,7 @@ def test_damping_ratio_scene_solves_the_damper():
                    "zeta=0.2")
     beta_crit = 1.5 / 0.8 * math.sqrt(6 * G0 / 0.8)
     assert data["command"] == "damping-ratio"
-    assert data["inverse"]["unknown"] == "beta"
+    assert data["extra"]["inverse"]["unknown"] == "beta"
     assert data["results"]["beta"]["value"] == pytest.approx(0.2 * beta_crit, rel=CLOSED_TOL)
     assert data["results"]["zeta"]["value"] == pytest.approx(0.2, rel=CLOSED_TOL)
 

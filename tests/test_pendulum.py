@@ -195,7 +195,7 @@ def test_cli_small_angle_method_at_30_degrees():
     assert data["results"]["omega_0"] == data["results"]["omega"]
     with mpmath.workdps(40):
         error = 1 - mpmath.agm(1, mpmath.cos(mpmath.pi / 12))  # (T - T0) / T
-    assert data["error_estimate"] == pytest.approx(float(error), rel=1e-12)
+    assert data["extra"]["error_estimate"] == pytest.approx(float(error), rel=1e-12)
     assert data["warnings"] == ["the small-angle model misses the requested tolerance 1e-09: "
                                 "its period is 1.71% short at 30 deg; use --method elliptic"]
 
@@ -216,7 +216,7 @@ def test_cli_auto_picks_the_cheapest_model_meeting_rtol(amplitude, rtol, method)
 
 def test_cli_elliptic_reports_omega_0():
     data = run_json("--length", "1m", "--amplitude", "90deg")
-    assert data["method"] == "elliptic" and data["error_estimate"] == ELLIPTIC_ERROR
+    assert data["method"] == "elliptic" and data["extra"]["error_estimate"] == ELLIPTIC_ERROR
     omega_0 = data["results"]["omega_0"]["value"]
     assert omega_0 == pytest.approx(math.sqrt(G), rel=1e-15)
     with mpmath.workdps(40):
@@ -299,7 +299,7 @@ def test_series_meets_rtol_and_its_bound_holds(degrees, rtol):
     assert data["method"] == "series" and data["model"] == "nonlinear"
     assert data["warnings"] == []
     error = true_relative_error(data["results"]["T"]["value"], degrees)
-    assert error <= data["error_estimate"] <= float(rtol)
+    assert error <= data["extra"]["error_estimate"] <= float(rtol)
     assert data["results"]["omega_0"]["value"] == pytest.approx(math.sqrt(G), rel=1e-15)
 
 
@@ -309,7 +309,7 @@ def test_series_terms_grow_with_the_amplitude():
     def terms(amplitude, rtol):
         data = run_json("--length", "1m", "--amplitude", amplitude, "--method", "series",
                         "--rtol", rtol, "--explain")
-        text = " ".join(data["explanation"]["assumptions"])
+        text = " ".join(data["extra"]["explanation"]["assumptions"])
         return int(text.split(" terms; tail bound")[0].rsplit("(", 1)[1])
     assert terms("1deg", "1e-3") == 1                 # T0 alone: theta^2/16 = 2e-5
     assert terms("1deg", "1e-6") == 2
@@ -320,7 +320,7 @@ def test_series_terms_grow_with_the_amplitude():
 def test_series_near_the_top_misses_rtol_and_says_so():
     data = run_json("--length", "1m", "--amplitude", "179.9deg", "--method", "series")
     error = true_relative_error(data["results"]["T"]["value"], 179.9)
-    assert data["error_estimate"] == pytest.approx(error, rel=1e-6)
+    assert data["extra"]["error_estimate"] == pytest.approx(error, rel=1e-6)
     assert data["warnings"] == [
         "the series misses the requested tolerance 1e-09: after 1001 terms its period is "
         "still 39% short at 179.9 deg (its terms fall like sin^(2n)(theta0/2)); use --method "
@@ -333,7 +333,8 @@ def test_series_below_the_rounding_floor_warns():
     assert len(data["warnings"]) == 1
     assert data["warnings"][0].startswith("the series misses the requested tolerance 1e-17: "
                                           "the rounding of its ")
-    assert true_relative_error(data["results"]["T"]["value"], 60.0) <= data["error_estimate"]
+    assert (true_relative_error(data["results"]["T"]["value"], 60.0)
+            <= data["extra"]["error_estimate"])
 
 
 def test_elliptic_below_float64_accuracy_warns():
@@ -358,7 +359,7 @@ def test_ode_reaches_rtol_against_mpmath(amplitude, degrees, rtol):
     assert data["warnings"] == []
     error = true_relative_error(data["results"]["T"]["value"], degrees)
     assert error <= float(rtol)
-    assert error == pytest.approx(data["error_estimate"], abs=2e-15)
+    assert error == pytest.approx(data["extra"]["error_estimate"], abs=2e-15)
 
 
 def test_ode_in_radians_a_hair_below_pi():
@@ -396,7 +397,7 @@ def test_auto_never_takes_series_or_ode(amplitude, rtol):
     (it decides on the exact small-angle error), so auto is small-angle or elliptic."""
     data = run_json("--length", "1m", "--amplitude", amplitude, "--rtol", rtol)
     assert data["method"] in ("small-angle", "elliptic")
-    assert data["error_estimate"] <= float(rtol) and data["warnings"] == []
+    assert data["extra"]["error_estimate"] <= float(rtol) and data["warnings"] == []
 
 
 @pytest.mark.parametrize("method", ["series", "ode"])

@@ -49,7 +49,7 @@ def test_e345_bowling_ball():
     v0, mu = 5.0, 0.3
     got = data("--v0", "5 m/s", "--mu", "0.3")
     assert got["command"] == "rolling-onset" and got["method"] == "closed-form"
-    assert got["inputs"]["v0"] == {"value": 5.0, "unit": "m/s"}
+    assert got["inputs"]["v0"] == {"value": 5.0, "unit": "m/s", "text": "5 m/s"}
     res = {n: v["value"] for n, v in got["results"].items()}
     assert list(res) == ["t_roll", "x_roll", "v_roll"]
     assert res["t_roll"] == pytest.approx(2 * v0 / (7 * mu * G), rel=1e-15)
@@ -273,9 +273,10 @@ def test_ode_agrees_with_the_closed_form(body):
             closed = results(*args)
             ode = data(*args, "--method", "ode")
             assert ode["method"] == "ode", (body, spin, beta, ode["warnings"])
-            assert ode["error_estimate"] <= rtol
-            assert set(ode["timing"]) == {"closed_form_s", "ode_s"}
-            assert ode["timing"]["ode_s"] > 0 and ode["timing"]["closed_form_s"] > 0
+            assert ode["extra"]["error_estimate"] <= rtol
+            assert set(ode["extra"]["timing"]) == {"closed_form_s", "ode_s"}
+            timing = ode["extra"]["timing"]
+            assert timing["ode_s"] > 0 and timing["closed_form_s"] > 0
             speed = max(4.0, abs(0.1 * (spin or 0.0)))
             for name in ("t_roll", "x_roll", "v_roll"):
                 scale = {"t_roll": abs(closed["t_roll"]), "v_roll": speed,

@@ -39,7 +39,7 @@ def mp_precision():
 def explained(*args):
     """(results, inputs, variance shares) of ``dyncalc ARGS --json --explain``."""
     data = json_of(*args, "--explain")
-    return data["results"], data["inputs"], data["explanation"]["variance"]
+    return data["results"], data["inputs"], data["extra"]["explanation"]["variance"]
 
 
 def assert_shares(shares, expected_terms):
@@ -67,8 +67,10 @@ def test_mass_spring_hand_propagation():
                                           "--m", "2.0+/-0.08 kg")
     omega = math.sqrt(50)
     rel_u = 0.5 * math.hypot(0.03, 0.04)
-    assert inputs == {"k": {"value": 100.0, "uncertainty": 3.0, "unit": "N/m"},
-                      "m": {"value": 2.0, "uncertainty": 0.08, "unit": "kg"}}
+    assert inputs == {"k": {"value": 100.0, "uncertainty": 3.0, "unit": "N/m",
+                            "text": "(100 ± 3) N/m"},
+                      "m": {"value": 2.0, "uncertainty": 0.08, "unit": "kg",
+                            "text": "2.0+/-0.08 kg"}}
     assert results["omega"]["value"] == pytest.approx(omega, rel=1e-15)
     assert results["omega"]["uncertainty"] == pytest.approx(omega * rel_u, rel=DIFF_TOL)
     assert results["f"]["uncertainty"] == pytest.approx(omega * rel_u / TWO_PI, rel=DIFF_TOL)
@@ -117,7 +119,8 @@ def test_spring_series_hand_propagation():
     assert results["k_eq"]["value"] == pytest.approx(120.0, rel=1e-15)
     assert results["k_eq"]["uncertainty"] == pytest.approx(math.sqrt(sum(terms.values())),
                                                            rel=DIFF_TOL)
-    assert inputs["k2"] == {"value": 300.0, "uncertainty": 20.0, "unit": "N/m"}
+    assert inputs["k2"] == {"value": 300.0, "uncertainty": 20.0, "unit": "N/m",
+                            "text": "300+/-20 N/m"}
     assert_shares(variance["k_eq"], terms)
 
 
@@ -183,10 +186,15 @@ def test_coriolis_scalar():
 
 
 def test_angle_result_uncertainty_in_degrees():
-    """phi_0 = -atan(a0/g): dphi_0/da0 = -g/(g^2 + a0^2); shown in deg like phi_0 itself."""
-    data = json_of("natural-frequency", "--scene", "pendulum-accelerating-support", "l=1m",
-                   "a0=-3 ± 0.1 m/s^2")
-    phi = data["results"]["phi_0"]
+    """phi_0 = -atan(a0/g): dphi_0/da0 = -g/(g^2 + a0^2); the uncertainty is in phi_0's own
+    unit: the canonical rad, or deg with --unit phi_0=deg."""
+    words = ("natural-frequency", "--scene", "pendulum-accelerating-support", "l=1m",
+             "a0=-3 ± 0.1 m/s^2")
+    phi = json_of(*words)["results"]["phi_0"]
+    assert phi["unit"] == "rad"
+    assert phi["value"] == pytest.approx(math.atan(3 / G0), rel=1e-14)
+    assert phi["uncertainty"] == pytest.approx(G0 / (G0 ** 2 + 9) * 0.1, rel=DIFF_TOL)
+    phi = json_of(*words, "--unit", "phi_0=deg")["results"]["phi_0"]
     assert phi["unit"] == "deg"
     assert phi["value"] == pytest.approx(math.degrees(math.atan(3 / G0)), rel=1e-14)
     assert phi["uncertainty"] == pytest.approx(math.degrees(G0 / (G0 ** 2 + 9) * 0.1),
@@ -273,7 +281,8 @@ def test_large_amplitude_pendulum_against_mpmath_and_monte_carlo():
     itself with normal amplitudes (statistical, 5 %)."""
     data = json_of("natural-frequency", "--length", "1m", "--amplitude", "120 ± 2 deg")
     u_T = data["results"]["T"]["uncertainty"]
-    assert data["inputs"]["amplitude"] == {"value": 120.0, "uncertainty": 2.0, "unit": "deg"}
+    assert data["inputs"]["amplitude"] == {"value": 120.0, "uncertainty": 2.0, "unit": "deg",
+                                           "text": "120 ± 2 deg"}
 
     omega0 = mpmath.sqrt(mpmath.mpf(G0))
     slope = mpmath.diff(lambda t: 4 * mpmath.ellipk(mpmath.sin(t / 2) ** 2) / omega0,
@@ -313,13 +322,15 @@ def test_mass_in_grams_or_kilograms(mass):
 
 def test_mixed_units_input_shown_in_the_value_unit():
     data = json_of("natural-frequency", "--k", "100 N/m", "--m", "2 kg ± 100 g")
-    assert data["inputs"]["m"] == {"value": 2.0, "uncertainty": 0.1, "unit": "kg"}
+    assert data["inputs"]["m"] == {"value": 2.0, "uncertainty": 0.1, "unit": "kg",
+                                   "text": "2 kg ± 100 g"}
 
 
 def test_zero_uncertainty_gives_zero():
     results, inputs, variance = explained("natural-frequency", "--k", "(100 ± 0) N/m",
                                           "--m", "2 kg")
-    assert inputs["k"] == {"value": 100.0, "uncertainty": 0.0, "unit": "N/m"}
+    assert inputs["k"] == {"value": 100.0, "uncertainty": 0.0, "unit": "N/m",
+                           "text": "(100 ± 0) N/m"}
     for name in ("omega", "f", "T"):
         assert results[name]["uncertainty"] == 0.0
     assert not any(variance.values())
@@ -382,7 +393,8 @@ def test_inverse_carries_the_uncertainty_of_the_target():
     """k = (2 pi f)^2 m: u(k) = 2 k u(f)/f."""
     data = json_of("natural-frequency", "f=5 ± 0.1 Hz", "m=2kg")
     k = (TWO_PI * 5) ** 2 * 2
-    assert data["inputs"]["f"] == {"value": 5.0, "uncertainty": 0.1, "unit": "Hz"}
+    assert data["inputs"]["f"] == {"value": 5.0, "uncertainty": 0.1, "unit": "Hz",
+                                   "text": "5 ± 0.1 Hz"}
     assert data["results"]["k"]["value"] == pytest.approx(k, rel=1e-12)
     assert data["results"]["k"]["uncertainty"] == pytest.approx(2 * k * 0.1 / 5, rel=DIFF_TOL)
     assert data["results"]["omega"]["uncertainty"] == pytest.approx(TWO_PI * 0.1,

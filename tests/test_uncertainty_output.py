@@ -53,7 +53,8 @@ def test_json_lines_carry_the_uncertainty():
     result = _run(["natural-frequency", "--batch", "-", "--json"], text)
     line = json.loads(result.output.splitlines()[0])
     assert line["line"] == 2
-    assert line["inputs"]["k"] == {"value": 100.0, "uncertainty": 5.0, "unit": "N/m"}
+    assert line["inputs"]["k"] == {"value": 100.0, "uncertainty": 5.0, "unit": "N/m",
+                                   "text": "(100+/-5) N/m"}
     assert math.isclose(line["results"]["omega"]["uncertainty"],
                         math.sqrt(50) / 2 * 0.05, rel_tol=1e-8)
 
@@ -120,4 +121,5 @@ def test_a_percent_on_one_side_of_a_pure_number_is_refused_as_ambiguous():
                              "5% ± 1% or 0.05 ± 0.01\n")
     both = json.loads(_run(["natural-frequency", "--k", "100N/m", "--m", "2kg", "--zeta",
                             "5% ± 1%", "--json"], "").output)
-    assert both["inputs"]["zeta"] == {"value": 5.0, "uncertainty": 1.0, "unit": "%"}
+    assert both["inputs"]["zeta"] == {"value": 5.0, "uncertainty": 1.0, "unit": "%",
+                                      "text": "5% ± 1%"}

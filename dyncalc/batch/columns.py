@@ -68,8 +68,8 @@ def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
             info.units = sample.quantity.units
             info.target = dim.si.replace("^", "**") if dim.si else ""
             info.typed = bool(sample.unit_text)
-            info.unit_json = (json.dumps(sample.unit_text or dim.si)
-                              + (', "assumed_si": true' if sample.assumed_si else ""))
+            info.unit_json = (json.dumps(sample.unit_text or dim.si),
+                              ', "assumed_si": true' if sample.assumed_si else "")
     cache[key] = info
     return info
 
@@ -92,7 +92,7 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
     out.ok = np.zeros(n, dtype=bool)
     out.si = np.zeros(n)
     out.shown = np.zeros(n)
-    out.unit_json = [""] * n
+    out.unit_json = [("", "")] * n  # (unit JSON, assumed_si JSON) of each cell
     if plain is None:
         plain = _plain_floats(cells)
     groups: dict[str, tuple[list[int] | None, np.ndarray, list[str]]] = {}

@@ -10,7 +10,7 @@ from ..errors import InputError
 from ..physics.numerics import sqrt_ratio_array
 from ..physics.outcome import damped_arrays, periodic_arrays
 from .columns import _plain_floats, _read_column
-from .header import Column
+from .header import Column, with_header_unit
 
 #: The natural-frequency scenes the vectorised path computes: scene -> (the two parameters of
 #: omega = sqrt(a / b), the parameters the row must not give (they need another model)).
@@ -42,7 +42,8 @@ def _default_input(p, strict: bool, cache: dict):
         parsed = parse_quantity(p.default, p.dim, label=p.name, strict=strict,
                                 constraint=p.constraint)
         shown = float(parsed.quantity.magnitude) if parsed.unit_text else parsed.si
-        text = json.dumps({p.name: {"value": shown, "unit": parsed.unit_text or p.dim.si}})
+        text = json.dumps({p.name: {"value": shown, "unit": parsed.unit_text or p.dim.si,
+                                    "text": p.default}})
         cache[key] = (parsed.si, text[1:-1])
     return cache[key]
 
@@ -113,11 +114,11 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
                                     plain[p.name] if whole else None)
                 good &= read.ok
                 si[p.name] = read.si
-                inputs.append((p.name, read))
+                inputs.append((p.name, read, column, units[p.name]))
             else:
                 value, text = _default_input(p, spec.strict, cache)
                 si[p.name] = np.full(len(rows), value)
-                inputs.append((p.name, text))
+                inputs.append((p.name, text, None, None))
         if not good.any():
             continue
         with np.errstate(all="ignore"):
@@ -138,23 +139,23 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
         kinds = {name: result_kind(name) for name in values}
         head = texts = None
         if want_json:
-            head = (f'"command": "natural-frequency", "scene": {json.dumps(scene_name)}, '
-                    '"model": "linear", "method": "closed-form"')
+            head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
+                    f'"scene": {json.dumps(scene_name)}, "model": "linear", '
+                    '"method": "closed-form"')
             parts = []
-            for name, read in inputs:
+            for name, read, column, header_unit in inputs:
                 if isinstance(read, str):
                     parts.append([read] * len(keep))
                     continue
-                shown = read.shown if len(keep) == len(read.shown) else read.shown[keep]
-                unit_json = read.unit_json if len(keep) == len(read.shown) \
-                    else [read.unit_json[i] for i in keep.tolist()]
-                prefix = (json.dumps(name) + ': {"value": ').replace("%", "%%")
-                if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
-                    template = prefix + '%r, "unit": ' + unit_json[0].replace("%", "%%") + "}"
-                    parts.append(list(map(template.__mod__, shown.tolist())))
-                else:
-                    parts.append([f"{prefix}{v!r}, \"unit\": {u}}}"
-                                  for v, u in zip(shown.tolist(), unit_json)])
+                every = len(keep) == len(read.shown)
+                shown = read.shown if every else read.shown[keep]
+                unit_json = read.unit_json if every else [read.unit_json[i]
+                                                          for i in keep.tolist()]
+                typed = column if every else [column[i] for i in keep.tolist()]
+                typed = [json.dumps(with_header_unit(c.strip(), header_unit)) for c in typed]
+                prefix = json.dumps(name) + ': {"value": '
+                parts.append([f'{prefix}{v!r}, "unit": {u}, "text": {t}{a}}}'
+                              for v, (u, a), t in zip(shown.tolist(), unit_json, typed)])
             texts = list(map(", ".join, zip(*parts)))
         blocks.append(FastBlock(rows, values, kinds, head, texts))
     return blocks

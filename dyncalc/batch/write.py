@@ -182,7 +182,7 @@ class _Writer:
                          + json.dumps(unit).replace("%", "%%") + "}")
                 parts.append(list(map(entry.__mod__, numbers)))
             template = '{"line": %d, ' + block.head.replace("%", "%%") + \
-                ', "inputs": {%s}, "results": {%s}, "warnings": []}'
+                ', "inputs": {%s}, "results": {%s}, "warnings": [], "extra": {}}'
             made = list(map(template.__mod__, zip(line_numbers, block.inputs,
                                                   map(", ".join, zip(*parts)))))
         else:

@@ -237,12 +237,15 @@ def output_options(command):
 
     decorators = [
         click.option("--json", "as_json", is_flag=True,
-                     help="Print one JSON object (full precision)."),
+                     help="Print one JSON object (schema dyncalc/2, full precision; results "
+                          "in their canonical SI unit)."),
         click.option("--value", metavar="NAME", shell_complete=_complete_result,
-                     help="Print only the number of result NAME (full precision)."),
+                     help="Print only the number of result NAME (full precision, in its "
+                          "canonical SI unit)."),
         click.option("--unit", "units", multiple=True, metavar="NAME=UNIT",
                      shell_complete=_complete_result,
-                     help="Show result NAME in UNIT (repeatable), e.g. --unit k_eq=lbf/in."),
+                     help="Show result NAME in UNIT, in every form (repeatable), e.g. "
+                          "--unit k_eq=lbf/in."),
         click.option("--digits", type=click.IntRange(1, MAX_DIGITS), default=6,
                      show_default=True, help="Significant digits in human output."),
         click.option("--check", "checks", multiple=True, metavar="NAME=QUANTITY",

@@ -98,7 +98,7 @@ def _input_entry(name: str, parsed: Parsed, dim: Dim, description: str) -> Entry
     if _is_vector(parsed):
         return Entry(name, np.asarray(parsed.si, dtype=float) + 0.0, dim,
                      unit=parsed.unit_text or dim.si, assumed_si=parsed.assumed_si,
-                     description=description)
+                     description=description, text=parsed.text)
     return entry_from_parsed(name, parsed, dim, description=description)
 
 

@@ -239,7 +239,8 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
             pr = read("ratio", ratio, DIMENSIONLESS, "--ratio", None)
             n_cycles = parse_cycles(cycles if cycles is not None else "1")
             inputs["cycles"] = Entry("cycles", float(n_cycles), DIMENSIONLESS,
-                                     description="whole cycles between the two peaks")
+                                     description="whole cycles between the two peaks",
+                                     text="1" if cycles is None else cycles)
             if pr.si < 1.0:
                 raise InputError(f"--ratio must be at least 1: it is x_i / x_(i+N), the "
                                  f"earlier peak over the later one; got {pr.si:.15g} (for "
@@ -253,7 +254,8 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         else:
             peaks, unit = parse_amplitudes(amplitudes)
             inputs["amplitudes"] = Entry("amplitudes", peaks, None, unit=unit,
-                                         description="successive peaks, one per cycle")
+                                         description="successive peaks, one per cycle",
+                                         text=amplitudes)
             fit = _fit(peaks, fit_method, rtol)
             delta = fit.delta
             extra["fit"] = fit.as_dict()

@@ -115,7 +115,8 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
                              f"{body_name[:40]!r} (or give the shape factor J_C/(m r^2) with "
                              "--kappa)")
         kappa = bodies[body_name]
-        inputs["body"] = Entry("body", body_name, None)
+        inputs["body"] = Entry("body", body_name, None,
+                               text=DEFAULT_BODY if body is None else body)
 
     radius = None
     if "radius" in texts:

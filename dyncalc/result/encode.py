@@ -1,5 +1,9 @@
 """Results -> the machine-readable forms: the JSON object of ``--json`` (and of a batch JSON
-line), the bare number of ``--value``, and a batch CSV cell. No terminal, no physics."""
+line), the bare number of ``--value``, and a batch CSV cell. No terminal, no physics.
+
+The object follows SPEC.md version 2 (``docs/json.md``; its JSON Schema is
+``dyncalc/result/schema/dyncalc-2.schema.json``): the keys of :data:`TOP_KEYS`, results in
+their canonical unit unless ``--unit`` names another, everything else under ``"extra"``."""
 from __future__ import annotations
 
 import json
@@ -12,8 +16,23 @@ from .entries import Entry, Result
 if TYPE_CHECKING:
     from .checks import Check
 
-__all__ = ["shown", "explain_format", "to_json", "json_data", "bare_value", "full_number",
-           "batch_cell"]
+__all__ = ["SCHEMA", "SCHEMA_FILE", "TOP_KEYS", "json_schema", "shown", "machine",
+           "explain_format", "to_json", "json_data", "bare_value", "full_number", "batch_cell"]
+
+#: The value of the JSON object's ``"schema"`` key.
+SCHEMA = "dyncalc/2"
+#: The JSON Schema (draft 2020-12) of the object, relative to this package (package data).
+SCHEMA_FILE = "schema/dyncalc-2.schema.json"
+#: The JSON object's top-level keys, in order; nothing else is at the top level.
+TOP_KEYS = ("schema", "command", "scene", "model", "method", "inputs", "results", "warnings",
+            "extra")
+
+
+def json_schema() -> dict:
+    """The JSON Schema of the ``--json`` object, as shipped inside the installed package."""
+    from importlib.resources import files
+
+    return json.loads(files(__package__).joinpath(SCHEMA_FILE).read_text(encoding="utf-8"))
 
 
 def shown(entry: Entry, units: dict[str, str]):
@@ -21,6 +40,15 @@ def shown(entry: Entry, units: dict[str, str]):
     unit = units.get(entry.name)
     if unit is None:
         return entry.value_in(), entry.unit
+    return entry.value_in(unit), unit
+
+
+def machine(entry: Entry, units: dict[str, str]):
+    """(value, unit) of a result in ``--json`` and ``--value``: in the unit ``--unit NAME=UNIT``
+    names, else in the entry's canonical unit (SPEC.md, "Canonical units")."""
+    unit = units.get(entry.name)
+    if unit is None:
+        unit = entry.canonical_unit
     return entry.value_in(unit), unit
 
 
@@ -33,17 +61,33 @@ def _json_value(value):
     return None if not math.isfinite(value) else value
 
 
-def _json_entries(entries: dict[str, Entry], units: dict[str, str]) -> dict:
+def _json_item(value, sigma, unit: str) -> dict:
+    if sigma is None:
+        return {"value": _json_value(value), "unit": unit}
+    return {"value": _json_value(value), "uncertainty": _json_value(sigma), "unit": unit}
+
+
+def _json_inputs(entries: dict[str, Entry]) -> dict:
+    """Inputs as typed: the value in the unit typed, that unit, and the text itself."""
     out = {}
     for name, entry in entries.items():
-        value, unit = shown(entry, units)
-        item = {"value": _json_value(value), "unit": unit}
-        if entry.uncertainty is not None:
-            item = {"value": item["value"],
-                    "uncertainty": _json_value(entry.uncertainty_in(unit)), "unit": unit}
+        sigma = entry.uncertainty_in() if entry.uncertainty is not None else None
+        item = _json_item(entry.value_in(), sigma, entry.unit)
+        if entry.text is not None:
+            item["text"] = entry.text
         if entry.assumed_si:
             item["assumed_si"] = True
         out[name] = item
+    return out
+
+
+def _json_results(entries: dict[str, Entry], units: dict[str, str]) -> dict:
+    """Results in their canonical unit, or the one ``--unit`` names."""
+    out = {}
+    for name, entry in entries.items():
+        value, unit = machine(entry, units)
+        sigma = entry.uncertainty_in(unit) if entry.uncertainty is not None else None
+        out[name] = _json_item(value, sigma, unit)
     return out
 
 
@@ -56,33 +100,37 @@ def explain_format(explain) -> str | None:
 
 def to_json(result: Result, units: dict[str, str], checks: list[Check],
             explain: bool | str) -> str:
-    """The JSON object of SPEC.md (extra keys: ``checks``, ``explanation``, ``extra``)."""
+    """The JSON object of SPEC.md, indented (:func:`json_data`)."""
     return json.dumps(json_data(result, units, checks, explain), indent=2, allow_nan=False)
 
 
 def json_data(result: Result, units: dict[str, str], checks: list[Check],
               explain: bool | str) -> dict:
-    """The object :func:`to_json` prints, as a dict (a batch JSON line is this object)."""
-    data = {
-        "command": result.command,
-        "scene": result.scene,
-        "model": result.model,
-        "method": result.method,
-        "inputs": _json_entries(result.inputs, {}),
-        "results": _json_entries(result.results, units),
-        "warnings": list(result.warnings),
-    }
-    data.update(_finite(result.extra))
+    """The object :func:`to_json` prints, as a dict (a batch JSON line is this object).
+
+    ``extra`` holds :attr:`Result.extra` (error estimates, ``inverse``, ``variance``, a fit,
+    timings, ``plot``), then ``checks`` and ``explanation`` when asked for."""
+    extra = _finite(result.extra)
     if checks:
-        data["checks"] = _finite([c.as_dict() for c in checks])
+        extra["checks"] = _finite([c.as_dict() for c in checks])
     if explain and result.explanation is not None:
-        data["explanation"] = result.explanation.as_dict()
+        extra["explanation"] = _finite(result.explanation.as_dict())
         fmt = explain_format(explain)
         if fmt != "text":
             from .explain_render import render_explanation
 
-            data["explanation"]["rendered"] = render_explanation(result.explanation, fmt)
-    return data
+            extra["explanation"]["rendered"] = render_explanation(result.explanation, fmt)
+    return {
+        "schema": SCHEMA,
+        "command": result.command,
+        "scene": result.scene,
+        "model": result.model,
+        "method": result.method,
+        "inputs": _json_inputs(result.inputs),
+        "results": _json_results(result.results, units),
+        "warnings": list(result.warnings),
+        "extra": extra,
+    }
 
 
 def _finite(value):
@@ -98,11 +146,12 @@ def _finite(value):
 
 
 def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
-    """``--value NAME``: the full-precision number (``repr``), vectors comma-separated;
-    ``--value 'u(NAME)'`` its standard uncertainty (when an input carried one)."""
+    """``--value NAME``: the full-precision number (``repr``) in the canonical unit (or the one
+    ``--unit`` names), vectors comma-separated; ``--value 'u(NAME)'`` its standard uncertainty
+    in the same unit (when an input carried one)."""
     if name.startswith("u(") and name.endswith(")") and name[2:-1] in result.results:
         entry = result.results[name[2:-1]]
-        sigma = entry.uncertainty_in(units.get(entry.name))
+        sigma = entry.uncertainty_in(machine(entry, units)[1])
         if sigma is None:
             raise InputError(f"--value {name}: {entry.name} has no uncertainty (give one on "
                              "an input: 2.0+/-0.1 kg)")
@@ -113,7 +162,7 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
                          f"{', '.join(result.results)}")
     if entry.overflowed:
         raise InputError(f"--value {name}: {name} overflows float64 at these inputs")
-    value, _unit = shown(entry, units)
+    value, _unit = machine(entry, units)
     if isinstance(value, str):
         return value
     return full_number(value)

@@ -33,7 +33,8 @@ class Entry:
 
     ``si`` is the magnitude in ``dim.si`` (float, array, or ``str`` for a word such as a
     regime); ``unit`` is the unit it is shown in unless ``--unit`` says otherwise; ``symbol`` and
-    ``description`` are for the human table; ``assumed_si`` marks a bare number read as SI.
+    ``description`` are for the human table; ``assumed_si`` marks a bare number read as SI;
+    ``text`` is an input as the user typed it (or the default's text), ``None`` on results.
     """
 
     name: str
@@ -46,6 +47,7 @@ class Entry:
     exact: Any = None  # the magnitude in ``unit`` exactly as typed or computed
     overflowed: bool = False  # a finite true value beyond float64: shown as inf / null
     uncertainty: Any = None  # standard uncertainty in ``dim.si`` (float or array), if any
+    text: str | None = None  # an input's text as typed (JSON ``inputs.NAME.text``)
 
     @property
     def canonical_unit(self) -> str:
@@ -83,7 +85,7 @@ def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:
     return Entry(name, parsed.si, dim, unit=parsed.unit_text or dim.si,
                  assumed_si=parsed.assumed_si,
                  exact=float(parsed.quantity.magnitude) if typed else None,
-                 uncertainty=parsed.uncertainty, **kw)
+                 uncertainty=parsed.uncertainty, text=parsed.text, **kw)
 
 
 @dataclass

@@ -194,7 +194,7 @@ def read_inputs(scene: Scene, texts: dict[str, str], labels: dict[str, str],
                                  f"{word[:40]!r}")
             prepared.kwargs["kappa" if param.name == "body" else param.name] = \
                 param.choices[word]
-            prepared.inputs[param.name] = Entry(param.name, word, None)
+            prepared.inputs[param.name] = Entry(param.name, word, None, text=text)
             continue
         parsed = parse_quantity(text, param.dim, label=label, strict=strict,
                                 constraint=param.constraint)
