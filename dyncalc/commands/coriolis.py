@@ -1,5 +1,7 @@
 """The ``coriolis`` command's computation: option texts -> checked vectors -> every term of the
-relative-motion formula -> a :class:`~dyncalc.result.Result`.
+relative-motion formula -> a :class:`~dyncalc.result.Result`. :func:`read` parses and checks
+every option once (:class:`CoriolisInputs`), :func:`compute` works on what it read;
+:func:`coriolis_result` is the two in turn.
 
 Three forms, chosen by the options given:
 
@@ -32,7 +34,7 @@ from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FO
                     MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
                     parse_vector)
 
-__all__ = ["COMMAND", "coriolis_result", "OPTIONS"]
+__all__ = ["COMMAND", "coriolis_result", "OPTIONS", "read", "compute", "CoriolisInputs"]
 
 #: Option name -> (dimension, description).
 OPTIONS = {
@@ -102,12 +104,42 @@ def _input_entry(name: str, parsed: Parsed, dim: Dim, description: str) -> Entry
     return entry_from_parsed(name, parsed, dim, description=description)
 
 
+class CoriolisInputs:
+    """The ``coriolis`` options as :func:`read` found them, every one parsed and checked: what
+    :func:`compute` needs, and nothing typed is read again after this.
+
+    ``form`` is ``"vectors"``, ``"scalar"`` (magnitudes) or ``"earth"``; ``parsed`` maps each
+    option given to its :class:`~dyncalc.units.Parsed` (SI in ``.si``: a float, or an array of
+    3 for a vector); ``entries`` are the input entries in the order read; ``warnings`` what
+    reading noticed (a bare latitude or heading in radians); ``degrees`` the latitude in
+    degrees (Earth mode, else ``None``).
+    """
+
+    __slots__ = ("form", "parsed", "entries", "warnings", "degrees")
+
+    def __init__(self, form: str, parsed: dict[str, Parsed], entries: dict[str, Entry],
+                 warnings: list[str] | None = None, degrees: float | None = None):
+        self.form, self.parsed, self.entries = form, parsed, entries
+        self.warnings = [] if warnings is None else warnings
+        self.degrees = degrees
+
+    def si(self, name: str):
+        """The SI value of option ``name``, ``None`` when it was not given."""
+        parsed = self.parsed.get(name)
+        return None if parsed is None else parsed.si
+
+    def __repr__(self) -> str:
+        return f"CoriolisInputs({self.form!r}, {list(self.parsed)})"
+
+
 class _Reader:
-    """Parses the option texts, remembering the input entries in the order read."""
+    """Parses the option texts, remembering the parsed values and the input entries in the
+    order read."""
 
     def __init__(self, texts: dict[str, str], strict: bool):
         self.texts, self.strict = texts, strict
         self.inputs: dict[str, Entry] = {}
+        self.parsed: dict[str, Parsed] = {}
 
     def vector(self, name: str) -> Parsed | None:
         text = self.texts.get(name)
@@ -117,6 +149,7 @@ class _Reader:
         parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
                               strict=self.strict)
         self.inputs[name] = _input_entry(name, parsed, dim, description)
+        self.parsed[name] = parsed
         return parsed
 
     def scalar(self, name: str, constraint: str | None = None) -> Parsed | None:
@@ -127,7 +160,12 @@ class _Reader:
         parsed = parse_quantity(text, dim, label=f"--{name}", strict=self.strict,
                                 constraint=constraint)
         self.inputs[name] = entry_from_parsed(name, parsed, dim, description=description)
+        self.parsed[name] = parsed
         return parsed
+
+    def done(self, form: str, warnings: list[str] | None = None,
+             degrees: float | None = None) -> CoriolisInputs:
+        return CoriolisInputs(form, self.parsed, self.inputs, warnings, degrees)
 
 
 def _refuse_negative(name: str, parsed: Parsed) -> None:
@@ -301,12 +339,13 @@ def _latitude_words(degrees: float) -> str:
 
 
 # --------------------------------------------------------------------------------------------
-# The three forms
+# Reading: every option parsed and checked once
 
 
 def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Result:
     """Compute the ``coriolis`` command from the option texts (``{"omega": "0,0,2 rad/s",
-    "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given).
+    "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given):
+    :func:`read`, then :func:`compute`.
 
     Raises :class:`~dyncalc.errors.InputError` with a message saying what to change.
 
@@ -314,12 +353,21 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     >>> res.results["a_c"].si, res.results["a_c"].unit
     (12.0, 'm/s^2')
     """
+    return compute(read(texts, strict))
+
+
+def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
+    """The option texts -> :class:`CoriolisInputs`: every quantity and vector parsed and
+    checked once, the form (vectors, magnitudes, Earth) chosen by the options given.
+
+    Raises :class:`~dyncalc.errors.InputError` with a message saying what to change.
+    """
     texts = {k: v for k, v in texts.items() if v is not None}
     unknown = set(texts) - set(OPTIONS)
     if unknown:
         raise InputError(f"coriolis has no option --{sorted(unknown)[0]}")
     if "latitude" in texts:
-        return _earth(texts, strict)
+        return _read_earth(_Reader(texts, strict))
     for name in ("speed", "heading", "vertical"):
         if name in texts:
             raise InputError(f"--{name} describes motion over the Earth and needs --latitude; "
@@ -334,12 +382,11 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     reader = _Reader(texts, strict)
     omega = reader.vector("omega")
     if _is_vector(omega):
-        return _vectors(reader, omega)
-    return _scalars(reader, omega)
+        return _read_vectors(reader)
+    return _read_scalars(reader, omega)
 
 
-def _vectors(reader: _Reader, omega: Parsed) -> Result:
-    parsed = {}
+def _read_vectors(reader: _Reader) -> CoriolisInputs:
     for name in ("vr", "r", "alpha", "a0", "ar"):
         p = reader.vector(name)
         if p is not None and not _is_vector(p):
@@ -347,21 +394,117 @@ def _vectors(reader: _Reader, omega: Parsed) -> Result:
             raise InputError(f"--{name} is a magnitude but --omega is a vector; give --{name} "
                              f"with 3 components too, e.g. '1,0,0 {dim.si}' (or every input "
                              "as a magnitude: the scalar form)")
-        parsed[name] = p
-    mass = reader.scalar("mass", "positive")
-    return _compute(reader, omega.si, parsed["vr"].si, parsed, mass, model="vectors")
+    reader.scalar("mass", "positive")
+    return reader.done("vectors")
 
 
-def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, model: str,
+def _read_scalars(reader: _Reader, omega: Parsed) -> CoriolisInputs:
+    _refuse_negative("omega", omega)
+    for name in ("vr", "r", "alpha"):
+        p = reader.vector(name)
+        if p is None:
+            continue
+        if _is_vector(p):
+            raise InputError(f"--{name} is a vector but --omega is a magnitude; give both with "
+                             "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
+                             "(the scalar form: perpendicular vectors)")
+        _refuse_negative(name, p)
+    for name in ("a0", "ar"):
+        if name in reader.texts:
+            raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
+                             "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
+                             "form takes only --omega, --vr, --r (distance from the axis), "
+                             "--alpha and --mass")
+    reader.scalar("mass", "positive")
+    return reader.done("scalar")
+
+
+def _read_earth(reader: _Reader) -> CoriolisInputs:
+    texts = reader.texts
+    warnings: list[str] = []
+    latitude = reader.scalar("latitude")
+    degrees = float(latitude.quantity.to("degree").magnitude)
+    if not -90.0 <= degrees <= 90.0:
+        hint = (f" (a bare number is read in radians; write {latitude.text.strip()}deg for "
+                "degrees)" if latitude.assumed_si else "")
+        raise InputError(f"--latitude must be between -90 deg and 90 deg; got "
+                         f"{format_quantity(latitude.quantity)}{hint}")
+    if latitude.assumed_si and degrees != 0.0:
+        warnings.append(f"--latitude {latitude.text.strip()} has no unit and is read in radians "
+                        f"({format_number(degrees, 6)} deg); write {latitude.text.strip()}deg "
+                        "for degrees")
+
+    if "omega" in texts:
+        omega = reader.vector("omega")
+        if _is_vector(omega):
+            raise InputError("--omega with --latitude is the rotation rate only, a magnitude "
+                             "such as '7.2921159e-5 rad/s'; its direction follows from the "
+                             "latitude (for a vector --omega leave out --latitude)")
+        _refuse_negative("omega", omega)
+
+    motion = [n for n in ("speed", "heading", "vertical") if n in texts]
+    if "vr" in texts and motion:
+        raise InputError(f"give --vr or --{motion[0]}, not both: --speed, --heading and "
+                         "--vertical are another way to give v_r")
+    if "vr" in texts:
+        vr = reader.vector("vr")
+        if not _is_vector(vr):
+            raise InputError("--vr with --latitude is a vector of east, north, up components, "
+                             "e.g. --vr '0,20,0 m/s' for 20 m/s northward (or give --speed "
+                             "with --heading)")
+    elif motion:
+        if ("speed" in texts) != ("heading" in texts):
+            raise InputError("--speed and --heading go together: the horizontal speed and its "
+                             "compass direction (0 = north, 90deg = east)")
+        reader.scalar("speed", "nonnegative")
+        heading = reader.scalar("heading")
+        reader.scalar("vertical")
+        if heading is not None and heading.assumed_si and heading.si != 0.0:
+            warnings.append(f"--heading {heading.text.strip()} has no unit and is read in "
+                            f"radians; write {heading.text.strip()}deg for compass degrees")
+    else:
+        raise InputError("--vr is missing: give the velocity relative to the Earth as east, "
+                         "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
+                         "--heading")
+
+    for name in ("r", "alpha", "a0", "ar"):
+        p = reader.vector(name)
+        if p is not None and not _is_vector(p):
+            raise InputError(f"--{name} with --latitude is a vector of east, north, up "
+                             f"components, e.g. '0,0,1 {OPTIONS[name][0].si}'")
+    reader.scalar("mass", "positive")
+    return reader.done("earth", warnings, degrees)
+
+
+# --------------------------------------------------------------------------------------------
+# Computing: the three forms
+
+
+def compute(inputs: CoriolisInputs) -> Result:
+    """The Result of the options read by :func:`read`, in their form (vectors, magnitudes or
+    Earth)."""
+    if inputs.form == "earth":
+        return _earth(inputs)
+    if inputs.form == "vectors":
+        return _vectors(inputs)
+    return _scalars(inputs)
+
+
+def _vectors(inputs: CoriolisInputs) -> Result:
+    return _compute(inputs, inputs.si("omega"), inputs.si("vr"), model="vectors")
+
+
+def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str,
              earth: dict | None = None) -> Result:
+    """Every term of the vector formula for ``Omega`` (rad/s) and ``v_r`` (m/s), 3 components
+    each; ``r``, ``alpha``, ``a0``, ``ar`` and ``mass`` as read (vectors and Earth mode)."""
     from ..physics.frames import relative_acceleration
 
-    def si(name):
-        return None if parsed.get(name) is None else parsed[name].si
-
+    si = inputs.si
+    mass = inputs.parsed.get("mass")
     fa = relative_acceleration(Omega, v_r, r=si("r"), alpha=si("alpha"), a0=si("a0"),
                                a_r=si("ar"), m=None if mass is None else mass.si)
-    full = any(parsed.get(n) is not None for n in ("r", "alpha", "a0", "ar"))
+    full = any(n in inputs.parsed for n in ("r", "alpha", "a0", "ar"))
 
     results = {"a_c": _entry("a_c", fa.a_c, True),
                "a_c_mag": _entry("a_c_mag", _mag(fa.a_c), False)}
@@ -386,7 +529,8 @@ def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, 
         results["Omega"] = _entry("Omega", fa.Omega, True)
         if earth["derived_v"]:
             results["v_r"] = _entry("v_r", fa.v_r, True)
-        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]), False)
+        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]),
+                                               False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
     substituted += _vector_lines(fa, full, None if mass is None else mass.si)
@@ -409,7 +553,7 @@ def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, 
                  "F_c = -m a_c"],
         substituted=substituted, assumptions=assumptions, reference=REFERENCE,
         latex=list(VECTOR_LATEX))
-    return Result(command="coriolis", results=results, inputs=reader.inputs, model=model,
+    return Result(command="coriolis", results=results, inputs=dict(inputs.entries), model=model,
                   method="closed-form", warnings=list(earth["warnings"] if earth else [])
                   + fa.warnings, explanation=explanation, extra=extra)
 
@@ -445,30 +589,12 @@ def _scalar_latex(results, omega, v, r, alpha, mass):
     return render_formulas(SCALAR_LATEX, terms)
 
 
-def _scalars(reader: _Reader, omega: Parsed) -> Result:
+def _scalars(inputs: CoriolisInputs) -> Result:
     from ..physics.frames import relative_acceleration
 
-    _refuse_negative("omega", omega)
-    values = {}
-    for name in ("vr", "r", "alpha"):
-        p = reader.vector(name)
-        if p is None:
-            continue
-        if _is_vector(p):
-            raise InputError(f"--{name} is a vector but --omega is a magnitude; give both with "
-                             "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
-                             "(the scalar form: perpendicular vectors)")
-        _refuse_negative(name, p)
-        values[name] = p.si
-    for name in ("a0", "ar"):
-        if name in reader.texts:
-            raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
-                             "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
-                             "form takes only --omega, --vr, --r (distance from the axis), "
-                             "--alpha and --mass")
-    mass = reader.scalar("mass", "positive")
-    Om, v = omega.si, values["vr"]
-    r, al = values.get("r"), values.get("alpha")
+    mass = inputs.parsed.get("mass")
+    Om, v = inputs.si("omega"), inputs.si("vr")
+    r, al = inputs.si("r"), inputs.si("alpha")
     # perpendicular vectors: Omega and alpha along z, r radial along x, v_r along y
     fa = relative_acceleration([0.0, 0.0, Om], [0.0, v, 0.0],
                                r=None if r is None else [r, 0.0, 0.0],
@@ -521,79 +647,29 @@ def _scalars(reader: _Reader, omega: Parsed) -> Result:
                      "a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
                      "the Coriolis force F_c = -m a_c is opposite to it"],
         reference=REFERENCE)
-    return Result(command="coriolis", results=results, inputs=reader.inputs,
+    return Result(command="coriolis", results=results, inputs=dict(inputs.entries),
                   model="magnitudes (perpendicular vectors)", method="closed-form",
                   warnings=list(fa.warnings), explanation=explanation)
 
 
-def _earth(texts: dict[str, str], strict: bool) -> Result:
+def _earth(inputs: CoriolisInputs) -> Result:
     from ..physics.frames import EARTH_RATE, earth_angular_velocity, enu_velocity
 
-    reader = _Reader(texts, strict)
-    warnings: list[str] = []
-    latitude = reader.scalar("latitude")
-    degrees = float(latitude.quantity.to("degree").magnitude)
-    if not -90.0 <= degrees <= 90.0:
-        hint = (f" (a bare number is read in radians; write {latitude.text.strip()}deg for "
-                "degrees)" if latitude.assumed_si else "")
-        raise InputError(f"--latitude must be between -90 deg and 90 deg; got "
-                         f"{format_quantity(latitude.quantity)}{hint}")
-    if latitude.assumed_si and degrees != 0.0:
-        warnings.append(f"--latitude {latitude.text.strip()} has no unit and is read in radians "
-                        f"({format_number(degrees, 6)} deg); write {latitude.text.strip()}deg "
-                        "for degrees")
-
+    latitude, degrees = inputs.parsed["latitude"], inputs.degrees
     rate_text = "Omega_E = 7.2921159e-05 rad/s (the Earth's sidereal rate)"
     rate = EARTH_RATE
-    if "omega" in texts:
-        omega = reader.vector("omega")
-        if _is_vector(omega):
-            raise InputError("--omega with --latitude is the rotation rate only, a magnitude "
-                             "such as '7.2921159e-5 rad/s'; its direction follows from the "
-                             "latitude (for a vector --omega leave out --latitude)")
-        _refuse_negative("omega", omega)
-        rate = omega.si
+    if "omega" in inputs.parsed:
+        rate = inputs.si("omega")
         rate_text = f"Omega_E = {_fmt(rate, 'rad/s')} (given by --omega)"
-
-    motion = [n for n in ("speed", "heading", "vertical") if n in texts]
-    if "vr" in texts and motion:
-        raise InputError(f"give --vr or --{motion[0]}, not both: --speed, --heading and "
-                         "--vertical are another way to give v_r")
-    derived = False
-    if "vr" in texts:
-        vr = reader.vector("vr")
-        if not _is_vector(vr):
-            raise InputError("--vr with --latitude is a vector of east, north, up components, "
-                             "e.g. --vr '0,20,0 m/s' for 20 m/s northward (or give --speed "
-                             "with --heading)")
-        v_r = vr.si
-    elif motion:
-        if ("speed" in texts) != ("heading" in texts):
-            raise InputError("--speed and --heading go together: the horizontal speed and its "
-                             "compass direction (0 = north, 90deg = east)")
-        speed = reader.scalar("speed", "nonnegative")
-        heading = reader.scalar("heading")
-        vertical = reader.scalar("vertical")
-        if heading is not None and heading.assumed_si and heading.si != 0.0:
-            warnings.append(f"--heading {heading.text.strip()} has no unit and is read in "
-                            f"radians; write {heading.text.strip()}deg for compass degrees")
+    derived = "vr" not in inputs.parsed
+    if derived:
+        speed, heading = inputs.parsed.get("speed"), inputs.parsed.get("heading")
+        vertical = inputs.si("vertical")
         v_r = enu_velocity(0.0 if speed is None else speed.quantity,
                            0.0 if heading is None else heading.quantity,
-                           0.0 if vertical is None else vertical.si)
-        derived = True
+                           0.0 if vertical is None else vertical)
     else:
-        raise InputError("--vr is missing: give the velocity relative to the Earth as east, "
-                         "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
-                         "--heading")
-
-    parsed = {}
-    for name in ("r", "alpha", "a0", "ar"):
-        p = reader.vector(name)
-        if p is not None and not _is_vector(p):
-            raise InputError(f"--{name} with --latitude is a vector of east, north, up "
-                             f"components, e.g. '0,0,1 {OPTIONS[name][0].si}'")
-        parsed[name] = p
-    mass = reader.scalar("mass", "positive")
+        v_r = inputs.si("vr")
 
     Omega = earth_angular_velocity(latitude.quantity, rate)
     lines = [f"latitude phi = {_latitude_words(degrees)}; axes x east, y north, z up",
@@ -612,13 +688,12 @@ def _earth(texts: dict[str, str], strict: bool) -> Result:
                                                          else " (here: the equator, no "
                                                               "horizontal deflection of "
                                                               "horizontal motion)")]
-    if parsed.get("r") is None:
+    if "r" not in inputs.parsed:
         assumptions.append("the centrifugal effect of the Earth's spin is part of the measured "
                            "g; only the Coriolis term is computed")
-    earth = {"lines": lines, "assumptions": assumptions, "warnings": warnings,
+    earth = {"lines": lines, "assumptions": assumptions, "warnings": inputs.warnings,
              "derived_v": derived}
-    return _compute(reader, Omega, v_r, parsed, mass, model="Earth, east-north-up",
-                    earth=earth)
+    return _compute(inputs, Omega, v_r, model="Earth, east-north-up", earth=earth)
 
 
 # --- the command record ----------------------------------------------------------------------
