@@ -21,10 +21,17 @@ Three forms, chosen by the options given:
   ``--heading`` (compass: 0 north, 90 deg east) and ``--vertical``; ``--omega`` may only change
   the rate (a magnitude). The explanation names the directions of ``a_c`` and of the Coriolis
   force ``-m a_c``.
+
+Uncertainties: only scalars carry one, so the uncertain inputs are the magnitudes of the scalar
+form, ``--mass`` and on the Earth ``--latitude``, ``--omega``, ``--speed``, ``--heading`` and
+``--vertical``. ``result.sensitivity`` gives the exact derivatives of every result with respect
+to them, worked out on the values as read (:func:`_scalar_slopes`, :func:`_frame_slopes`):
+nothing is parsed or computed again.
 """
 from __future__ import annotations
 
 import math
+from typing import Any, Callable
 
 from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
@@ -482,7 +489,8 @@ def _read_earth(reader: _Reader) -> CoriolisInputs:
 
 def compute(inputs: CoriolisInputs) -> Result:
     """The Result of the options read by :func:`read`, in their form (vectors, magnitudes or
-    Earth)."""
+    Earth), with ``sensitivity``: the exact derivatives of its results with respect to its
+    uncertain inputs (:func:`_sensitivity`)."""
     if inputs.form == "earth":
         return _earth(inputs)
     if inputs.form == "vectors":
@@ -494,10 +502,12 @@ def _vectors(inputs: CoriolisInputs) -> Result:
     return _compute(inputs, inputs.si("omega"), inputs.si("vr"), model="vectors")
 
 
-def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str,
-             earth: dict | None = None) -> Result:
+def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | None = None,
+             moves: Callable[[], dict] | None = None) -> Result:
     """Every term of the vector formula for ``Omega`` (rad/s) and ``v_r`` (m/s), 3 components
-    each; ``r``, ``alpha``, ``a0``, ``ar`` and ``mass`` as read (vectors and Earth mode)."""
+    each; ``r``, ``alpha``, ``a0``, ``ar`` and ``mass`` as read (vectors and Earth mode).
+    ``moves()`` gives how each uncertain input other than the mass moves ``Omega`` and ``v_r``
+    (:func:`_frame_slopes`)."""
     from ..physics.frames import relative_acceleration
 
     si = inputs.si
@@ -553,9 +563,19 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str,
                  "F_c = -m a_c"],
         substituted=substituted, assumptions=assumptions, reference=REFERENCE,
         latex=list(VECTOR_LATEX))
-    return Result(command="coriolis", results=results, inputs=dict(inputs.entries), model=model,
-                  method="closed-form", warnings=list(earth["warnings"] if earth else [])
-                  + fa.warnings, explanation=explanation, extra=extra)
+    result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
+                    model=model, method="closed-form",
+                    warnings=list(earth["warnings"] if earth else []) + fa.warnings,
+                    explanation=explanation, extra=extra)
+    m = None if mass is None else float(mass.si)
+
+    def slopes_of():
+        found = {} if moves is None else moves()
+        return lambda name: _frame_slopes(fa, m, found.get(name, _MASS if name == "mass"
+                                                            else _STILL))
+
+    result.sensitivity = lambda: _sensitivity(inputs, result, slopes_of())
+    return result
 
 
 #: The relative-motion formula in LaTeX (vectors).
@@ -647,9 +667,14 @@ def _scalars(inputs: CoriolisInputs) -> Result:
                      "a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
                      "the Coriolis force F_c = -m a_c is opposite to it"],
         reference=REFERENCE)
-    return Result(command="coriolis", results=results, inputs=dict(inputs.entries),
-                  model="magnitudes (perpendicular vectors)", method="closed-form",
-                  warnings=list(fa.warnings), explanation=explanation)
+    result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
+                    model="magnitudes (perpendicular vectors)", method="closed-form",
+                    warnings=list(fa.warnings), explanation=explanation)
+    m = None if mass is None else float(mass.si)
+    result.sensitivity = lambda: _sensitivity(
+        inputs, result, lambda name: _scalar_slopes(name, Om, v, r or 0.0, al or 0.0, m,
+                                                    results["a_c"].si))
+    return result
 
 
 def _earth(inputs: CoriolisInputs) -> Result:
@@ -693,7 +718,132 @@ def _earth(inputs: CoriolisInputs) -> Result:
                            "g; only the Coriolis term is computed")
     earth = {"lines": lines, "assumptions": assumptions, "warnings": inputs.warnings,
              "derived_v": derived}
-    return _compute(inputs, Omega, v_r, model="Earth, east-north-up", earth=earth)
+    return _compute(inputs, Omega, v_r, model="Earth, east-north-up", earth=earth,
+                    moves=lambda: _earth_moves(inputs, rate))
+
+
+# --------------------------------------------------------------------------------------------
+# Derivatives for the propagation of uncertainties (exact: the formulas are closed)
+#
+# Only scalars carry an uncertainty (a vector cannot: parse_vector reads none), so the
+# uncertain inputs are the magnitudes of the scalar form, --mass and, on the Earth, --latitude,
+# --omega (the rate), --speed, --heading and --vertical. Their slopes are worked out by hand on
+# the values as read; nothing is parsed or computed again.
+
+#: How an input moves (dOmega, dv_r, dm, side; ``None`` = not at all): the mass only scales
+#: F_c; an input that moves neither Omega nor v_r nor m (no slope).
+_MASS = (None, None, 1.0, 0)
+_STILL = (None, None, 0.0, 0)
+
+
+def _sensitivity(inputs: CoriolisInputs, result: Result, slopes: Callable[[str], dict]):
+    """The :class:`~dyncalc.result.propagate.Sensitivity` of ``result``: its uncertain inputs
+    in the order read, named by their options (``omega``, ``vr``, ``latitude`` ...), and
+    ``slopes(name)`` (result name -> d result / d input, SI) for each with ``u > 0``."""
+    from ..result.propagate import Sensitivity, UncertainInput
+
+    names = [name for name, entry in inputs.entries.items() if entry.uncertainty is not None]
+    uncertain = [UncertainInput(name, float(inputs.parsed[name].si),
+                                float(inputs.parsed[name].uncertainty)) for name in names]
+    table: dict[str, dict[int, Any]] = {name: {} for name in result.results}
+    with np.errstate(all="ignore"):  # an overflow is a non-finite slope: refused there
+        for index, name in enumerate(names):
+            if uncertain[index].sigma == 0:
+                continue
+            row = slopes(name)
+            for key, entry in result.results.items():
+                table[key][index] = row.get(key, np.zeros(np.shape(entry.si)))
+    return Sensitivity(uncertain, table)
+
+
+def _scalar_slopes(name: str, Om: float, v: float, r: float, al: float, m: float | None,
+                   a_c: float) -> dict[str, float]:
+    """Slopes of the scalar form with respect to the magnitude ``name``: ``a_c = 2 Omega v_r``,
+    ``F_c = m a_c``, ``a_euler = alpha r``, ``a_centripetal = Omega^2 r`` and
+    ``a_transport = r H``, ``H = hypot(alpha, Omega^2)``.
+
+    Parameters: ``Om`` (rad/s), ``v`` (m/s), ``r`` (m), ``al`` (rad/s^2), ``m`` (kg, ``None``
+    without --mass), ``a_c`` (m/s^2, as computed). All are >= 0; where ``H = 0``
+    (``alpha = Omega = 0``) ``a_transport`` has a corner and the slope is the one-sided one
+    (the inputs cannot go below 0): ``r`` for alpha, 0 for Omega.
+    """
+    H = math.hypot(al, Om * Om)
+    if name == "omega":
+        row = {"a_c": 2.0 * v, "a_centripetal": 2.0 * Om * r,
+               "a_transport": 2.0 * r * Om * (Om * Om / H) if H > 0 else 0.0}
+    elif name == "vr":
+        row = {"a_c": 2.0 * Om}
+    elif name == "r":
+        row = {"a_euler": al, "a_centripetal": Om * Om, "a_transport": H}
+    elif name == "alpha":
+        row = {"a_euler": r, "a_transport": r * (al / H) if H > 0 else r}
+    else:  # mass
+        return {"F_c": a_c}
+    if m is not None and "a_c" in row:
+        row["F_c"] = m * row["a_c"]
+    return row
+
+
+def _earth_moves(inputs: CoriolisInputs, rate: float) -> dict[str, tuple]:
+    """How each uncertain Earth input moves ``Omega = W (0, cos phi, sin phi)`` (rad/s) and
+    ``v_r = (v sin psi, v cos psi, w)`` (m/s), per SI unit of the input:
+    ``dOmega/dphi = W (0, -sin phi, cos phi)``, ``dOmega/dW = (0, cos phi, sin phi)``,
+    ``dv_r/dv = (sin psi, cos psi, 0)``, ``dv_r/dpsi = v (cos psi, -sin psi, 0)``,
+    ``dv_r/dw = (0, 0, 1)``. ``side`` is +1 (-1) for an input at its lower (upper) bound,
+    which can only grow (shrink): a speed or rate of 0, a latitude of -90 (90) deg.
+    """
+    from ..physics.frames import earth_angular_velocity, enu_velocity
+
+    zero = np.zeros(3)
+    _, c, s = earth_angular_velocity(inputs.parsed["latitude"].quantity, 1.0)
+    degrees = inputs.degrees
+    moves = {"latitude": (rate * np.array([0.0, -s, c]), zero, 0.0,
+                          -1 if degrees >= 90.0 else 1 if degrees <= -90.0 else 0),
+             "omega": (np.array([0.0, c, s]), zero, 0.0, 1 if rate == 0 else 0),
+             "vertical": (zero, np.array([0.0, 0.0, 1.0]), 0.0, 0),
+             "mass": _MASS}
+    heading = inputs.parsed.get("heading")
+    if heading is not None and "speed" in inputs.parsed:
+        east, north, _ = enu_velocity(1.0, heading.quantity, 0.0)
+        speed = float(inputs.si("speed"))
+        moves["speed"] = (zero, np.array([east, north, 0.0]), 0.0, 1 if speed == 0 else 0)
+        moves["heading"] = (zero, speed * np.array([north, -east, 0.0]), 0.0, 0)
+    return moves
+
+
+def _frame_slopes(fa, m: float | None, move: tuple) -> dict[str, Any]:
+    """Slopes of every result of the vector formula for an input that moves ``Omega`` by
+    ``dOm`` and ``v_r`` by ``dv`` (per SI unit of the input) and the mass ``m`` (kg) by
+    ``dm``; ``r``, ``alpha``, ``a0``, ``a_r`` are vectors and carry no uncertainty:
+
+    ``da_c = 2 (dOm x v_r + Omega x dv)``, ``da_centripetal = dOm x (Omega x r) +
+    Omega x (dOm x r)`` (= ``da_transport``), ``da = da_transport + da_c``,
+    ``dF_c = -(m da_c + dm a_c)``, ``d coriolis_parameter = 2 dOm_z``; a magnitude by
+    :func:`_norm_slope`.
+    """
+    dOm, dv, dm, side = (np.zeros(3) if x is None else x for x in move)
+    Om, v, r = fa.Omega, fa.v_r, fa.r
+    da_c = 2.0 * (np.cross(dOm, v) + np.cross(Om, dv))
+    da_cent = np.cross(dOm, np.cross(Om, r)) + np.cross(Om, np.cross(dOm, r))
+    row = {"a_c": da_c, "a_c_mag": _norm_slope(fa.a_c, da_c, side),
+           "a_euler": np.zeros(3), "a_centripetal": da_cent, "a_transport": da_cent,
+           "a": da_cent + da_c, "a_mag": _norm_slope(fa.a, da_cent + da_c, side),
+           "Omega": dOm, "v_r": dv, "coriolis_parameter": 2.0 * float(dOm[2])}
+    if m is not None:
+        dF_c = -(m * da_c + dm * fa.a_c)
+        row["F_c"] = dF_c
+        row["F_c_mag"] = _norm_slope(fa.F_c, dF_c, side)
+    return row
+
+
+def _norm_slope(x, dx, side: int) -> float:
+    """The slope of ``|x|`` when ``x`` moves by ``dx``: ``x/|x| . dx``. At ``x = 0`` ``|x|``
+    has a corner: ``side |dx|`` for an input at a bound (the one-sided slope, ``side`` = +1
+    at a lower bound, -1 at an upper one), 0 otherwise (the mean of the two sides)."""
+    size = _mag(x)
+    if size > 0:
+        return float(np.dot(np.asarray(x, dtype=float) / size, dx))
+    return side * _mag(dx)
 
 
 # --- the command record ----------------------------------------------------------------------
