@@ -1,5 +1,7 @@
 """The ``coriolis`` command's computation: option texts -> checked vectors -> every term of the
-relative-motion formula -> a :class:`~dyncalc.result.Result`.
+relative-motion formula -> a :class:`~dyncalc.result.Result`. :func:`read` parses and checks
+every option once (:class:`CoriolisInputs`), :func:`compute` works on what it read;
+:func:`coriolis_result` is the two in turn.
 
 Three forms, chosen by the options given:
 
@@ -19,10 +21,17 @@ Three forms, chosen by the options given:
   ``--heading`` (compass: 0 north, 90 deg east) and ``--vertical``; ``--omega`` may only change
   the rate (a magnitude). The explanation names the directions of ``a_c`` and of the Coriolis
   force ``-m a_c``.
+
+Uncertainties: only scalars carry one, so the uncertain inputs are the magnitudes of the scalar
+form, ``--mass`` and on the Earth ``--latitude``, ``--omega``, ``--speed``, ``--heading`` and
+``--vertical``. ``result.sensitivity`` gives the exact derivatives of every result with respect
+to them, worked out on the values as read (:func:`_scalar_slopes`, :func:`_frame_slopes`):
+nothing is parsed or computed again.
 """
 from __future__ import annotations
 
 import math
+from typing import Any, Callable
 
 from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
@@ -32,7 +41,7 @@ from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FO
                     MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
                     parse_vector)
 
-__all__ = ["COMMAND", "coriolis_result", "OPTIONS"]
+__all__ = ["COMMAND", "coriolis_result", "OPTIONS", "read", "compute", "CoriolisInputs"]
 
 #: Option name -> (dimension, description).
 OPTIONS = {
@@ -102,12 +111,42 @@ def _input_entry(name: str, parsed: Parsed, dim: Dim, description: str) -> Entry
     return entry_from_parsed(name, parsed, dim, description=description)
 
 
+class CoriolisInputs:
+    """The ``coriolis`` options as :func:`read` found them, every one parsed and checked: what
+    :func:`compute` needs, and nothing typed is read again after this.
+
+    ``form`` is ``"vectors"``, ``"scalar"`` (magnitudes) or ``"earth"``; ``parsed`` maps each
+    option given to its :class:`~dyncalc.units.Parsed` (SI in ``.si``: a float, or an array of
+    3 for a vector); ``entries`` are the input entries in the order read; ``warnings`` what
+    reading noticed (a bare latitude or heading in radians); ``degrees`` the latitude in
+    degrees (Earth mode, else ``None``).
+    """
+
+    __slots__ = ("form", "parsed", "entries", "warnings", "degrees")
+
+    def __init__(self, form: str, parsed: dict[str, Parsed], entries: dict[str, Entry],
+                 warnings: list[str] | None = None, degrees: float | None = None):
+        self.form, self.parsed, self.entries = form, parsed, entries
+        self.warnings = [] if warnings is None else warnings
+        self.degrees = degrees
+
+    def si(self, name: str):
+        """The SI value of option ``name``, ``None`` when it was not given."""
+        parsed = self.parsed.get(name)
+        return None if parsed is None else parsed.si
+
+    def __repr__(self) -> str:
+        return f"CoriolisInputs({self.form!r}, {list(self.parsed)})"
+
+
 class _Reader:
-    """Parses the option texts, remembering the input entries in the order read."""
+    """Parses the option texts, remembering the parsed values and the input entries in the
+    order read."""
 
     def __init__(self, texts: dict[str, str], strict: bool):
         self.texts, self.strict = texts, strict
         self.inputs: dict[str, Entry] = {}
+        self.parsed: dict[str, Parsed] = {}
 
     def vector(self, name: str) -> Parsed | None:
         text = self.texts.get(name)
@@ -117,6 +156,7 @@ class _Reader:
         parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
                               strict=self.strict)
         self.inputs[name] = _input_entry(name, parsed, dim, description)
+        self.parsed[name] = parsed
         return parsed
 
     def scalar(self, name: str, constraint: str | None = None) -> Parsed | None:
@@ -127,7 +167,12 @@ class _Reader:
         parsed = parse_quantity(text, dim, label=f"--{name}", strict=self.strict,
                                 constraint=constraint)
         self.inputs[name] = entry_from_parsed(name, parsed, dim, description=description)
+        self.parsed[name] = parsed
         return parsed
+
+    def done(self, form: str, warnings: list[str] | None = None,
+             degrees: float | None = None) -> CoriolisInputs:
+        return CoriolisInputs(form, self.parsed, self.inputs, warnings, degrees)
 
 
 def _refuse_negative(name: str, parsed: Parsed) -> None:
@@ -301,12 +346,13 @@ def _latitude_words(degrees: float) -> str:
 
 
 # --------------------------------------------------------------------------------------------
-# The three forms
+# Reading: every option parsed and checked once
 
 
 def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Result:
     """Compute the ``coriolis`` command from the option texts (``{"omega": "0,0,2 rad/s",
-    "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given).
+    "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given):
+    :func:`read`, then :func:`compute`.
 
     Raises :class:`~dyncalc.errors.InputError` with a message saying what to change.
 
@@ -314,12 +360,21 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     >>> res.results["a_c"].si, res.results["a_c"].unit
     (12.0, 'm/s^2')
     """
+    return compute(read(texts, strict))
+
+
+def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
+    """The option texts -> :class:`CoriolisInputs`: every quantity and vector parsed and
+    checked once, the form (vectors, magnitudes, Earth) chosen by the options given.
+
+    Raises :class:`~dyncalc.errors.InputError` with a message saying what to change.
+    """
     texts = {k: v for k, v in texts.items() if v is not None}
     unknown = set(texts) - set(OPTIONS)
     if unknown:
         raise InputError(f"coriolis has no option --{sorted(unknown)[0]}")
     if "latitude" in texts:
-        return _earth(texts, strict)
+        return _read_earth(_Reader(texts, strict))
     for name in ("speed", "heading", "vertical"):
         if name in texts:
             raise InputError(f"--{name} describes motion over the Earth and needs --latitude; "
@@ -334,12 +389,11 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     reader = _Reader(texts, strict)
     omega = reader.vector("omega")
     if _is_vector(omega):
-        return _vectors(reader, omega)
-    return _scalars(reader, omega)
+        return _read_vectors(reader)
+    return _read_scalars(reader, omega)
 
 
-def _vectors(reader: _Reader, omega: Parsed) -> Result:
-    parsed = {}
+def _read_vectors(reader: _Reader) -> CoriolisInputs:
     for name in ("vr", "r", "alpha", "a0", "ar"):
         p = reader.vector(name)
         if p is not None and not _is_vector(p):
@@ -347,21 +401,120 @@ def _vectors(reader: _Reader, omega: Parsed) -> Result:
             raise InputError(f"--{name} is a magnitude but --omega is a vector; give --{name} "
                              f"with 3 components too, e.g. '1,0,0 {dim.si}' (or every input "
                              "as a magnitude: the scalar form)")
-        parsed[name] = p
-    mass = reader.scalar("mass", "positive")
-    return _compute(reader, omega.si, parsed["vr"].si, parsed, mass, model="vectors")
+    reader.scalar("mass", "positive")
+    return reader.done("vectors")
 
 
-def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, model: str,
-             earth: dict | None = None) -> Result:
+def _read_scalars(reader: _Reader, omega: Parsed) -> CoriolisInputs:
+    _refuse_negative("omega", omega)
+    for name in ("vr", "r", "alpha"):
+        p = reader.vector(name)
+        if p is None:
+            continue
+        if _is_vector(p):
+            raise InputError(f"--{name} is a vector but --omega is a magnitude; give both with "
+                             "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
+                             "(the scalar form: perpendicular vectors)")
+        _refuse_negative(name, p)
+    for name in ("a0", "ar"):
+        if name in reader.texts:
+            raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
+                             "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
+                             "form takes only --omega, --vr, --r (distance from the axis), "
+                             "--alpha and --mass")
+    reader.scalar("mass", "positive")
+    return reader.done("scalar")
+
+
+def _read_earth(reader: _Reader) -> CoriolisInputs:
+    texts = reader.texts
+    warnings: list[str] = []
+    latitude = reader.scalar("latitude")
+    degrees = float(latitude.quantity.to("degree").magnitude)
+    if not -90.0 <= degrees <= 90.0:
+        hint = (f" (a bare number is read in radians; write {latitude.text.strip()}deg for "
+                "degrees)" if latitude.assumed_si else "")
+        raise InputError(f"--latitude must be between -90 deg and 90 deg; got "
+                         f"{format_quantity(latitude.quantity)}{hint}")
+    if latitude.assumed_si and degrees != 0.0:
+        warnings.append(f"--latitude {latitude.text.strip()} has no unit and is read in radians "
+                        f"({format_number(degrees, 6)} deg); write {latitude.text.strip()}deg "
+                        "for degrees")
+
+    if "omega" in texts:
+        omega = reader.vector("omega")
+        if _is_vector(omega):
+            raise InputError("--omega with --latitude is the rotation rate only, a magnitude "
+                             "such as '7.2921159e-5 rad/s'; its direction follows from the "
+                             "latitude (for a vector --omega leave out --latitude)")
+        _refuse_negative("omega", omega)
+
+    motion = [n for n in ("speed", "heading", "vertical") if n in texts]
+    if "vr" in texts and motion:
+        raise InputError(f"give --vr or --{motion[0]}, not both: --speed, --heading and "
+                         "--vertical are another way to give v_r")
+    if "vr" in texts:
+        vr = reader.vector("vr")
+        if not _is_vector(vr):
+            raise InputError("--vr with --latitude is a vector of east, north, up components, "
+                             "e.g. --vr '0,20,0 m/s' for 20 m/s northward (or give --speed "
+                             "with --heading)")
+    elif motion:
+        if ("speed" in texts) != ("heading" in texts):
+            raise InputError("--speed and --heading go together: the horizontal speed and its "
+                             "compass direction (0 = north, 90deg = east)")
+        reader.scalar("speed", "nonnegative")
+        heading = reader.scalar("heading")
+        reader.scalar("vertical")
+        if heading is not None and heading.assumed_si and heading.si != 0.0:
+            warnings.append(f"--heading {heading.text.strip()} has no unit and is read in "
+                            f"radians; write {heading.text.strip()}deg for compass degrees")
+    else:
+        raise InputError("--vr is missing: give the velocity relative to the Earth as east, "
+                         "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
+                         "--heading")
+
+    for name in ("r", "alpha", "a0", "ar"):
+        p = reader.vector(name)
+        if p is not None and not _is_vector(p):
+            raise InputError(f"--{name} with --latitude is a vector of east, north, up "
+                             f"components, e.g. '0,0,1 {OPTIONS[name][0].si}'")
+    reader.scalar("mass", "positive")
+    return reader.done("earth", warnings, degrees)
+
+
+# --------------------------------------------------------------------------------------------
+# Computing: the three forms
+
+
+def compute(inputs: CoriolisInputs) -> Result:
+    """The Result of the options read by :func:`read`, in their form (vectors, magnitudes or
+    Earth), with ``sensitivity``: the exact derivatives of its results with respect to its
+    uncertain inputs (:func:`_sensitivity`)."""
+    if inputs.form == "earth":
+        return _earth(inputs)
+    if inputs.form == "vectors":
+        return _vectors(inputs)
+    return _scalars(inputs)
+
+
+def _vectors(inputs: CoriolisInputs) -> Result:
+    return _compute(inputs, inputs.si("omega"), inputs.si("vr"), model="vectors")
+
+
+def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | None = None,
+             moves: Callable[[], dict] | None = None) -> Result:
+    """Every term of the vector formula for ``Omega`` (rad/s) and ``v_r`` (m/s), 3 components
+    each; ``r``, ``alpha``, ``a0``, ``ar`` and ``mass`` as read (vectors and Earth mode).
+    ``moves()`` gives how each uncertain input other than the mass moves ``Omega`` and ``v_r``
+    (:func:`_frame_slopes`)."""
     from ..physics.frames import relative_acceleration
 
-    def si(name):
-        return None if parsed.get(name) is None else parsed[name].si
-
+    si = inputs.si
+    mass = inputs.parsed.get("mass")
     fa = relative_acceleration(Omega, v_r, r=si("r"), alpha=si("alpha"), a0=si("a0"),
                                a_r=si("ar"), m=None if mass is None else mass.si)
-    full = any(parsed.get(n) is not None for n in ("r", "alpha", "a0", "ar"))
+    full = any(n in inputs.parsed for n in ("r", "alpha", "a0", "ar"))
 
     results = {"a_c": _entry("a_c", fa.a_c, True),
                "a_c_mag": _entry("a_c_mag", _mag(fa.a_c), False)}
@@ -386,7 +539,8 @@ def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, 
         results["Omega"] = _entry("Omega", fa.Omega, True)
         if earth["derived_v"]:
             results["v_r"] = _entry("v_r", fa.v_r, True)
-        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]), False)
+        results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]),
+                                               False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
     substituted += _vector_lines(fa, full, None if mass is None else mass.si)
@@ -409,9 +563,19 @@ def _compute(reader: _Reader, Omega, v_r, parsed: dict, mass: Parsed | None, *, 
                  "F_c = -m a_c"],
         substituted=substituted, assumptions=assumptions, reference=REFERENCE,
         latex=list(VECTOR_LATEX))
-    return Result(command="coriolis", results=results, inputs=reader.inputs, model=model,
-                  method="closed-form", warnings=list(earth["warnings"] if earth else [])
-                  + fa.warnings, explanation=explanation, extra=extra)
+    result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
+                    model=model, method="closed-form",
+                    warnings=list(earth["warnings"] if earth else []) + fa.warnings,
+                    explanation=explanation, extra=extra)
+    m = None if mass is None else float(mass.si)
+
+    def slopes_of():
+        found = {} if moves is None else moves()
+        return lambda name: _frame_slopes(fa, m, found.get(name, _MASS if name == "mass"
+                                                            else _STILL))
+
+    result.sensitivity = lambda: _sensitivity(inputs, result, slopes_of())
+    return result
 
 
 #: The relative-motion formula in LaTeX (vectors).
@@ -445,30 +609,12 @@ def _scalar_latex(results, omega, v, r, alpha, mass):
     return render_formulas(SCALAR_LATEX, terms)
 
 
-def _scalars(reader: _Reader, omega: Parsed) -> Result:
+def _scalars(inputs: CoriolisInputs) -> Result:
     from ..physics.frames import relative_acceleration
 
-    _refuse_negative("omega", omega)
-    values = {}
-    for name in ("vr", "r", "alpha"):
-        p = reader.vector(name)
-        if p is None:
-            continue
-        if _is_vector(p):
-            raise InputError(f"--{name} is a vector but --omega is a magnitude; give both with "
-                             "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
-                             "(the scalar form: perpendicular vectors)")
-        _refuse_negative(name, p)
-        values[name] = p.si
-    for name in ("a0", "ar"):
-        if name in reader.texts:
-            raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
-                             "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
-                             "form takes only --omega, --vr, --r (distance from the axis), "
-                             "--alpha and --mass")
-    mass = reader.scalar("mass", "positive")
-    Om, v = omega.si, values["vr"]
-    r, al = values.get("r"), values.get("alpha")
+    mass = inputs.parsed.get("mass")
+    Om, v = inputs.si("omega"), inputs.si("vr")
+    r, al = inputs.si("r"), inputs.si("alpha")
     # perpendicular vectors: Omega and alpha along z, r radial along x, v_r along y
     fa = relative_acceleration([0.0, 0.0, Om], [0.0, v, 0.0],
                                r=None if r is None else [r, 0.0, 0.0],
@@ -521,79 +667,34 @@ def _scalars(reader: _Reader, omega: Parsed) -> Result:
                      "a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
                      "the Coriolis force F_c = -m a_c is opposite to it"],
         reference=REFERENCE)
-    return Result(command="coriolis", results=results, inputs=reader.inputs,
-                  model="magnitudes (perpendicular vectors)", method="closed-form",
-                  warnings=list(fa.warnings), explanation=explanation)
+    result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
+                    model="magnitudes (perpendicular vectors)", method="closed-form",
+                    warnings=list(fa.warnings), explanation=explanation)
+    m = None if mass is None else float(mass.si)
+    result.sensitivity = lambda: _sensitivity(
+        inputs, result, lambda name: _scalar_slopes(name, Om, v, r or 0.0, al or 0.0, m,
+                                                    results["a_c"].si))
+    return result
 
 
-def _earth(texts: dict[str, str], strict: bool) -> Result:
+def _earth(inputs: CoriolisInputs) -> Result:
     from ..physics.frames import EARTH_RATE, earth_angular_velocity, enu_velocity
 
-    reader = _Reader(texts, strict)
-    warnings: list[str] = []
-    latitude = reader.scalar("latitude")
-    degrees = float(latitude.quantity.to("degree").magnitude)
-    if not -90.0 <= degrees <= 90.0:
-        hint = (f" (a bare number is read in radians; write {latitude.text.strip()}deg for "
-                "degrees)" if latitude.assumed_si else "")
-        raise InputError(f"--latitude must be between -90 deg and 90 deg; got "
-                         f"{format_quantity(latitude.quantity)}{hint}")
-    if latitude.assumed_si and degrees != 0.0:
-        warnings.append(f"--latitude {latitude.text.strip()} has no unit and is read in radians "
-                        f"({format_number(degrees, 6)} deg); write {latitude.text.strip()}deg "
-                        "for degrees")
-
+    latitude, degrees = inputs.parsed["latitude"], inputs.degrees
     rate_text = "Omega_E = 7.2921159e-05 rad/s (the Earth's sidereal rate)"
     rate = EARTH_RATE
-    if "omega" in texts:
-        omega = reader.vector("omega")
-        if _is_vector(omega):
-            raise InputError("--omega with --latitude is the rotation rate only, a magnitude "
-                             "such as '7.2921159e-5 rad/s'; its direction follows from the "
-                             "latitude (for a vector --omega leave out --latitude)")
-        _refuse_negative("omega", omega)
-        rate = omega.si
+    if "omega" in inputs.parsed:
+        rate = inputs.si("omega")
         rate_text = f"Omega_E = {_fmt(rate, 'rad/s')} (given by --omega)"
-
-    motion = [n for n in ("speed", "heading", "vertical") if n in texts]
-    if "vr" in texts and motion:
-        raise InputError(f"give --vr or --{motion[0]}, not both: --speed, --heading and "
-                         "--vertical are another way to give v_r")
-    derived = False
-    if "vr" in texts:
-        vr = reader.vector("vr")
-        if not _is_vector(vr):
-            raise InputError("--vr with --latitude is a vector of east, north, up components, "
-                             "e.g. --vr '0,20,0 m/s' for 20 m/s northward (or give --speed "
-                             "with --heading)")
-        v_r = vr.si
-    elif motion:
-        if ("speed" in texts) != ("heading" in texts):
-            raise InputError("--speed and --heading go together: the horizontal speed and its "
-                             "compass direction (0 = north, 90deg = east)")
-        speed = reader.scalar("speed", "nonnegative")
-        heading = reader.scalar("heading")
-        vertical = reader.scalar("vertical")
-        if heading is not None and heading.assumed_si and heading.si != 0.0:
-            warnings.append(f"--heading {heading.text.strip()} has no unit and is read in "
-                            f"radians; write {heading.text.strip()}deg for compass degrees")
+    derived = "vr" not in inputs.parsed
+    if derived:
+        speed, heading = inputs.parsed.get("speed"), inputs.parsed.get("heading")
+        vertical = inputs.si("vertical")
         v_r = enu_velocity(0.0 if speed is None else speed.quantity,
                            0.0 if heading is None else heading.quantity,
-                           0.0 if vertical is None else vertical.si)
-        derived = True
+                           0.0 if vertical is None else vertical)
     else:
-        raise InputError("--vr is missing: give the velocity relative to the Earth as east, "
-                         "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
-                         "--heading")
-
-    parsed = {}
-    for name in ("r", "alpha", "a0", "ar"):
-        p = reader.vector(name)
-        if p is not None and not _is_vector(p):
-            raise InputError(f"--{name} with --latitude is a vector of east, north, up "
-                             f"components, e.g. '0,0,1 {OPTIONS[name][0].si}'")
-        parsed[name] = p
-    mass = reader.scalar("mass", "positive")
+        v_r = inputs.si("vr")
 
     Omega = earth_angular_velocity(latitude.quantity, rate)
     lines = [f"latitude phi = {_latitude_words(degrees)}; axes x east, y north, z up",
@@ -612,13 +713,137 @@ def _earth(texts: dict[str, str], strict: bool) -> Result:
                                                          else " (here: the equator, no "
                                                               "horizontal deflection of "
                                                               "horizontal motion)")]
-    if parsed.get("r") is None:
+    if "r" not in inputs.parsed:
         assumptions.append("the centrifugal effect of the Earth's spin is part of the measured "
                            "g; only the Coriolis term is computed")
-    earth = {"lines": lines, "assumptions": assumptions, "warnings": warnings,
+    earth = {"lines": lines, "assumptions": assumptions, "warnings": inputs.warnings,
              "derived_v": derived}
-    return _compute(reader, Omega, v_r, parsed, mass, model="Earth, east-north-up",
-                    earth=earth)
+    return _compute(inputs, Omega, v_r, model="Earth, east-north-up", earth=earth,
+                    moves=lambda: _earth_moves(inputs, rate))
+
+
+# --------------------------------------------------------------------------------------------
+# Derivatives for the propagation of uncertainties (exact: the formulas are closed)
+#
+# Only scalars carry an uncertainty (a vector cannot: parse_vector reads none), so the
+# uncertain inputs are the magnitudes of the scalar form, --mass and, on the Earth, --latitude,
+# --omega (the rate), --speed, --heading and --vertical. Their slopes are worked out by hand on
+# the values as read; nothing is parsed or computed again.
+
+#: How an input moves (dOmega, dv_r, dm, side; ``None`` = not at all): the mass only scales
+#: F_c; an input that moves neither Omega nor v_r nor m (no slope).
+_MASS = (None, None, 1.0, 0)
+_STILL = (None, None, 0.0, 0)
+
+
+def _sensitivity(inputs: CoriolisInputs, result: Result, slopes: Callable[[str], dict]):
+    """The :class:`~dyncalc.result.propagate.Sensitivity` of ``result``: its uncertain inputs
+    in the order read, named by their options (``omega``, ``vr``, ``latitude`` ...), and
+    ``slopes(name)`` (result name -> d result / d input, SI) for each with ``u > 0``."""
+    from ..result.propagate import Sensitivity, UncertainInput
+
+    names = [name for name, entry in inputs.entries.items() if entry.uncertainty is not None]
+    uncertain = [UncertainInput(name, float(inputs.parsed[name].si),
+                                float(inputs.parsed[name].uncertainty)) for name in names]
+    table: dict[str, dict[int, Any]] = {name: {} for name in result.results}
+    with np.errstate(all="ignore"):  # an overflow is a non-finite slope: refused there
+        for index, name in enumerate(names):
+            if uncertain[index].sigma == 0:
+                continue
+            row = slopes(name)
+            for key, entry in result.results.items():
+                table[key][index] = row.get(key, np.zeros(np.shape(entry.si)))
+    return Sensitivity(uncertain, table)
+
+
+def _scalar_slopes(name: str, Om: float, v: float, r: float, al: float, m: float | None,
+                   a_c: float) -> dict[str, float]:
+    """Slopes of the scalar form with respect to the magnitude ``name``: ``a_c = 2 Omega v_r``,
+    ``F_c = m a_c``, ``a_euler = alpha r``, ``a_centripetal = Omega^2 r`` and
+    ``a_transport = r H``, ``H = hypot(alpha, Omega^2)``.
+
+    Parameters: ``Om`` (rad/s), ``v`` (m/s), ``r`` (m), ``al`` (rad/s^2), ``m`` (kg, ``None``
+    without --mass), ``a_c`` (m/s^2, as computed). All are >= 0; where ``H = 0``
+    (``alpha = Omega = 0``) ``a_transport`` has a corner and the slope is the one-sided one
+    (the inputs cannot go below 0): ``r`` for alpha, 0 for Omega.
+    """
+    H = math.hypot(al, Om * Om)
+    if name == "omega":
+        row = {"a_c": 2.0 * v, "a_centripetal": 2.0 * Om * r,
+               "a_transport": 2.0 * r * Om * (Om * Om / H) if H > 0 else 0.0}
+    elif name == "vr":
+        row = {"a_c": 2.0 * Om}
+    elif name == "r":
+        row = {"a_euler": al, "a_centripetal": Om * Om, "a_transport": H}
+    elif name == "alpha":
+        row = {"a_euler": r, "a_transport": r * (al / H) if H > 0 else r}
+    else:  # mass
+        return {"F_c": a_c}
+    if m is not None and "a_c" in row:
+        row["F_c"] = m * row["a_c"]
+    return row
+
+
+def _earth_moves(inputs: CoriolisInputs, rate: float) -> dict[str, tuple]:
+    """How each uncertain Earth input moves ``Omega = W (0, cos phi, sin phi)`` (rad/s) and
+    ``v_r = (v sin psi, v cos psi, w)`` (m/s), per SI unit of the input:
+    ``dOmega/dphi = W (0, -sin phi, cos phi)``, ``dOmega/dW = (0, cos phi, sin phi)``,
+    ``dv_r/dv = (sin psi, cos psi, 0)``, ``dv_r/dpsi = v (cos psi, -sin psi, 0)``,
+    ``dv_r/dw = (0, 0, 1)``. ``side`` is +1 (-1) for an input at its lower (upper) bound,
+    which can only grow (shrink): a speed or rate of 0, a latitude of -90 (90) deg.
+    """
+    from ..physics.frames import earth_angular_velocity, enu_velocity
+
+    zero = np.zeros(3)
+    _, c, s = earth_angular_velocity(inputs.parsed["latitude"].quantity, 1.0)
+    degrees = inputs.degrees
+    moves = {"latitude": (rate * np.array([0.0, -s, c]), zero, 0.0,
+                          -1 if degrees >= 90.0 else 1 if degrees <= -90.0 else 0),
+             "omega": (np.array([0.0, c, s]), zero, 0.0, 1 if rate == 0 else 0),
+             "vertical": (zero, np.array([0.0, 0.0, 1.0]), 0.0, 0),
+             "mass": _MASS}
+    heading = inputs.parsed.get("heading")
+    if heading is not None and "speed" in inputs.parsed:
+        east, north, _ = enu_velocity(1.0, heading.quantity, 0.0)
+        speed = float(inputs.si("speed"))
+        moves["speed"] = (zero, np.array([east, north, 0.0]), 0.0, 1 if speed == 0 else 0)
+        moves["heading"] = (zero, speed * np.array([north, -east, 0.0]), 0.0, 0)
+    return moves
+
+
+def _frame_slopes(fa, m: float | None, move: tuple) -> dict[str, Any]:
+    """Slopes of every result of the vector formula for an input that moves ``Omega`` by
+    ``dOm`` and ``v_r`` by ``dv`` (per SI unit of the input) and the mass ``m`` (kg) by
+    ``dm``; ``r``, ``alpha``, ``a0``, ``a_r`` are vectors and carry no uncertainty:
+
+    ``da_c = 2 (dOm x v_r + Omega x dv)``, ``da_centripetal = dOm x (Omega x r) +
+    Omega x (dOm x r)`` (= ``da_transport``), ``da = da_transport + da_c``,
+    ``dF_c = -(m da_c + dm a_c)``, ``d coriolis_parameter = 2 dOm_z``; a magnitude by
+    :func:`_norm_slope`.
+    """
+    dOm, dv, dm, side = (np.zeros(3) if x is None else x for x in move)
+    Om, v, r = fa.Omega, fa.v_r, fa.r
+    da_c = 2.0 * (np.cross(dOm, v) + np.cross(Om, dv))
+    da_cent = np.cross(dOm, np.cross(Om, r)) + np.cross(Om, np.cross(dOm, r))
+    row = {"a_c": da_c, "a_c_mag": _norm_slope(fa.a_c, da_c, side),
+           "a_euler": np.zeros(3), "a_centripetal": da_cent, "a_transport": da_cent,
+           "a": da_cent + da_c, "a_mag": _norm_slope(fa.a, da_cent + da_c, side),
+           "Omega": dOm, "v_r": dv, "coriolis_parameter": 2.0 * float(dOm[2])}
+    if m is not None:
+        dF_c = -(m * da_c + dm * fa.a_c)
+        row["F_c"] = dF_c
+        row["F_c_mag"] = _norm_slope(fa.F_c, dF_c, side)
+    return row
+
+
+def _norm_slope(x, dx, side: int) -> float:
+    """The slope of ``|x|`` when ``x`` moves by ``dx``: ``x/|x| . dx``. At ``x = 0`` ``|x|``
+    has a corner: ``side |dx|`` for an input at a bound (the one-sided slope, ``side`` = +1
+    at a lower bound, -1 at an upper one), 0 otherwise (the mean of the two sides)."""
+    size = _mag(x)
+    if size > 0:
+        return float(np.dot(np.asarray(x, dtype=float) / size, dx))
+    return side * _mag(dx)
 
 
 # --- the command record ----------------------------------------------------------------------
