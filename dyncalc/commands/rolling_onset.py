@@ -303,8 +303,9 @@ def _sensitivity(inputs: RollingInputs, onset, rtol: float | None, used: str,
 
 
 def _nudged(inputs: RollingInputs, name: str, offset: float) -> RollingInputs | None:
-    """``inputs`` with input ``name`` moved by ``offset`` (SI; the slope in the unit it was
-    typed in), or ``None`` where :func:`read` would refuse the moved value."""
+    """``inputs`` with input ``name`` moved by ``offset`` (SI; an incline is moved in the unit
+    it was typed in, as :func:`read` takes its sine and cosine), or ``None`` where
+    :func:`read` would refuse the moved value."""
     from ..physics.rolling import slope_sin_cos
 
     if name == "incline":
@@ -338,8 +339,13 @@ def _exact_slopes(inputs: RollingInputs, onset) -> dict[str, dict[str, float]]:
     ``D' = sigma kappa cos - mu (1 + kappa) sin``; ``dv/dv0 = 1 - q``, ``dv/dr = q omega0``,
     ``dv/domega0 = q r``, ``dv/dkappa = -s0 N mu cos/D^2``, ``dv/dmu = sigma s0 kappa sin
     cos/D^2``, ``dv/dbeta = -sigma s0 kappa mu/D^2``, ``dv/dg = 0``; x, omega, path by the
-    product and quotient rules. ``beta`` in radians. At ``kappa = 0`` these are the
-    derivatives from above (a negative kappa is refused).
+    product and quotient rules, cancellation-free where the terms are large:
+    ``x = sigma kappa s0 (2 v0 - q s0) / (2 g D)`` gives ``dx/dv0 = t + v dt/ds0`` and
+    ``dx/ds0 = v dt/ds0``, ``omega = (1 - q) v0 / r + q omega0`` gives
+    ``domega/dr = -(1 - q) v0 / r^2``; ``dmu_min/dkappa = |tan(beta)|/(1 + kappa)^2``,
+    ``dmu_min/dbeta = sign(beta) kappa/((1 + kappa) cos^2)`` (0 at ``beta = 0``, the mean of
+    its two sides). ``beta`` in radians. At ``kappa = 0`` these are the derivatives from
+    above (a negative kappa is refused).
     """
     from ..physics.rolling import decimal_value
 
@@ -361,11 +367,12 @@ def _exact_slopes(inputs: RollingInputs, onset) -> dict[str, dict[str, float]]:
               "mu": sigma * s0 * (K * S / D) * (C / D), "kappa": -s0 * (N / D) * e,
               "g": f(0.0), "incline": -sigma * s0 * (K / D) * (mu / D)}
         d_v0 = {name: f(1.0 if name == "v0" else 0.0) for name in dt}
-        out = {"t_roll": dt, "v_roll": dv,
-               "x_roll": {n: dt[n] * ((v0 + v) / 2) + t * ((d_v0[n] + dv[n]) / 2) for n in dt}}
+        dx = {n: dt[n] * ((v0 + v) / 2) + t * (dv[n] / 2) for n in dt}
+        dx.update(v0=t + v * dts, radius=-w * v * dts, omega0=-r * v * dts)
+        out = {"t_roll": dt, "v_roll": dv, "x_roll": dx}
         if onset.omega is not None:
-            out["omega_roll"] = {n: dv[n] / r - (v / r / r if n == "radius" else 0.0)
-                                 for n in dt}
+            out["omega_roll"] = {n: dv[n] / r for n in dt}
+            out["omega_roll"]["radius"] = -e * v0 / r / r
         if onset.path is not None:
             A, sign_n = g * abs(N), np.sign(N)
             dA = {"g": abs(N), "mu": g * sign_n * C, "incline": g * sign_n * (sigma * C - mu * S)}
