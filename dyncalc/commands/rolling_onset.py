@@ -1,25 +1,32 @@
 """``rolling-onset``: the texts the user typed -> checked quantities -> the physics -> a Result.
 
 The command line stays thin: it hands the option texts to :func:`rolling_onset_result`, which
-reads and checks every quantity (dimension, sign, the rules between options), calls
-:mod:`dyncalc.physics.rolling` and builds the :class:`~dyncalc.result.Result` with its
-explanation and warnings. With ``method="ode"`` it also integrates the equations of motion,
-compares them with the closed form and times both.
+is :func:`read` (every quantity parsed once and checked: dimension, sign, the rules between
+options) then :func:`compute` (calls :mod:`dyncalc.physics.rolling` and builds the
+:class:`~dyncalc.result.Result` with its explanation and warnings). With ``method="ode"`` it
+also integrates the equations of motion, compares them with the closed form and times both.
+The Result's ``sensitivity`` gives the derivatives for the propagation of uncertainties,
+worked out on the parsed inputs: exact for the closed form, by central differences for the
+ODE (:func:`_sensitivity`).
 """
 from __future__ import annotations
 
 import math
 import time
+from dataclasses import dataclass, replace
+from fractions import Fraction
 
 from ..constants import STANDARD_GRAVITY_TEXT
 from ..errors import InputError, PhysicsError
+from ..lazy import numpy as np
 from ..result.explain import Formula
 from .record import Command, Parameter, results_from_kinds
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, TIME, VELOCITY,
-                    format_quantity, parse_quantity)
+                    Parsed, format_quantity, parse_quantity, to_si)
 
-__all__ = ["COMMAND", "rolling_onset_result", "METHODS", "DEFAULT_RTOL", "DEFAULT_BODY"]
+__all__ = ["COMMAND", "rolling_onset_result", "read", "compute", "RollingInputs", "METHODS",
+           "DEFAULT_RTOL", "DEFAULT_BODY"]
 
 #: ``--method`` choices: ``auto`` is the closed form (exact to rounding, and the cheapest).
 METHODS = ("auto", "closed-form", "ode")
@@ -62,25 +69,59 @@ def _read(texts: dict, name: str, dim, strict: bool, **kw):
     return parse_quantity(texts[name], dim, label=_LABELS[name], strict=strict, **kw)
 
 
-def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = None,
-                         rtol: float | None = None, strict: bool = False) -> Result:
-    """Compute ``rolling-onset`` from the option texts (``{"v0": "5 m/s", "mu": "0.3"}``).
-
-    Keys: ``v0``, ``mu`` (required), ``body`` or ``kappa``, ``radius``, ``omega0``, ``g``,
-    ``incline``; ``None`` or a missing key means not given. ``method`` is one of
-    :data:`METHODS` (``None``: auto, the closed form); ``rtol`` the ODE's tolerance (default
-    1e-9); ``strict`` is ``--strict-units``.
-
-    >>> r = rolling_onset_result({"v0": "5 m/s", "mu": "0.3"})
-    >>> [(n, round(e.si, 4)) for n, e in r.results.items()]
-    [('t_roll', 0.4856), ('x_roll', 2.0811), ('v_roll', 3.5714)]
-    """
-    from ..physics.rolling import onset_closed_form, slope_sin_cos
-
-    texts = {k: v for k, v in texts.items() if v is not None}
+def _method(method: str | None) -> str:
     method = "auto" if method is None else method
     if method not in METHODS:
         raise InputError(f"--method must be one of {', '.join(METHODS)}; got {method!r}")
+    return method
+
+
+@dataclass(frozen=True)
+class RollingInputs:
+    """``rolling-onset``'s quantities as :func:`read` parsed and checked them, in SI: all that
+    :func:`compute` needs (nothing typed is read again after this).
+
+    ``v0`` initial speed (m/s, >= 0), ``mu`` kinetic friction (> 0), ``kappa`` shape factor
+    J_C/(m r^2) (>= 0), ``g`` (m/s^2, > 0), ``radius`` (m, or ``None``), ``omega0`` initial
+    spin (rad/s), ``sin_b``, ``cos_b`` of the slope (``cos_b > 0``); ``incline`` the slope as
+    read (or ``None``), ``body`` the named body (``None`` with ``--kappa``); ``parsed`` every
+    quantity read, by input name (with its uncertainty); ``entries`` the Result's inputs.
+    """
+
+    v0: float
+    mu: float
+    kappa: float
+    g: float
+    radius: float | None
+    omega0: float
+    sin_b: float
+    cos_b: float
+    incline: Parsed | None
+    body: str | None
+    parsed: dict[str, Parsed]
+    entries: dict[str, Entry]
+
+    def args(self) -> tuple:
+        """The arguments of the physics kernels (``onset_closed_form``, ``onset_ode``)."""
+        return (self.v0, self.mu, self.kappa, self.g, self.radius, self.omega0, self.sin_b,
+                self.cos_b)
+
+
+_SPIN_NEEDS_RADIUS = ("--omega0 needs --radius: the contact point slips with v0 - r omega0, so "
+                      "the spin counts only with the radius; give --radius (e.g. --radius "
+                      "0.11m)")
+
+
+def read(texts: dict[str, str | None], strict: bool = False) -> RollingInputs:
+    """The option texts (``{"v0": "5 m/s", "mu": "0.3"}``) -> :class:`RollingInputs`: every
+    quantity parsed once and checked (dimension, sign, the rules between options).
+
+    Keys: ``v0``, ``mu`` (required), ``body`` or ``kappa``, ``radius``, ``omega0``, ``g``,
+    ``incline``; ``None`` or a missing key means not given. ``strict`` is ``--strict-units``.
+    """
+    from ..physics.rolling import slope_sin_cos
+
+    texts = {k: v for k, v in texts.items() if v is not None}
     for name in ("v0", "mu"):
         if name not in texts:
             example = {"v0": "--v0 '5 m/s'", "mu": "--mu 0.3"}[name]
@@ -88,13 +129,14 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
                              "'dyncalc rolling-onset --help'")
 
     inputs: dict[str, Entry] = {}
-    v0 = _read(texts, "v0", VELOCITY, strict)
+    parsed: dict[str, Parsed] = {}
+    v0 = parsed["v0"] = _read(texts, "v0", VELOCITY, strict)
     if v0.si < 0:
         raise InputError(f"--v0 must not be negative: it is the speed, and its direction is "
                          f"the positive one (spin against it is a negative --omega0, moving "
                          f"downhill a negative --incline); got {format_quantity(v0.quantity)}")
     inputs["v0"] = entry_from_parsed("v0", v0, VELOCITY, description="initial speed")
-    mu = _read(texts, "mu", DIMENSIONLESS, strict, constraint="positive")
+    mu = parsed["mu"] = _read(texts, "mu", DIMENSIONLESS, strict, constraint="positive")
     inputs["mu"] = entry_from_parsed("mu", mu, DIMENSIONLESS, description="kinetic friction")
 
     body = texts.get("body")
@@ -102,9 +144,10 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
         raise InputError("give --body or --kappa, not both (--kappa is the shape factor "
                          "J_C/(m r^2) of any body)")
     if "kappa" in texts:
-        parsed = _read(texts, "kappa", DIMENSIONLESS, strict, constraint="nonnegative")
-        kappa = parsed.si
-        inputs["kappa"] = entry_from_parsed("kappa", parsed, DIMENSIONLESS,
+        one = parsed["kappa"] = _read(texts, "kappa", DIMENSIONLESS, strict,
+                                      constraint="nonnegative")
+        kappa = one.si
+        inputs["kappa"] = entry_from_parsed("kappa", one, DIMENSIONLESS,
                                             description="shape factor J_C/(m r^2)")
         body_name = None
     else:
@@ -120,27 +163,25 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
 
     radius = None
     if "radius" in texts:
-        parsed = _read(texts, "radius", LENGTH, strict, constraint="positive")
-        radius = parsed.si
-        inputs["radius"] = entry_from_parsed("radius", parsed, LENGTH, description="radius")
+        one = parsed["radius"] = _read(texts, "radius", LENGTH, strict, constraint="positive")
+        radius = one.si
+        inputs["radius"] = entry_from_parsed("radius", one, LENGTH, description="radius")
     omega0 = 0.0
     if "omega0" in texts:
-        parsed = _read(texts, "omega0", ANGULAR_RATE, strict)
-        omega0 = parsed.si
+        one = parsed["omega0"] = _read(texts, "omega0", ANGULAR_RATE, strict)
+        omega0 = one.si
         if omega0 != 0.0 and radius is None:
-            raise InputError("--omega0 needs --radius: the contact point slips with "
-                             "v0 - r omega0, so the spin counts only with the radius; give "
-                             "--radius (e.g. --radius 0.11m)")
-        inputs["omega0"] = entry_from_parsed("omega0", parsed, ANGULAR_RATE,
+            raise InputError(_SPIN_NEEDS_RADIUS)
+        inputs["omega0"] = entry_from_parsed("omega0", one, ANGULAR_RATE,
                                              description="initial spin")
-    g = _read({"g": texts.get("g", DEFAULT_G)}, "g", ACCELERATION, strict,
-              constraint="positive")
+    g = parsed["g"] = _read({"g": texts.get("g", DEFAULT_G)}, "g", ACCELERATION, strict,
+                            constraint="positive")
     inputs["g"] = entry_from_parsed("g", g, ACCELERATION, description="gravity")
 
     sin_b, cos_b = 0.0, 1.0
     incline = None
     if "incline" in texts:
-        incline = _read(texts, "incline", ANGLE, strict)
+        incline = parsed["incline"] = _read(texts, "incline", ANGLE, strict)
         sin_b, cos_b = slope_sin_cos(incline.quantity)
         if not cos_b > 0.0:
             hint = (f"; a bare number is in radians: write {texts['incline'].strip()}deg for "
@@ -149,36 +190,203 @@ def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = N
                              f"wall); got {format_quantity(incline.quantity)}{hint}")
         inputs["incline"] = entry_from_parsed("incline", incline, ANGLE,
                                               description="slope, positive uphill")
+    return RollingInputs(v0=v0.si + 0.0, mu=mu.si, kappa=kappa, g=g.si, radius=radius,
+                         omega0=omega0, sin_b=sin_b, cos_b=cos_b, incline=incline,
+                         body=body_name, parsed=parsed, entries=inputs)
 
-    args = (v0.si + 0.0, mu.si, kappa, g.si, radius, omega0, sin_b, cos_b)
-    closed_form_s, onset = _timed(lambda: onset_closed_form(*args))
 
-    values = onset.values()
-    if incline is not None:
-        values["mu_min"] = onset.mu_min
-    warnings = list(onset.warnings)
-    extra: dict = {}
-    used = "closed-form"
-    if method == "ode":
-        values, used, extra, ode_notes = _run_ode(args, onset, values, rtol, closed_form_s)
-        warnings += ode_notes
+def rolling_onset_result(texts: dict[str, str | None], *, method: str | None = None,
+                         rtol: float | None = None, strict: bool = False) -> Result:
+    """Compute ``rolling-onset`` from the option texts (``{"v0": "5 m/s", "mu": "0.3"}``):
+    :func:`read`, then :func:`compute`.
 
+    Keys: ``v0``, ``mu`` (required), ``body`` or ``kappa``, ``radius``, ``omega0``, ``g``,
+    ``incline``; ``None`` or a missing key means not given. ``method`` is one of
+    :data:`METHODS` (``None``: auto, the closed form); ``rtol`` the ODE's tolerance (default
+    1e-9); ``strict`` is ``--strict-units``.
+
+    >>> r = rolling_onset_result({"v0": "5 m/s", "mu": "0.3"})
+    >>> [(n, round(e.si, 4)) for n, e in r.results.items()]
+    [('t_roll', 0.4856), ('x_roll', 2.0811), ('v_roll', 3.5714)]
+    """
+    method = _method(method)
+    return compute(read(texts, strict), method, rtol)
+
+
+def compute(inputs: RollingInputs, method: str | None = None,
+            rtol: float | None = None) -> Result:
+    """The Result of the quantities :func:`read` gave: the closed form (and with
+    ``method="ode"`` the integrated equations of motion, compared and timed), its
+    explanation and warnings, and ``sensitivity`` for the propagation of uncertainties
+    (:func:`_sensitivity`)."""
+    method = _method(method)
+    closed_form_s, onset, values, used, extra, ode_notes = _evaluate(inputs, method, rtol)
+    warnings = list(onset.warnings) + ode_notes
     results = {}
     for name, value in values.items():
         dim, unit, symbol, words = _KINDS[name]
         results[name] = Entry(name, float(value), dim, unit=unit, symbol=symbol,
                               description=words)
-    warnings += _physics_warnings(onset, kappa, mu.si, incline is not None)
-    result = Result(command="rolling-onset", results=results, inputs=inputs, scene=None,
-                    model="coulomb-friction", method=used, warnings=warnings,
-                    explanation=_explain(onset, kappa, body_name, mu.si, g.si, v0.si + 0.0, radius,
-                                         omega0, incline, sin_b, cos_b, used, extra),
+    on_slope = inputs.incline is not None
+    warnings += _physics_warnings(onset, inputs.kappa, inputs.mu, on_slope)
+    result = Result(command="rolling-onset", results=results, inputs=inputs.entries,
+                    scene=None, model="coulomb-friction", method=used, warnings=warnings,
+                    explanation=_explain(onset, inputs.kappa, inputs.body, inputs.mu,
+                                         inputs.g, inputs.v0, inputs.radius, inputs.omega0,
+                                         inputs.incline, inputs.sin_b, inputs.cos_b, used,
+                                         extra),
                     extra=extra)
     result.add_overflow_warnings()
+    result.sensitivity = lambda: _sensitivity(inputs, onset, rtol, used, result)
     return result
 
 
-def _timed(call, repeat: int = 3):
+#: How often the run as typed times each kernel (the best of these runs is reported).
+TIMING_RUNS = 3
+
+
+def _evaluate(inputs: RollingInputs, method: str, rtol: float | None,
+              repeat: int = TIMING_RUNS):
+    """``(closed_form_s, onset, values, used, extra, notes)``: the closed form (timed, the
+    best of ``repeat`` runs) and with ``method="ode"`` the ODE (:func:`_run_ode`)."""
+    from ..physics.rolling import onset_closed_form
+
+    args = inputs.args()
+    closed_form_s, onset = _timed(lambda: onset_closed_form(*args), repeat)
+    values = onset.values()
+    if inputs.incline is not None:
+        values["mu_min"] = onset.mu_min
+    if method != "ode":
+        return closed_form_s, onset, values, "closed-form", {}, []
+    values, used, extra, notes = _run_ode(args, onset, values, rtol, closed_form_s, repeat)
+    return closed_form_s, onset, values, used, extra, notes
+
+
+# --- derivatives for the propagation of uncertainties ----------------------------------------
+
+def _sensitivity(inputs: RollingInputs, onset, rtol: float | None, used: str,
+                 result: Result):
+    """The derivatives of the results with respect to the uncertain inputs (SI), worked out
+    on the parsed inputs (:class:`dyncalc.result.propagate.Sensitivity`).
+
+    Exact (:func:`_exact_slopes`) for the closed form while the body slips (``s0 != 0``).
+    By central differences on the parsed values (:func:`_nudged`; two computations per
+    uncertain input, nothing parsed again) where the closed form has no derivative or the
+    results are not the closed form's: ``--method ode`` (each nudge integrates once, untimed),
+    a body set down already rolling (``s0 = 0``: ``t_roll ~ |s0|`` has a kink, the central
+    difference averages its two sides), an uncertain ``--omega0 0`` without ``--radius`` (a
+    spin other than 0 is refused: the results get no uncertainty).
+    """
+    from ..result.propagate import Sensitivity, UncertainInput, _numbers, central_differences
+
+    names = [name for name, one in inputs.parsed.items() if one.uncertainty is not None]
+    uncertain = [UncertainInput(name, float(inputs.parsed[name].si),
+                                float(inputs.parsed[name].uncertainty)) for name in names]
+    nominal = _numbers(result)
+    if used == "ode" or onset.sigma == 0 or (inputs.radius is None and "omega0" in names):
+        how = "ode" if used == "ode" else "closed-form"
+
+        def rerun(index: int, offset: float):
+            nudged = _nudged(inputs, names[index], offset)
+            if nudged is None:
+                return None
+            try:
+                values = _evaluate(nudged, how, rtol, repeat=1)[2]
+            except InputError:
+                return None
+            return {name: np.asarray(float(value)) for name, value in values.items()}
+
+        return central_differences(uncertain, nominal, rerun)
+    exact = _exact_slopes(inputs, onset)
+    slopes = {name: {i: exact[name][item.name] for i, item in enumerate(uncertain)
+                     if item.sigma != 0} for name in nominal}
+    return Sensitivity(uncertain, slopes)
+
+
+def _nudged(inputs: RollingInputs, name: str, offset: float) -> RollingInputs | None:
+    """``inputs`` with input ``name`` moved by ``offset`` (SI; an incline is moved in the unit
+    it was typed in, as :func:`read` takes its sine and cosine), or ``None`` where
+    :func:`read` would refuse the moved value."""
+    from ..physics.rolling import slope_sin_cos
+
+    if name == "incline":
+        quantity = inputs.incline.quantity
+        scale = to_si(type(quantity)(1.0, quantity.units), ANGLE, "incline")
+        sin_b, cos_b = slope_sin_cos(quantity + type(quantity)(offset / scale, quantity.units))
+        if not cos_b > 0.0:
+            return None
+        return replace(inputs, sin_b=sin_b, cos_b=cos_b)
+    si = float(inputs.parsed[name].si) + offset
+    refused = (not math.isfinite(si)
+               or (name in ("mu", "g", "radius") and not si > 0.0)
+               or (name in ("v0", "kappa") and not si >= 0.0)
+               or (name == "omega0" and si != 0.0 and inputs.radius is None))
+    return None if refused else replace(inputs, **{name: si + 0.0})
+
+
+def _exact_slopes(inputs: RollingInputs, onset) -> dict[str, dict[str, float]]:
+    """``d result / d input`` of the closed form, exactly (in float64), while the body slips
+    (``sigma = sign(s0) != 0``), for every input (v0, mu, kappa, radius, omega0, g, incline).
+
+    With ``N = sigma sin(beta) + mu cos(beta)`` (``|a| = g |N|``, the deceleration while it
+    slips), ``D = mu cos(beta) + kappa N`` and ``s0 = v0 - r omega0``::
+
+        t = kappa |s0| / (g D)       v = v0 - q s0,  q = kappa N / D,  1 - q = mu cos / D
+        x = t (v0 + v) / 2           omega = v / r     path = (v0^2 + v^2) / (2 g |N|)
+        mu_min = kappa |tan(beta)| / (1 + kappa)
+
+    whence ``dt/ds0 = sigma kappa/(g D)``, ``dt/dkappa = |s0| mu cos/(g D^2)``,
+    ``dt/dmu = -t (1 + kappa) cos/D``, ``dt/dg = -t/g``, ``dt/dbeta = -t D'/D`` with
+    ``D' = sigma kappa cos - mu (1 + kappa) sin``; ``dv/dv0 = 1 - q``, ``dv/dr = q omega0``,
+    ``dv/domega0 = q r``, ``dv/dkappa = -s0 N mu cos/D^2``, ``dv/dmu = sigma s0 kappa sin
+    cos/D^2``, ``dv/dbeta = -sigma s0 kappa mu/D^2``, ``dv/dg = 0``; x, omega, path by the
+    product and quotient rules, cancellation-free where the terms are large:
+    ``x = sigma kappa s0 (2 v0 - q s0) / (2 g D)`` gives ``dx/dv0 = t + v dt/ds0`` and
+    ``dx/ds0 = v dt/ds0``, ``omega = (1 - q) v0 / r + q omega0`` gives
+    ``domega/dr = -(1 - q) v0 / r^2``; ``dmu_min/dkappa = |tan(beta)|/(1 + kappa)^2``,
+    ``dmu_min/dbeta = sign(beta) kappa/((1 + kappa) cos^2)`` (0 at ``beta = 0``, the mean of
+    its two sides). ``beta`` in radians. At ``kappa = 0`` these are the derivatives from
+    above (a negative kappa is refused).
+    """
+    from ..physics.rolling import decimal_value
+
+    f = np.float64
+    sigma = onset.sigma
+    with np.errstate(all="ignore"):  # a slope beyond float64 is caught by the propagation
+        K, mu, g, w = f(inputs.kappa), f(inputs.mu), f(inputs.g), f(inputs.omega0)
+        S, C = f(inputs.sin_b), f(inputs.cos_b)
+        r = f(inputs.radius) if inputs.radius is not None else f(0.0)
+        v0, s0, t, v, D = f(inputs.v0), f(onset.s0), f(onset.t), f(onset.v), f(onset.drive)
+        N = f(float(sigma * Fraction(inputs.sin_b)
+                    + decimal_value(inputs.mu) * Fraction(inputs.cos_b)))
+        q, e = K * N / D, mu * C / D                      # q + e = 1
+        dts = sigma * K / D / g
+        dt = {"v0": dts, "radius": -w * dts, "omega0": -r * dts,
+              "mu": -t * (1 + K) * C / D, "kappa": abs(s0) / D * e / g, "g": -t / g,
+              "incline": -t * (sigma * K * C - mu * (1 + K) * S) / D}
+        dv = {"v0": e, "radius": q * w, "omega0": q * r,
+              "mu": sigma * s0 * (K * S / D) * (C / D), "kappa": -s0 * (N / D) * e,
+              "g": f(0.0), "incline": -sigma * s0 * (K / D) * (mu / D)}
+        d_v0 = {name: f(1.0 if name == "v0" else 0.0) for name in dt}
+        dx = {n: dt[n] * ((v0 + v) / 2) + t * (dv[n] / 2) for n in dt}
+        dx.update(v0=t + v * dts, radius=-w * v * dts, omega0=-r * v * dts)
+        out = {"t_roll": dt, "v_roll": dv, "x_roll": dx}
+        if onset.omega is not None:
+            out["omega_roll"] = {n: dv[n] / r for n in dt}
+            out["omega_roll"]["radius"] = -e * v0 / r / r
+        if onset.path is not None:
+            A, sign_n = g * abs(N), np.sign(N)
+            dA = {"g": abs(N), "mu": g * sign_n * C, "incline": g * sign_n * (sigma * C - mu * S)}
+            out["path_roll"] = {n: (v0 * d_v0[n] + v * dv[n]) / A
+                                - f(onset.path) * (dA.get(n, 0.0) / A) for n in dt}
+        if inputs.incline is not None:
+            out["mu_min"] = {n: f(0.0) for n in dt}
+            out["mu_min"]["kappa"] = abs(S) / C / (1 + K) / (1 + K)
+            out["mu_min"]["incline"] = np.sign(S) * K / (1 + K) / C / C
+    return {name: {n: float(slope) for n, slope in row.items()} for name, row in out.items()}
+
+
+def _timed(call, repeat: int = TIMING_RUNS):
     """``(seconds, result)``: the best of ``repeat`` runs of ``call()`` (the first run pays
     for warming caches up; the best is the cost of the computation itself)."""
     best, result = math.inf, None
@@ -189,8 +397,9 @@ def _timed(call, repeat: int = 3):
     return best, result
 
 
-def _run_ode(args, onset, values, rtol, closed_form_s):
-    """Integrate the equations of motion; their results, the method, the JSON extras, notes."""
+def _run_ode(args, onset, values, rtol, closed_form_s, repeat: int = TIMING_RUNS):
+    """Integrate the equations of motion (timed: the best of ``repeat`` runs); their results,
+    the method, the JSON extras, notes."""
     from ..physics.rolling import ODE_FLOOR, onset_ode
 
     tol = DEFAULT_RTOL if rtol is None else rtol
@@ -204,7 +413,7 @@ def _run_ode(args, onset, values, rtol, closed_form_s):
     import scipy.integrate  # noqa: F401  (imported before the clock starts)
 
     try:
-        ode_s, ode = _timed(lambda: onset_ode(*args, rtol=tol, horizon=onset.t))
+        ode_s, ode = _timed(lambda: onset_ode(*args, rtol=tol, horizon=onset.t), repeat)
     except PhysicsError as exc:
         return values, "closed-form", {}, [f"--method ode: {exc}; the closed form is given"]
     speed_scale = max(abs(v0), abs(onset.rim0))
