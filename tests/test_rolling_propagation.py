@@ -73,7 +73,7 @@ def test_sphere_derivatives_are_exact_to_1e_13():
     their rounding error ~eps/h = 2e-10."""
     texts = {"v0": "5+/-0.1 m/s", "mu": "0.3+/-0.01"}
     data = json_of("rolling-onset", "--v0", texts["v0"], "--mu", texts["mu"], "--explain")
-    results, variance = data["results"], data["explanation"]["variance"]
+    results, variance = data["results"], data["extra"]["explanation"]["variance"]
     t = 2 * 5 / (7 * 0.3 * G0)
     x = 12 * 25 / (49 * 0.3 * G0)
     u = {"t_roll": t * math.hypot(0.1 / 5, 0.01 / 0.3),
