@@ -1,5 +1,5 @@
 """Physical constants and defaults, each written once: standard gravity and the Earth's
-sidereal rotation rate (SPEC.md)."""
+sidereal rotation rate (docs/commands.md gives each command's defaults)."""
 from __future__ import annotations
 
 __all__ = ["STANDARD_GRAVITY", "STANDARD_GRAVITY_TEXT", "EARTH_RATE"]

@@ -283,3 +283,21 @@ def test_readme_points_to_the_docs():
     for target in ("docs/architecture.md", "docs/scenes.md"):
         assert f"]({target})" in section
         assert (ROOT / target).is_file()
+
+
+def test_the_code_cites_the_projects_own_docs():
+    """The package's docstrings cite the reference in this repository (docs/, README.md), not
+    the contract documents outside it; every docs/ page they cite exists. (Two scene modules
+    name ../shared/SCENES.md as the source of their mpmath reference values, on purpose.)"""
+    import re
+
+    cited = set()
+    for path in (ROOT / "dyncalc").rglob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        for match in re.finditer(r"(?<![./\w])(SPEC|SCENES)\.md", text):
+            line = text[:match.start()].rsplit("\n", 1)[-1]
+            assert "../shared/" in line, f"{path.relative_to(ROOT)} cites {match.group(0)}"
+        cited.update(re.findall(r"docs/([\w-]+\.md)", text))
+    assert cited >= {"scenes.md", "commands.md", "json.md"}
+    for page in cited:
+        assert (ROOT / "docs" / page).is_file(), page

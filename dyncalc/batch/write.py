@@ -29,9 +29,9 @@ class _Failure(Exception):
 class _Writer:
     """Turns each chunk's outcomes into text, in order: CSV (the input columns, then a column
     per result) or JSON lines. The result columns are fixed by the first chunk's rows (a chunk
-    is ``chunk_rows`` rows). Results are given in their canonical unit (SPEC.md, "Batch":
-    ``omega [rad/s]`` whatever units the inputs were typed in), unless ``--unit`` (``units``)
-    names another."""
+    is ``chunk_rows`` rows). Results are given in their canonical unit (docs/json.md,
+    "Canonical units": ``omega [rad/s]`` whatever units the inputs were typed in), unless
+    ``--unit`` (``units``) names another."""
 
     def __init__(self, header: list[str], as_json: bool, units: dict[str, str], on_error: str,
                  out, err, chunk_rows: int):

@@ -16,11 +16,11 @@ from .record import Command, Parameter, ResultName
 __all__ = ["COMMAND", "STANDARD", "INFERENCE", "collect_parameters", "infer_scene", "compute_scene",
            "natural_frequency"]
 
-#: Standard options and the scene parameter each one is (SPEC.md).
+#: Standard options and the scene parameter each one is (docs/commands.md).
 STANDARD = {"k": "k", "m": "m", "kt": "kt", "inertia": "J", "length": "l",
             "amplitude": "amplitude", "zeta": "zeta", "g": "g"}
 
-#: Without --scene, the parameters given choose the scene (SPEC.md, natural-frequency).
+#: Without --scene, the parameters given choose the scene (docs/scenes.md, the top).
 INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum", {"l"}))
 
 

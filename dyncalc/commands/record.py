@@ -60,7 +60,7 @@ class Parameter(Frozen):
 
 class ResultName(Frozen):
     """One result a command can give: its name, the symbol of the human table, the
-    *canonical unit* of ``--value``, ``--json`` and batch output (SPEC.md) and a few words.
+    *canonical unit* of ``--value``, ``--json`` and batch output (docs/json.md) and a few words.
     A name ending in ``<i>`` stands for a numbered family (``k<i>``: ``k1``, ``k2``, ...)."""
 
     __slots__ = ("name", "symbol", "unit", "description")

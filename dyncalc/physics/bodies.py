@@ -1,4 +1,4 @@
-"""Round bodies and their shape factor ``kappa = J_C / (m r^2)`` (SCENES.md notation).
+"""Round bodies and their shape factor ``kappa = J_C / (m r^2)`` (docs/scenes.md notation).
 
 Shared by the rolling scenes and the ``rolling-onset`` command.
 """

@@ -1,4 +1,4 @@
-"""Damped oscillators with their own dampers: the damping scenes of SCENES.md.
+"""Damped oscillators with their own dampers: the damping scenes of docs/scenes.md.
 
 Pure functions on pint quantities returning an :class:`~dyncalc.physics.outcome.Outcome`. Every
 product or quotient of inputs is formed from binary mantissas and exponents

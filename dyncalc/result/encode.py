@@ -1,7 +1,7 @@
 """Results -> the machine-readable forms: the JSON object of ``--json`` (and of a batch JSON
 line), the bare number of ``--value``, and a batch CSV cell. No terminal, no physics.
 
-The object follows SPEC.md version 2 (``docs/json.md``; its JSON Schema is
+The object follows the contract, version 2 (``docs/json.md``; its JSON Schema is
 ``dyncalc/result/schema/dyncalc-2.schema.json``): the keys of :data:`TOP_KEYS`, results in
 their canonical unit unless ``--unit`` names another, everything else under ``"extra"``."""
 from __future__ import annotations
@@ -45,7 +45,7 @@ def shown(entry: Entry, units: dict[str, str]):
 
 def machine(entry: Entry, units: dict[str, str]):
     """(value, unit) of a result in ``--json`` and ``--value``: in the unit ``--unit NAME=UNIT``
-    names, else in the entry's canonical unit (SPEC.md, "Canonical units")."""
+    names, else in the entry's canonical unit (docs/json.md, "Canonical units")."""
     unit = units.get(entry.name)
     if unit is None:
         unit = entry.canonical_unit
@@ -100,7 +100,7 @@ def explain_format(explain) -> str | None:
 
 def to_json(result: Result, units: dict[str, str], checks: list[Check],
             explain: bool | str) -> str:
-    """The JSON object of SPEC.md, indented (:func:`json_data`)."""
+    """The JSON object of docs/json.md, indented (:func:`json_data`)."""
     return json.dumps(json_data(result, units, checks, explain), indent=2, allow_nan=False)
 
 

@@ -52,7 +52,7 @@ class Entry:
     @property
     def canonical_unit(self) -> str:
         """The unit ``--value``, ``--json`` and batch output give this entry in unless
-        ``--unit`` names another (SPEC.md, "Canonical units"): the SI coherent unit of its
+        ``--unit`` names another (docs/json.md, "Canonical units"): the SI coherent unit of its
         dimension (``rad/s`` for an angular rate, ``Hz`` for a cycle rate, ``rad`` for an
         angle, ``N*m/rad`` for a torsional stiffness); ``""`` for a pure number or a word."""
         return self.dim.si if self.dim is not None else ""
@@ -178,7 +178,8 @@ class Result:
                 f"results={list(self.results)!r}, warnings={self.warnings!r})")
 
     def add_underflow_warnings(self, exact_zeros: set[str] = frozenset()) -> None:
-        """Warn about a result that underflowed to zero from non-zero inputs (SPEC.md);
+        """Warn about a result that underflowed to zero from non-zero inputs (README.md,
+        "Spring networks");
         ``exact_zeros`` are results that are zero by the physics."""
         inputs_nonzero = all(
             not isinstance(e.si, (int, float)) or e.si != 0 for e in self.inputs.values())

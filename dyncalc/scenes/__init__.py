@@ -70,17 +70,17 @@ class Constraint(Frozen):
 class Scene(Frozen):
     """One set-up: what it is, what it needs, what it computes and where it comes from.
 
-    ``compute`` is the physics function itself (its module loads numpy, pint and scipy only
-    when it computes, through :mod:`dyncalc.lazy` and imports inside functions); ``equation``
-    the equation of motion, ``formula`` the closed form (or how it is solved), ``reference`` the textbook
-    example (``"E5.12"``), ``example`` a runnable command line and ``example_result`` the value
-    text it gives per result; ``one_of`` holds groups of which exactly one must be given,
-    ``methods`` the methods besides ``auto`` (empty: closed form only); ``accepts_zeta``: whether
-    ``--zeta`` adds damped results (``no_zeta_because`` says why not). ``latex`` holds the
-    formula lines in LaTeX, ``$name`` for a parameter or result (strings or
-    :class:`dyncalc.result.explain.Formula`, used only when its condition holds); ``sizes`` functions
-    of the SI values by name (and ``method``) that say how large an assumption's error is at
-    these inputs (a sentence, or None).
+    ``compute`` is the physics function itself (its module loads numpy, pint and scipy only when
+    it computes, through :mod:`dyncalc.lazy` and imports inside functions); ``equation`` the
+    equation of motion, ``formula`` the closed form (or how it is solved), ``reference`` the
+    textbook example (``"E5.12"``), ``example`` a runnable command line and ``example_result``
+    the value text it gives per result; ``one_of`` holds groups of which exactly one must be
+    given, ``methods`` the methods besides ``auto`` (empty: closed form only); ``accepts_zeta``:
+    whether ``--zeta`` adds damped results (``no_zeta_because`` says why not). ``latex`` holds
+    the formula lines in LaTeX, ``$name`` for a parameter or result (strings or
+    :class:`dyncalc.result.explain.Formula`, used only when its condition holds); ``sizes``
+    functions of the SI values by name (and ``method``) that say how large an assumption's error
+    is at these inputs (a sentence, or None).
     """
 
     __slots__ = ("name", "summary", "figure", "params", "compute", "equation", "formula",

@@ -1,6 +1,6 @@
 """Running a scene: texts -> checked quantities -> the scene's physics -> a Result.
 
-The rules (SPEC.md, SCENES.md): every parameter the scene needs must be given or have a
+The rules (docs/scenes.md): every parameter the scene needs must be given or have a
 default; a parameter the scene does not have, or one given twice, is refused with the list of
 the scene's parameters; groups of alternatives (``J`` or ``J_A``, ``body`` or ``kappa``) take
 exactly one; relations between parameters (``R > r``) are checked before any physics runs.

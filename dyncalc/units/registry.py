@@ -22,7 +22,7 @@ def registry():
             ureg = pint.UnitRegistry(cache_folder=":auto:")
         except OSError:  # an unwritable cache folder: build it the slow way
             ureg = pint.UnitRegistry()
-        ureg.define("@alias turn = rev")  # rev/s, rev/min as SPEC.md writes them
+        ureg.define("@alias turn = rev")  # rev/s, rev/min, as engineers write them
         _REGISTRY = ureg
     return _REGISTRY
 
