@@ -1,9 +1,10 @@
 """``damping-ratio``: the damping ratio, decrement, regime and damped period from a measurement.
 
-:func:`damping_ratio` takes the texts the user typed, reads them (``dyncalc.units``), calls the
-physics (``dyncalc.physics.damping``, ``dyncalc.physics.decay_fit``, or a damping scene through
-the scene runner) and returns a :class:`~dyncalc.result.Result`. ``--plot`` draws its free
-decay (:func:`dyncalc.cli.plot.plot_decay`).
+:func:`damping_ratio` takes the texts the user typed; :func:`read` parses and checks each of them
+once (``dyncalc.units``) into :class:`DampingInputs`, and :func:`compute` calls the physics
+(``dyncalc.physics.damping``, ``dyncalc.physics.decay_fit``, or a damping scene through the
+scene runner) and returns a :class:`~dyncalc.result.Result`. ``--plot`` draws its free decay
+(:func:`dyncalc.cli.plot.plot_decay`).
 
 The input forms, exactly one of them:
 
@@ -32,8 +33,8 @@ from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONL
                      STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
 from .record import Command, Parameter, results_from_kinds
 
-__all__ = ["COMMAND", "damping_ratio", "parse_amplitudes", "parse_cycles", "damping_scene_names",
-           "MAX_PEAKS"]
+__all__ = ["COMMAND", "damping_ratio", "read", "compute", "DampingInputs", "SceneTexts",
+           "parse_amplitudes", "parse_cycles", "damping_scene_names", "MAX_PEAKS"]
 
 #: The most peaks ``--amplitudes`` reads.
 MAX_PEAKS = 100_000
@@ -133,17 +134,67 @@ def parse_cycles(text: str, label: str = "--cycles") -> int:
     >>> parse_cycles("10"), parse_cycles("1e2")
     (10, 100)
     """
-    value = parse_quantity(text, DIMENSIONLESS, label=label).si
+    return _read_cycles(text, label)[0]
+
+
+def _read_cycles(text: str, label: str = "--cycles") -> tuple[int, float | None]:
+    """:func:`parse_cycles` and the uncertainty typed with the count (``None`` without)."""
+    parsed = parse_quantity(text, DIMENSIONLESS, label=label)
+    value = parsed.si
     if not float(value).is_integer():
         raise InputError(f"{label} must be a whole number of cycles (1, 2, 3, ...); got "
                          f"{value:.15g}")
     if value < 1:
         raise InputError(f"{label} must be at least 1 (a whole number of cycles); got "
                          f"{value:.15g}")
-    return int(value)
+    return int(value), parsed.uncertainty
 
 
 # --- the command -----------------------------------------------------------------------------
+
+class SceneTexts:
+    """A damping scene as checked by :func:`read`: the scene, its parameter texts and labels
+    (a ``delta=`` or ``Q=`` given to solve from already turned into ``zeta=``), and the
+    settings :func:`~dyncalc.commands.natural_frequency.compute_scene` takes. The scene's
+    texts are read once, by the scene runner, when :func:`compute` runs it."""
+
+    __slots__ = ("scene", "texts", "labels", "method", "rtol", "strict")
+
+    def __init__(self, scene, texts: dict[str, str], labels: dict[str, str], method, rtol,
+                 strict: bool):
+        self.scene, self.texts, self.labels = scene, texts, labels
+        self.method, self.rtol, self.strict = method, rtol, strict
+
+
+class DampingInputs:
+    """A damping measurement as read by :func:`read`: what :func:`compute` needs, and nothing
+    typed is read again after it.
+
+    ``form`` is the option that gave the damping (``--c``, ``--decrement``, ``--ratio``,
+    ``--amplitudes``, ``--scene``); ``inputs`` the input entries in the order read; ``parsed``
+    the quantities read, by name (``c``, ``k``, ``m``, ``omega``, ``decrement``, ``ratio``);
+    ``cycles`` the whole cycles of ``--ratio`` and ``cycles_sigma`` an uncertainty typed with
+    them; ``fit`` the decay fitted to ``--amplitudes`` (how the peaks are read into a
+    decrement: it refuses peaks that grow) and ``method`` its method; ``scene`` a scene's
+    checked texts (:class:`SceneTexts`).
+    """
+
+    __slots__ = ("form", "inputs", "parsed", "cycles", "cycles_sigma", "fit", "method",
+                 "scene")
+
+    def __init__(self, form: str):
+        self.form = form
+        self.inputs: dict[str, Entry] = {}
+        self.parsed: dict = {}
+        self.cycles: int | None = None
+        self.cycles_sigma: float | None = None
+        self.fit = None
+        self.method: str | None = None
+        self.scene: SceneTexts | None = None
+
+    def __repr__(self) -> str:
+        return f"DampingInputs({self.form!r}, {list(self.inputs)!r})"
+
 
 def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None = None,
                   omega: str | None = None, decrement: str | None = None,
@@ -152,7 +203,8 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
                   params: tuple[str, ...] | list[str] = (), g: str | None = None,
                   method: str | None = None, rtol: float | None = None,
                   strict: bool = False) -> Result:
-    """The damping ratio and everything that follows from it, from one measurement.
+    """The damping ratio and everything that follows from it, from one measurement
+    (:func:`read`, then :func:`compute`).
 
     Every argument is the text the user typed (``None`` when not given); see the module's
     docstring for the forms. Returns a :class:`Result` with ``zeta``, ``delta``, ``regime``,
@@ -163,6 +215,19 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
     >>> round(r.results["zeta"].si, 6), r.results["regime"].si
     (0.036622, 'underdamped')
     """
+    return compute(read(c=c, k=k, m=m, omega=omega, decrement=decrement, ratio=ratio,
+                        cycles=cycles, amplitudes=amplitudes, scene=scene, params=params, g=g,
+                        method=method, rtol=rtol, strict=strict))
+
+
+def read(*, c: str | None = None, k: str | None = None, m: str | None = None,
+         omega: str | None = None, decrement: str | None = None, ratio: str | None = None,
+         cycles: str | None = None, amplitudes: str | None = None, scene: str | None = None,
+         params: tuple[str, ...] | list[str] = (), g: str | None = None,
+         method: str | None = None, rtol: float | None = None,
+         strict: bool = False) -> DampingInputs:
+    """The texts of :func:`damping_ratio` -> :class:`DampingInputs`: the form chosen, every
+    quantity parsed and checked once (the peaks fitted), a scene's texts checked."""
     forms = []
     if c is not None:
         forms.append("--c")
@@ -187,7 +252,9 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         if omega is not None:
             raise InputError("--omega is not used with --scene: the scene gives its own "
                              "natural frequency")
-        return _from_scene(scene, params, k, m, g, method, rtol, strict)
+        read_in = DampingInputs(form)
+        read_in.scene = _read_scene(scene, params, k, m, g, method, rtol, strict)
+        return read_in
     if g is not None:
         raise InputError("--g is a scene parameter: use it with --scene")
     if form == "--cycles":
@@ -203,72 +270,85 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         given, other = ("--k", "--m") if m is None else ("--m", "--k")
         raise InputError(f"{given} needs {other}: together they give the natural frequency "
                          "sqrt(k/m) and c_c = 2 sqrt(k m)")
-    fit_method = _check_method(form, method)
+    read_in = DampingInputs(form)
+    read_in.method = _check_method(form, method)
 
-    inputs: dict[str, Entry] = {}
-
-    def read(name: str, text: str, dim: Dim, label: str, constraint: str | None):
+    def quantity(name: str, text: str, dim: Dim, label: str, constraint: str | None):
         parsed = parse_quantity(text, dim, label=label, strict=strict, constraint=constraint)
-        inputs[name] = entry_from_parsed(name, parsed, dim)
+        read_in.inputs[name] = entry_from_parsed(name, parsed, dim)
+        read_in.parsed[name] = parsed
         return parsed
 
+    if form == "--c":
+        quantity("c", c, DAMPING, "--c", "nonnegative")
+        quantity("k", k, STIFFNESS, "--k", "positive")
+        quantity("m", m, MASS, "--m", "positive")
+        return read_in
+    if form == "--decrement":
+        quantity("decrement", decrement, DIMENSIONLESS, "--decrement", "nonnegative")
+    elif form == "--ratio":
+        pr = quantity("ratio", ratio, DIMENSIONLESS, "--ratio", None)
+        read_in.cycles, read_in.cycles_sigma = _read_cycles(cycles if cycles is not None
+                                                            else "1")
+        read_in.inputs["cycles"] = Entry("cycles", float(read_in.cycles), DIMENSIONLESS,
+                                         description="whole cycles between the two peaks")
+        if pr.si < 1.0:
+            raise InputError(f"--ratio must be at least 1: it is x_i / x_(i+N), the "
+                             f"earlier peak over the later one; got {pr.si:.15g} (for "
+                             f"decaying peaks, did you mean {1.0 / pr.si:.6g}?)"
+                             if pr.si > 0 else
+                             f"--ratio must be at least 1: it is x_i / x_(i+N), the "
+                             f"earlier peak over the later one; got {pr.si:.15g}")
+    else:
+        peaks, unit = parse_amplitudes(amplitudes)
+        read_in.inputs["amplitudes"] = Entry("amplitudes", peaks, None, unit=unit,
+                                             description="successive peaks, one per cycle")
+        read_in.fit = _fit(peaks, read_in.method, rtol)
+    if omega is not None:
+        quantity("omega", omega, ANGULAR_RATE, "--omega", "positive")
+    if k is not None:
+        quantity("k", k, STIFFNESS, "--k", "positive")
+        quantity("m", m, MASS, "--m", "positive")
+    return read_in
+
+
+def compute(inputs: DampingInputs) -> Result:
+    """The Result of a measurement read by :func:`read`, with its ``sensitivity``: exact
+    derivatives for the closed forms (:func:`_sensitivity`), a scene's own carried through
+    zeta to the results added here (:func:`_from_scene`)."""
+    if inputs.form == "--scene":
+        return _from_scene(inputs.scene)
     from ..physics import damping as phys
 
+    form, parsed = inputs.form, inputs.parsed
     extra: dict = {}
     formula: list[str] = []
     reference = ""
-    fit = None
+    fit = inputs.fit
     exact_zeros: set[str] = set()
     c_unit = None
     if form == "--c":
-        pc = read("c", c, DAMPING, "--c", "nonnegative")
-        pk = read("k", k, STIFFNESS, "--k", "positive")
-        pm = read("m", m, MASS, "--m", "positive")
+        pc, pk, pm = parsed["c"], parsed["k"], parsed["m"]
         outcome = phys.damping_from_coefficients(pc.quantity, pk.quantity, pm.quantity)
-        c_unit = inputs["c"].unit if pc.unit_text else None
+        c_unit = inputs.inputs["c"].unit if pc.unit_text else None
         if pc.si == 0.0:
             exact_zeros |= {"zeta", "delta", "xi"}
         formula = ["c_c = 2 sqrt(k m), zeta = c / c_c, omega = sqrt(k/m), xi = c / (2 m)",
                    "underdamped: omega_d = sqrt(4 k m - c^2) / (2 m), T_d = 2 pi / omega_d, "
                    "delta = 2 pi c / sqrt(4 k m - c^2)", "Q = c_c / (2 c) = 1/(2 zeta)"]
     else:
-        if form == "--decrement":
-            delta = read("decrement", decrement, DIMENSIONLESS, "--decrement",
-                         "nonnegative").si
-            formula = []
-        elif form == "--ratio":
-            pr = read("ratio", ratio, DIMENSIONLESS, "--ratio", None)
-            n_cycles = parse_cycles(cycles if cycles is not None else "1")
-            inputs["cycles"] = Entry("cycles", float(n_cycles), DIMENSIONLESS,
-                                     description="whole cycles between the two peaks")
-            if pr.si < 1.0:
-                raise InputError(f"--ratio must be at least 1: it is x_i / x_(i+N), the "
-                                 f"earlier peak over the later one; got {pr.si:.15g} (for "
-                                 f"decaying peaks, did you mean {1.0 / pr.si:.6g}?)"
-                                 if pr.si > 0 else
-                                 f"--ratio must be at least 1: it is x_i / x_(i+N), the "
-                                 f"earlier peak over the later one; got {pr.si:.15g}")
-            delta = phys.decrement_from_ratio(pr.si, n_cycles)
+        delta = _decrement(inputs)
+        if form == "--ratio":
             formula = ["delta = ln(R) / N"]
             reference = "E5.18"
-        else:
-            peaks, unit = parse_amplitudes(amplitudes)
-            inputs["amplitudes"] = Entry("amplitudes", peaks, None, unit=unit,
-                                         description="successive peaks, one per cycle")
-            fit = _fit(peaks, fit_method, rtol)
-            delta = fit.delta
+        elif form == "--amplitudes":
             extra["fit"] = fit.as_dict()
             formula = (["ln x_i = ln x0 - delta i, least squares over the peaks i = 0 .. n-1"]
-                       if fit_method == "log-linear" else
+                       if inputs.method == "log-linear" else
                        ["x_i = x0 exp(-delta i), least squares over the peaks i = 0 .. n-1"])
         if delta == 0.0:
             exact_zeros |= {"zeta", "delta", "xi", "c"}
-        kw = {}
-        if omega is not None:
-            kw["omega"] = read("omega", omega, ANGULAR_RATE, "--omega", "positive").quantity
-        if k is not None:
-            kw["k"] = read("k", k, STIFFNESS, "--k", "positive").quantity
-            kw["m"] = read("m", m, MASS, "--m", "positive").quantity
+        kw = {name: parsed[name].quantity for name in ("omega", "k", "m") if name in parsed}
         outcome = phys.damping_from_decrement(delta, **kw)
         formula += ["zeta = delta / sqrt(4 pi^2 + delta^2), Q = 1/(2 zeta)"]
         if kw:
@@ -281,20 +361,31 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
     if c_unit is not None:
         for name in ("c", "c_c"):
             results[name].unit = c_unit
-        results["c"].exact = inputs["c"].exact
+        results["c"].exact = inputs.inputs["c"].exact
     if fit is not None:
         results["residual"] = _entry("residual", fit.residual)
         exact_zeros |= {"residual", "delta_se"}  # 0 for exact peaks, never an underflow
         if fit.delta_se is not None:
             results["delta_se"] = _entry("delta_se", fit.delta_se)
     warnings = list(outcome.warnings) + (fit.warnings if fit is not None else [])
-    result = Result(command="damping-ratio", results=results, inputs=inputs, scene=None,
-                    model="linear", method=fit_method or "closed-form", warnings=warnings,
-                    extra=extra)
+    result = Result(command="damping-ratio", results=results, inputs=inputs.inputs,
+                    scene=None, model="linear", method=inputs.method or "closed-form",
+                    warnings=warnings, extra=extra)
     result.add_overflow_warnings()
-    result.explanation = _explain(formula, inputs, results, reference, fit, form)
+    result.explanation = _explain(formula, inputs.inputs, results, reference, fit, form)
     result.add_underflow_warnings(exact_zeros)
     return result
+
+
+def _decrement(inputs: DampingInputs) -> float:
+    """The logarithmic decrement per cycle the measurement gives (not for ``--c``)."""
+    from ..physics.damping import decrement_from_ratio
+
+    if inputs.form == "--decrement":
+        return inputs.parsed["decrement"].si
+    if inputs.form == "--ratio":
+        return decrement_from_ratio(inputs.parsed["ratio"].si, inputs.cycles)
+    return inputs.fit.delta
 
 
 def _check_method(form: str, method: str | None) -> str | None:
@@ -424,11 +515,11 @@ def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
     texts["zeta"], labels["zeta"] = repr(zeta), f"zeta (from {name})="
 
 
-def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
+def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
+    """Check a damping scene and gather its texts (``--k``, ``--m``, ``--g`` and the
+    ``NAME=QUANTITY`` words) for :func:`_from_scene`."""
     from ..result.checks import split_assignment
-    from ..physics.damping import damping_from_zeta
     from ..scenes import get_scene
-    from .natural_frequency import compute_scene
 
     scene = get_scene(name)
     damped = damping_scene_names()
@@ -447,8 +538,18 @@ def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
             raise InputError(f"{key} is given twice ({labels[key]} and {key}=)")
         texts[key], labels[key] = text, f"{key}="
     _decrement_as_zeta(scene, texts, labels, strict)
-    result = compute_scene(scene, texts, labels=labels, method=method, rtol=rtol,
-                           strict=strict, command="damping-ratio")
+    return SceneTexts(scene, texts, labels, method, rtol, strict)
+
+
+def _from_scene(read_in: SceneTexts) -> Result:
+    """The scene's Result with the decrement, Q and regime its zeta gives added; the
+    scene's sensitivity carried through zeta to them (:func:`_scene_sensitivity`)."""
+    from ..physics.damping import damping_from_zeta
+    from .natural_frequency import compute_scene
+
+    result = compute_scene(read_in.scene, read_in.texts, labels=read_in.labels,
+                           method=read_in.method, rtol=read_in.rtol, strict=read_in.strict,
+                           command="damping-ratio")
     zeta = result.results["zeta"].si
     added = damping_from_zeta(zeta)
     results: dict[str, Entry] = {}
