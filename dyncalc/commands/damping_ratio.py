@@ -36,6 +36,9 @@ from .record import Command, Parameter, results_from_kinds
 __all__ = ["COMMAND", "damping_ratio", "read", "compute", "DampingInputs", "SceneTexts",
            "parse_amplitudes", "parse_cycles", "damping_scene_names", "MAX_PEAKS"]
 
+#: ``2 pi`` (as :data:`dyncalc.physics.damping.TWO_PI`).
+_TWO_PI = 2.0 * math.pi
+
 #: The most peaks ``--amplitudes`` reads.
 MAX_PEAKS = 100_000
 
@@ -374,6 +377,7 @@ def compute(inputs: DampingInputs) -> Result:
     result.add_overflow_warnings()
     result.explanation = _explain(formula, inputs.inputs, results, reference, fit, form)
     result.add_underflow_warnings(exact_zeros)
+    result.sensitivity = lambda: _sensitivity(inputs, results)
     return result
 
 
@@ -386,6 +390,148 @@ def _decrement(inputs: DampingInputs) -> float:
     if inputs.form == "--ratio":
         return decrement_from_ratio(inputs.parsed["ratio"].si, inputs.cycles)
     return inputs.fit.delta
+
+
+# --- derivatives, for the propagation of uncertainties ---------------------------------------
+
+def _grad(*terms) -> dict:
+    """``sum a * g`` over the ``(a, g)`` pairs: the chain rule on gradients, a gradient being
+    {input name: derivative in SI}."""
+    out: dict = {}
+    for coefficient, gradient in terms:
+        for name, derivative in gradient.items():
+            out[name] = out.get(name, 0.0) + coefficient * derivative
+    return out
+
+
+def _gradients(inputs: DampingInputs, values: dict[str, float]) -> dict[str, dict]:
+    """The gradient of every result of a closed form with respect to the inputs read, by
+    the chain rule (in numpy floats: an overflow is ``inf``, never an exception).
+
+    ``--c``: ``c_c = 2 sqrt(k m)``, ``omega = sqrt(k/m)``, ``xi = c/(2m)``,
+    ``zeta = c/c_c``, ``Q = c_c/(2c)``, ``s = sqrt(1 - zeta^2) = omega_d/omega``
+    (``ds = -(zeta/s) d zeta``), ``delta = 2 pi zeta/s`` (``d delta = (2 pi/s^3) d zeta``),
+    ``omega_d = omega s``. The decrement forms: ``delta`` (``--decrement``),
+    ``ln(R)/N`` (``--ratio``) or the fit (no uncertain input); ``h = hypot(2 pi, delta)``,
+    ``zeta = delta/h`` (``d zeta = (2 pi)^2/h^3 d delta``), ``Q = h/(2 delta)``,
+    ``s = 2 pi/h``, ``omega`` typed or ``sqrt(k/m)``, ``xi = zeta omega``,
+    ``omega_d = omega s``, ``c = zeta c_c``. Always ``f_d = omega_d/(2 pi)``,
+    ``T_d = 2 pi/omega_d``.
+
+    Parameters
+    ----------
+    inputs : DampingInputs
+        The measurement as read (not a scene).
+    values : dict
+        The numeric results in SI, by name (``omega_d`` of ``--c`` gives ``s``).
+    """
+    f64 = np.float64
+    x = {name: f64(parsed.si) for name, parsed in inputs.parsed.items()}
+    two_pi, one = f64(_TWO_PI), f64(1.0)
+    g: dict[str, dict] = {}
+    omega = None
+    if "k" in x:
+        k, m = x["k"], x["m"]
+        c_c, omega = 2.0 * np.sqrt(k) * np.sqrt(m), np.sqrt(k) / np.sqrt(m)
+        g["c_c"] = _grad((c_c / (2.0 * k), {"k": one}), (c_c / (2.0 * m), {"m": one}))
+        g["omega"] = _grad((omega / (2.0 * k), {"k": one}), (-omega / (2.0 * m), {"m": one}))
+    if inputs.form == "--c":
+        c = x["c"]
+        zeta, q = c / c_c, c_c / (2.0 * c)
+        g["c"] = {"c": one}
+        g["xi"] = _grad((1.0 / (2.0 * m), {"c": one}), (-c / (2.0 * m) / m, {"m": one}))
+        g["zeta"] = _grad((1.0 / c_c, {"c": one}), (-zeta / c_c, g["c_c"]))
+        g["Q"] = _grad((1.0 / (2.0 * c), g["c_c"]), (-q / c, {"c": one}))
+        s = f64(values["omega_d"]) / omega if "omega_d" in values else f64(np.nan)
+        g["delta"] = _grad((two_pi / s ** 3, g["zeta"]))
+        g_s = _grad((-zeta / s, g["zeta"]))
+    else:
+        if inputs.form == "--decrement":
+            delta, g_delta = x["decrement"], {"decrement": one}
+        elif inputs.form == "--ratio":
+            n = f64(inputs.cycles)
+            delta = np.log(x["ratio"]) / n
+            g_delta = {"ratio": 1.0 / (x["ratio"] * n), "cycles": -delta / n}
+        else:  # the fit: the peaks carry no uncertainty
+            delta, g_delta = f64(inputs.fit.delta), {}
+        h = np.hypot(two_pi, delta)
+        zeta, s = delta / h, two_pi / h
+        g["delta"] = g_delta
+        g["zeta"] = _grad((s * s / h, g_delta))
+        g["Q"] = _grad((-(two_pi / delta) ** 2 / (2.0 * h), g_delta))
+        g_s = _grad((-s * delta / (h * h), g_delta))
+        if "omega" in x:
+            omega = x["omega"]
+            g["omega"] = {"omega": one}
+        if "k" in x:
+            g["c"] = _grad((c_c, g["zeta"]), (zeta, g["c_c"]))
+        if omega is not None:
+            g["xi"] = _grad((zeta, g["omega"]), (omega, g["zeta"]))
+    if omega is not None:
+        omega_d = omega * s
+        g["omega_d"] = _grad((s, g["omega"]), (omega, g_s))
+        g["f_d"] = _grad((1.0 / two_pi, g["omega_d"]))
+        g["T_d"] = _grad((-two_pi / omega_d / omega_d, g["omega_d"]))
+    return g
+
+
+def _sensitivity(inputs: DampingInputs, results: dict[str, Entry]):
+    """Exact derivatives of the results of a closed form (:func:`_gradients`) with respect
+    to the uncertain inputs, named as the inputs are. The fit of ``--amplitudes`` is never
+    run again: its peaks are plain numbers, so zeta, delta, Q, ``residual`` and ``delta_se``
+    carry no uncertainty, and the rest depends on ``--omega`` or ``--k``, ``--m`` in closed
+    form. A whole number of ``--cycles`` has no derivative: a ``±`` typed with it leaves the
+    results that go through the decrement unpropagated."""
+    from ..result.propagate import Sensitivity, UncertainInput
+
+    uncertain: list[UncertainInput] = []
+    for name in inputs.inputs:
+        if name == "cycles":
+            si, sigma = inputs.cycles, inputs.cycles_sigma
+        elif name in inputs.parsed:
+            si, sigma = inputs.parsed[name].si, inputs.parsed[name].uncertainty
+        else:
+            continue
+        if sigma is not None:
+            uncertain.append(UncertainInput(name, float(si), float(sigma)))
+    values = {name: e.si for name, e in results.items()
+              if e.dim is not None and not isinstance(e.si, str)}
+    with np.errstate(all="ignore"):
+        gradients = _gradients(inputs, values)
+    count_uncertain = inputs.cycles_sigma is not None
+    slopes: dict[str, dict[int, float]] = {}
+    failed: set[str] = set()
+    for name in values:
+        gradient = gradients.get(name, {})
+        if count_uncertain and "cycles" in gradient:
+            failed.add(name)
+        slopes[name] = {i: float(gradient.get(item.name, 0.0))
+                        for i, item in enumerate(uncertain) if item.name != "cycles"}
+    return Sensitivity(uncertain, slopes, failed)
+
+
+def _scene_sensitivity(scene_sensitivity, results: dict[str, Entry]):
+    """A damping scene's own sensitivity (central differences on its parameters as read,
+    :func:`dyncalc.scenes.runner.scene_sensitivity`) carried through zeta to the results
+    added here: ``d delta / d zeta = 2 pi / (1 - zeta^2)^(3/2)``,
+    ``d Q / d zeta = -1 / (2 zeta^2)``."""
+    sensitivity = scene_sensitivity()
+    zeta = np.float64(results["zeta"].si)
+    factors = {}
+    with np.errstate(all="ignore"):
+        if "delta" in results:
+            factors["delta"] = _TWO_PI / np.sqrt((1.0 - zeta) * (1.0 + zeta)) ** 3
+        if "Q" in results:
+            factors["Q"] = -0.5 / (zeta * zeta)
+        by_zeta = sensitivity.slopes.get("zeta", {})
+        for name, factor in factors.items():
+            if "zeta" in sensitivity.failed:
+                sensitivity.failed.add(name)
+                continue
+            sensitivity.failed.discard(name)
+            sensitivity.slopes[name] = {i: factor * np.asarray(slope, dtype=float)
+                                        for i, slope in by_zeta.items()}
+    return sensitivity
 
 
 def _check_method(form: str, method: str | None) -> str | None:
@@ -550,6 +696,7 @@ def _from_scene(read_in: SceneTexts) -> Result:
     result = compute_scene(read_in.scene, read_in.texts, labels=read_in.labels,
                            method=read_in.method, rtol=read_in.rtol, strict=read_in.strict,
                            command="damping-ratio")
+    scene_sensitivity = result.sensitivity  # None for an inverse problem
     zeta = result.results["zeta"].si
     added = damping_from_zeta(zeta)
     results: dict[str, Entry] = {}
@@ -573,6 +720,8 @@ def _from_scene(read_in: SceneTexts) -> Result:
         warnings += [w for w in added.warnings if w not in warnings]
     result.results = results
     result.warnings = warnings
+    if scene_sensitivity is not None:
+        result.sensitivity = lambda: _scene_sensitivity(scene_sensitivity, results)
     if result.explanation is not None:
         result.explanation.formula.append(
             "delta = 2 pi zeta / sqrt((1 - zeta)(1 + zeta)) (underdamped), Q = 1/(2 zeta)")
