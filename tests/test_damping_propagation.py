@@ -337,3 +337,73 @@ def test_scene_reads_every_text_once(monkeypatch):
     assert len(calls) == 5 and len(set(calls)) == 5, calls
     assert len(runs) == 1 + 2 * 3
     assert r.results["delta"].uncertainty > 0 and r.results["Q"].uncertainty > 0
+
+
+# --- an inverse scene: a root find, differenced on the values as read ------------------------
+
+def test_inverse_scene_from_q_reads_once_and_solves_twice_per_input(monkeypatch):
+    """pendulum-spring-dashpot solved for k from Q = 10 ± 0.5 (zeta = 1/(2Q), d = 6 N*s/m):
+    zeta = d/(8 sqrt(k m + g m^2/(2a))) gives k = ((d Q/4)^2 - g m^2/(2a))/m. Every text is
+    read once (Q's as the zeta target it becomes, u(zeta) = u(Q)/(2 Q^2), once too); the
+    full root search runs once, as typed, and each of the two uncertain inputs is solved
+    again twice, next to the root found. The shares are named as typed: Q, m."""
+    from dyncalc.scenes import inverse, runner
+
+    calls = []
+    for module in (dr, runner, inverse):
+        original = module.parse_quantity
+
+        def counting(*args, _original=original, **kwargs):
+            calls.append(args[0])
+            return _original(*args, **kwargs)
+        monkeypatch.setattr(module, "parse_quantity", counting)
+    searches, near = [], []
+    roots, roots_next_to = inverse._Problem.roots, inverse._Problem.roots_next_to
+    monkeypatch.setattr(inverse._Problem, "roots",
+                        lambda self, goal: searches.append(goal) or roots(self, goal))
+    monkeypatch.setattr(inverse._Problem, "roots_next_to",
+                        lambda self, before, goal: near.append(goal)
+                        or roots_next_to(self, before, goal))
+    r = propagate(lambda: dr.damping_ratio(scene="pendulum-spring-dashpot", params=(
+        "m=2 ± 0.1 kg", "a=0.5m", "d=6 N*s/m", "Q=10 ± 0.5")))
+    # each typed text once (g by its default), and once the zeta target Q became
+    assert sorted(calls) == sorted(["2 ± 0.1 kg", "0.5m", "6 N*s/m", "9.80665 m/s^2",
+                                    "10 ± 0.5", "0.05 +/- 0.0025"]), calls
+    assert len(searches) == 1 and len(near) == 2 * 2
+
+    def k(m, Q):
+        return ((6 * Q / 4) ** 2 - G0 * m ** 2 / (2 * 0.5)) / m
+
+    slopes = mp_slopes(k, {"m": 2.0, "Q": 10.0})
+    terms = {"m": float(slopes["m"] * 0.1) ** 2, "Q": float(slopes["Q"] * 0.5) ** 2}
+    assert r.results["k"].si == pytest.approx(float(k(mpmath.mpf(2), mpmath.mpf(10))),
+                                              rel=1e-12)
+    assert r.results["k"].uncertainty == pytest.approx(math.sqrt(sum(terms.values())),
+                                                       rel=DIFF_TOL)
+    shares = r.explanation.variance["k"]
+    assert set(shares) == {"m", "Q"}
+    assert shares["Q"] == pytest.approx(terms["Q"] / sum(terms.values()), rel=1e-6)
+    # zeta and delta follow from Q alone: u(zeta) = u(Q)/(2 Q^2), all of their variance is Q's
+    assert r.results["zeta"].uncertainty == pytest.approx(0.5 / 200, rel=DIFF_TOL)
+    assert r.explanation.variance["delta"] == {"m": 0.0, "Q": 1.0}
+    assert r.inputs["zeta"].uncertainty is None  # zeta (from Q) is shown as before
+
+
+def test_inverse_scene_from_delta():
+    """rod-in-fluid solved for beta from delta = 0.5 ± 0.02: beta = zeta beta_crit,
+    zeta = delta/sqrt(4 pi^2 + delta^2), beta_crit = (m/l) sqrt(6 g/l); the shares are
+    named delta and m, as the user typed them."""
+    r = propagate(lambda: dr.damping_ratio(scene="rod-in-fluid", params=(
+        "m=1.5 ± 0.1 kg", "l=0.8m", "delta=0.5 ± 0.02")))
+
+    def beta(m, delta):
+        zeta = delta / mpmath.sqrt(4 * mpmath.pi ** 2 + delta ** 2)
+        l = mpmath.mpf("0.8")
+        return zeta * m / l * mpmath.sqrt(6 * mpmath.mpf(G0) / l)
+
+    slopes = mp_slopes(beta, {"m": 1.5, "delta": 0.5})
+    terms = {"m": float(slopes["m"] * 0.1) ** 2, "delta": float(slopes["delta"] * 0.02) ** 2}
+    assert r.results["beta"].uncertainty == pytest.approx(math.sqrt(sum(terms.values())),
+                                                          rel=DIFF_TOL)
+    assert set(r.explanation.variance["beta"]) == {"m", "delta"}
+    assert r.results["delta"].uncertainty == pytest.approx(0.02, rel=DIFF_TOL)

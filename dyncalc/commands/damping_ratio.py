@@ -157,16 +157,18 @@ def _read_cycles(text: str, label: str = "--cycles") -> tuple[int, float | None]
 
 class SceneTexts:
     """A damping scene as checked by :func:`read`: the scene, its parameter texts and labels
-    (a ``delta=`` or ``Q=`` given to solve from already turned into ``zeta=``), and the
-    settings :func:`~dyncalc.commands.natural_frequency.compute_scene` takes. The scene's
-    texts are read once, by the scene runner, when :func:`compute` runs it."""
+    (a ``delta=`` or ``Q=`` given to solve from already turned into ``zeta=``; ``given`` is
+    then its name and the value read), and the settings
+    :func:`~dyncalc.commands.natural_frequency.compute_scene` takes. The scene's texts are
+    read once, by the scene runner, when :func:`compute` runs it."""
 
-    __slots__ = ("scene", "texts", "labels", "method", "rtol", "strict")
+    __slots__ = ("scene", "texts", "labels", "method", "rtol", "strict", "given")
 
     def __init__(self, scene, texts: dict[str, str], labels: dict[str, str], method, rtol,
-                 strict: bool):
+                 strict: bool, given=None):
         self.scene, self.texts, self.labels = scene, texts, labels
         self.method, self.rtol, self.strict = method, rtol, strict
+        self.given = given
 
 
 class DampingInputs:
@@ -510,12 +512,16 @@ def _sensitivity(inputs: DampingInputs, results: dict[str, Entry]):
     return Sensitivity(uncertain, slopes, failed)
 
 
-def _scene_sensitivity(scene_sensitivity, results: dict[str, Entry]):
+def _scene_sensitivity(scene_sensitivity, results: dict[str, Entry], given=None):
     """A damping scene's own sensitivity (central differences on its parameters as read,
-    :func:`dyncalc.scenes.runner.scene_sensitivity`) carried through zeta to the results
-    added here: ``d delta / d zeta = 2 pi / (1 - zeta^2)^(3/2)``,
-    ``d Q / d zeta = -1 / (2 zeta^2)``."""
+    :func:`dyncalc.scenes.runner.scene_sensitivity`, or on the values of an inverse problem,
+    :func:`dyncalc.scenes.inverse.solve`) carried through zeta to the results added here:
+    ``d delta / d zeta = 2 pi / (1 - zeta^2)^(3/2)``, ``d Q / d zeta = -1 / (2 zeta^2)``.
+    A ``delta=`` or ``Q=`` solved from (``given``) is the input, not the zeta it became
+    (:func:`_as_given`)."""
     sensitivity = scene_sensitivity()
+    if given is not None and given[1].uncertainty is not None:
+        _as_given(sensitivity, given, results)
     zeta = np.float64(results["zeta"].si)
     factors = {}
     with np.errstate(all="ignore"):
@@ -532,6 +538,28 @@ def _scene_sensitivity(scene_sensitivity, results: dict[str, Entry]):
             sensitivity.slopes[name] = {i: factor * np.asarray(slope, dtype=float)
                                         for i, slope in by_zeta.items()}
     return sensitivity
+
+
+def _as_given(sensitivity, given, results: dict[str, Entry]) -> None:
+    """The target ``zeta`` of an inverse scene, solved from ``delta=`` or ``Q=``, as the
+    value typed: named as typed, its slopes times ``d zeta / d delta`` (or ``d Q``)."""
+    from ..result.propagate import UncertainInput
+
+    name, parsed = given
+    typed = UncertainInput(name, float(parsed.si), float(parsed.uncertainty))
+    index = next((i for i, item in enumerate(sensitivity.inputs) if item.name == "zeta"),
+                 None)
+    if index is None:  # u(zeta) was beyond float64 and not passed on
+        sensitivity.inputs.append(typed)
+        sensitivity.failed |= {n for n, e in results.items()
+                               if e.dim is not None and not isinstance(e.si, str)}
+        return
+    sensitivity.inputs[index] = typed
+    slope = _zeta_slope(name, parsed.si)
+    with np.errstate(all="ignore"):
+        for row in sensitivity.slopes.values():
+            if index in row:
+                row[index] = slope * np.asarray(row[index], dtype=float)
 
 
 def _check_method(form: str, method: str | None) -> str | None:
@@ -641,24 +669,43 @@ def _explain(formula, inputs, results, reference, fit, form="") -> Explanation:
 # --- scenes with a damper --------------------------------------------------------------------
 
 def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
-                       strict: bool) -> None:
+                       strict: bool):
     """``delta=`` or ``Q=`` given to solve a damping scene for one of its parameters: the
     damping ratio they mean (``zeta = delta / sqrt(4 pi^2 + delta^2)``, ``zeta = 1/(2Q)``)
-    becomes the ``zeta=`` target the scene solves from (:mod:`dyncalc.scenes.inverse`)."""
+    becomes the ``zeta=`` target the scene solves from (:mod:`dyncalc.scenes.inverse`), with
+    the uncertainty that follows (``u(zeta) = |d zeta / d delta| u(delta)``) when one was
+    typed. Returns ``(name, parsed)`` of the value given, or ``None``."""
     from ..physics.damping import zeta_from_decrement
 
     given = [n for n in ("delta", "Q") if n in texts and scene.param(n) is None]
     if not given:
-        return
+        return None
     if len(given) > 1 or "zeta" in texts:
         raise InputError("give one of zeta=, delta= and Q= to solve from")
     name = given[0]
     text = texts.pop(name)
     label = labels.pop(name, f"{name}=").rstrip("=")
-    value = parse_quantity(text, DIMENSIONLESS, label=label, strict=strict,
-                           constraint="positive").si
+    parsed = parse_quantity(text, DIMENSIONLESS, label=label, strict=strict,
+                            constraint="positive")
+    value = parsed.si
     zeta = zeta_from_decrement(value) if name == "delta" else 0.5 / value
     texts["zeta"], labels["zeta"] = repr(zeta), f"zeta (from {name})="
+    if parsed.uncertainty is not None:
+        sigma = float(abs(_zeta_slope(name, value)) * parsed.uncertainty)
+        if math.isfinite(zeta) and math.isfinite(sigma):
+            texts["zeta"] = f"{zeta!r} +/- {sigma!r}"
+    return name, parsed
+
+
+def _zeta_slope(name: str, value: float):
+    """``d zeta / d delta = (2 pi)^2 / h^3`` (``h = hypot(2 pi, delta)``) at ``value`` of
+    ``delta``, or ``d zeta / d Q = -1 / (2 Q^2)`` at ``value`` of ``Q``."""
+    value = np.float64(value)
+    with np.errstate(all="ignore"):
+        if name == "delta":
+            h = np.hypot(_TWO_PI, value)
+            return (_TWO_PI / h) ** 2 / h
+        return -0.5 / value / value
 
 
 def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
@@ -683,8 +730,8 @@ def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
         if key in texts:
             raise InputError(f"{key} is given twice ({labels[key]} and {key}=)")
         texts[key], labels[key] = text, f"{key}="
-    _decrement_as_zeta(scene, texts, labels, strict)
-    return SceneTexts(scene, texts, labels, method, rtol, strict)
+    given = _decrement_as_zeta(scene, texts, labels, strict)
+    return SceneTexts(scene, texts, labels, method, rtol, strict, given)
 
 
 def _from_scene(read_in: SceneTexts) -> Result:
@@ -696,7 +743,12 @@ def _from_scene(read_in: SceneTexts) -> Result:
     result = compute_scene(read_in.scene, read_in.texts, labels=read_in.labels,
                            method=read_in.method, rtol=read_in.rtol, strict=read_in.strict,
                            command="damping-ratio")
-    scene_sensitivity = result.sensitivity  # None for an inverse problem
+    scene_sensitivity = result.sensitivity
+    given = read_in.given
+    if given is not None and given[1].uncertainty is not None:
+        # zeta (from delta), the target (no damping scene takes zeta), is shown plain as
+        # before: its uncertainty is delta's, propagated under delta's name
+        result.inputs["zeta"].uncertainty = None
     zeta = result.results["zeta"].si
     added = damping_from_zeta(zeta)
     results: dict[str, Entry] = {}
@@ -721,7 +773,7 @@ def _from_scene(read_in: SceneTexts) -> Result:
     result.results = results
     result.warnings = warnings
     if scene_sensitivity is not None:
-        result.sensitivity = lambda: _scene_sensitivity(scene_sensitivity, results)
+        result.sensitivity = lambda: _scene_sensitivity(scene_sensitivity, results, given)
     if result.explanation is not None:
         result.explanation.formula.append(
             "delta = 2 pi zeta / sqrt((1 - zeta)(1 + zeta)) (underdamped), Q = 1/(2 zeta)")

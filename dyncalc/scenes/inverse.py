@@ -26,6 +26,9 @@ How (decided here, SPEC.md "Inverse problems"):
 Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
 catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
 spring), far enough apart.
+
+Uncertainties: the Result's ``sensitivity`` (:func:`_sensitivity`) differences the solution on
+the values as read, each uncertain input nudged and solved again next to the roots found.
 """
 from __future__ import annotations
 
@@ -81,6 +84,20 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     inputs = dict(prepared.inputs)
     inputs[target] = entry_from_parsed(target, parsed_goal, kind.dim, symbol=kind.symbol,
                                        description=kind.description)
+    result = _result(problem, roots, inputs, _typed(parsed_goal, kind), command)
+    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
+    if how[1]:
+        note = f"{unknown.name} solved from {target}: {how[1]}"
+        result.amend_explanation(lambda explanation: explanation.assumptions.append(note))
+    result.sensitivity = lambda: _sensitivity(problem, parsed_goal, roots, result)
+    return result
+
+
+def _result(problem: _Problem, roots: list[float], inputs: dict[str, Entry], goal_text: str,
+            command: str):
+    """The Result of the roots found: the unknown (``k``, or ``k_1``, ``k_2``, ... for several
+    roots) first, then the scene's results at a single root."""
+    unknown, target = problem.param, problem.target
     unit = "deg" if unknown.dim is ANGLE else unknown.dim.si
     describe = f"{unknown.description} (solved from {target})"
     names = [unknown.name] if len(roots) == 1 else \
@@ -94,13 +111,49 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         values = {}
         shown = ", ".join(f"{_shown(x, unknown):.6g} {unit}" for x in roots)
         warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
-                        f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
-    result = make_result(scene, inputs, outcome, values, warnings, command, solved)
-    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
-    if how[1]:
-        note = f"{unknown.name} solved from {target}: {how[1]}"
-        result.amend_explanation(lambda explanation: explanation.assumptions.append(note))
-    return result
+                        f"{goal_text}: {shown}; each is a result")
+    return make_result(problem.scene, inputs, outcome, values, warnings, command, solved)
+
+
+def _sensitivity(problem: _Problem, goal, roots: list[float], result):
+    """The derivatives of an inverse problem's results with respect to its uncertain inputs
+    (the parameters given, then the result solved from), by central differences on the
+    values as read (:func:`dyncalc.result.propagate.central_differences`): each nudged
+    computation solves again next to the roots found (:meth:`_Problem.roots_next_to`; the
+    whole search only where that fails) and nothing is parsed again, so the cost is two
+    solutions per uncertain input."""
+    from ..result.propagate import UncertainInput, _numbers, central_differences
+    from .runner import _nudged
+
+    prepared, target = problem.prepared, problem.target
+    names = [name for name, entry in prepared.inputs.items()
+             if entry.uncertainty is not None and name in prepared.si]
+    inputs = [UncertainInput(name, float(prepared.si[name]),
+                             float(prepared.inputs[name].uncertainty)) for name in names]
+    if goal.uncertainty is not None:
+        inputs.append(UncertainInput(target, float(goal.si), float(goal.uncertainty)))
+
+    def rerun(index: int, offset: float):
+        nudged, y = prepared, goal.si
+        if index < len(names):
+            nudged = _nudged(problem.scene, prepared, names[index], offset)
+            if nudged is None:
+                return None
+        else:
+            y = goal.si + offset
+        moved = _Problem(problem.scene, nudged, problem.param, target, problem.method,
+                         problem.rtol)
+        try:
+            found = moved.roots_next_to(roots, y)
+            if found is None:
+                found = moved.roots(y)[0]
+            if not found:
+                return None
+            return _numbers(_result(moved, found, result.inputs, "", result.command))
+        except InputError:
+            return None
+
+    return central_differences(inputs, _numbers(result), rerun)
 
 
 def _split(scene: Scene, texts: dict[str, str], labels: dict[str, str]):
@@ -239,13 +292,21 @@ class _Problem:
         hint = nudged_hint(key)
         if hint is not None:
             before, how = hint
-            near = [self._root_between(r - 1e-3 * abs(r), r + 1e-3 * abs(r), goal)
-                    for r in before]
-            if before and all(r is not None for r in near):
-                return _distinct(near), how
+            near = self.roots_next_to(before, goal)
+            if near is not None:
+                return near, how
         roots, how = self.roots(goal)
         store_hint(key, (roots, how))
         return roots, how
+
+    def roots_next_to(self, before: list[float], goal: float) -> list[float] | None:
+        """The roots within 0.1 % of the roots ``before`` (found for inputs 1e-6 away), each
+        bracketed anew; ``None`` unless every one of them is found again."""
+        near = [self._root_between(r - 1e-3 * abs(r), r + 1e-3 * abs(r), goal)
+                for r in before]
+        if before and all(r is not None for r in near):
+            return _distinct(near)
+        return None
 
     def _root_between(self, lo: float, hi: float, goal: float) -> float | None:
         """The root of ``y - goal`` in ``[lo, hi]`` if the ends bracket one, else ``None``."""
