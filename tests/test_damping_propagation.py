@@ -407,3 +407,17 @@ def test_inverse_scene_from_delta():
                                                           rel=DIFF_TOL)
     assert set(r.explanation.variance["beta"]) == {"m", "delta"}
     assert r.results["delta"].uncertainty == pytest.approx(0.02, rel=DIFF_TOL)
+
+
+def test_a_bracket_is_judged_by_signs_not_by_a_product():
+    """Solving again next to a root: omega = sqrt(k/m) with m = 1e300 kg is 1e-165 rad/s at
+    k = 1e-30 N/m. Between k = 4e-30 and 9e-30 there is no root (y - goal = 1e-165 and
+    2e-165, whose product underflows to 0: taken for a bracket, Brent's method refused it
+    and the propagation crashed); between 2.5e-31 and 4e-30 there is one."""
+    from dyncalc.scenes import get_scene, inverse, runner
+
+    scene = get_scene("mass-spring")
+    prepared = runner.read_inputs(scene, {"m": "1e300 kg"}, {}, False, unknown=("k",))
+    problem = inverse._Problem(scene, prepared, scene.param("k"), "omega", None, None)
+    assert problem._root_between(4e-30, 9e-30, 1e-165) is None
+    assert problem._root_between(2.5e-31, 4e-30, 1e-165) == pytest.approx(1e-30, rel=1e-12)

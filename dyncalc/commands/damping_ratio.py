@@ -691,7 +691,9 @@ def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
     zeta = zeta_from_decrement(value) if name == "delta" else 0.5 / value
     texts["zeta"], labels["zeta"] = repr(zeta), f"zeta (from {name})="
     if parsed.uncertainty is not None:
-        sigma = float(abs(_zeta_slope(name, value)) * parsed.uncertainty)
+        with np.errstate(all="ignore"):
+            sigma = float(abs(_zeta_slope(name, value)) * parsed.uncertainty
+                          if parsed.uncertainty else 0.0)
         if math.isfinite(zeta) and math.isfinite(sigma):
             texts["zeta"] = f"{zeta!r} +/- {sigma!r}"
     return name, parsed

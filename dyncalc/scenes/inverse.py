@@ -311,10 +311,12 @@ class _Problem:
     def _root_between(self, lo: float, hi: float, goal: float) -> float | None:
         """The root of ``y - goal`` in ``[lo, hi]`` if the ends bracket one, else ``None``."""
         g_lo, g_hi = self.y(lo) - goal, self.y(hi) - goal
-        if not (math.isfinite(g_lo) and math.isfinite(g_hi)) or g_lo * g_hi > 0:
+        if not (math.isfinite(g_lo) and math.isfinite(g_hi)):
             return None
         if g_lo == 0 or g_hi == 0:
             return lo if g_lo == 0 else hi
+        if (g_lo > 0) == (g_hi > 0):  # by the signs: a product of two tiny ones underflows
+            return None
         from scipy.optimize import brentq
 
         return brentq(lambda x: self.y(x) - goal, lo, hi, xtol=1e-300,
