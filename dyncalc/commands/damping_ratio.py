@@ -1,9 +1,10 @@
 """``damping-ratio``: the damping ratio, decrement, regime and damped period from a measurement.
 
-:func:`damping_ratio` takes the texts the user typed, reads them (``dyncalc.units``), calls the
-physics (``dyncalc.physics.damping``, ``dyncalc.physics.decay_fit``, or a damping scene through
-the scene runner) and returns a :class:`~dyncalc.result.Result`. ``--plot`` draws its free
-decay (:func:`dyncalc.cli.plot.plot_decay`).
+:func:`damping_ratio` takes the texts the user typed; :func:`read` parses and checks each of them
+once (``dyncalc.units``) into :class:`DampingInputs`, and :func:`compute` calls the physics
+(``dyncalc.physics.damping``, ``dyncalc.physics.decay_fit``, or a damping scene through the
+scene runner) and returns a :class:`~dyncalc.result.Result`. ``--plot`` draws its free decay
+(:func:`dyncalc.cli.plot.plot_decay`).
 
 The input forms, exactly one of them:
 
@@ -27,12 +28,16 @@ from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from ..result.explain import Formula
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
-from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DECAY_RATE,
-                     DIMENSIONLESS, MASS, STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
+from ..result.kinds import DECAY_RATE
+from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS,
+                     STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
 from .record import Command, Parameter, results_from_kinds
 
-__all__ = ["COMMAND", "damping_ratio", "parse_amplitudes", "parse_cycles", "damping_scene_names",
-           "MAX_PEAKS"]
+__all__ = ["COMMAND", "damping_ratio", "read", "compute", "DampingInputs", "SceneTexts",
+           "parse_amplitudes", "parse_cycles", "damping_scene_names", "MAX_PEAKS"]
+
+#: ``2 pi`` (as :data:`dyncalc.physics.damping.TWO_PI`).
+_TWO_PI = 2.0 * math.pi
 
 #: The most peaks ``--amplitudes`` reads.
 MAX_PEAKS = 100_000
@@ -132,17 +137,69 @@ def parse_cycles(text: str, label: str = "--cycles") -> int:
     >>> parse_cycles("10"), parse_cycles("1e2")
     (10, 100)
     """
-    value = parse_quantity(text, DIMENSIONLESS, label=label).si
+    return _read_cycles(text, label)[0]
+
+
+def _read_cycles(text: str, label: str = "--cycles") -> tuple[int, float | None]:
+    """:func:`parse_cycles` and the uncertainty typed with the count (``None`` without)."""
+    parsed = parse_quantity(text, DIMENSIONLESS, label=label)
+    value = parsed.si
     if not float(value).is_integer():
         raise InputError(f"{label} must be a whole number of cycles (1, 2, 3, ...); got "
                          f"{value:.15g}")
     if value < 1:
         raise InputError(f"{label} must be at least 1 (a whole number of cycles); got "
                          f"{value:.15g}")
-    return int(value)
+    return int(value), parsed.uncertainty
 
 
 # --- the command -----------------------------------------------------------------------------
+
+class SceneTexts:
+    """A damping scene as checked by :func:`read`: the scene, its parameter texts and labels
+    (a ``delta=`` or ``Q=`` given to solve from already turned into ``zeta=``; ``given`` is
+    then its name and the value read), and the settings
+    :func:`~dyncalc.commands.natural_frequency.compute_scene` takes. The scene's texts are
+    read once, by the scene runner, when :func:`compute` runs it."""
+
+    __slots__ = ("scene", "texts", "labels", "method", "rtol", "strict", "given")
+
+    def __init__(self, scene, texts: dict[str, str], labels: dict[str, str], method, rtol,
+                 strict: bool, given=None):
+        self.scene, self.texts, self.labels = scene, texts, labels
+        self.method, self.rtol, self.strict = method, rtol, strict
+        self.given = given
+
+
+class DampingInputs:
+    """A damping measurement as read by :func:`read`: what :func:`compute` needs, and nothing
+    typed is read again after it.
+
+    ``form`` is the option that gave the damping (``--c``, ``--decrement``, ``--ratio``,
+    ``--amplitudes``, ``--scene``); ``inputs`` the input entries in the order read; ``parsed``
+    the quantities read, by name (``c``, ``k``, ``m``, ``omega``, ``decrement``, ``ratio``);
+    ``cycles`` the whole cycles of ``--ratio`` and ``cycles_sigma`` an uncertainty typed with
+    them; ``fit`` the decay fitted to ``--amplitudes`` (how the peaks are read into a
+    decrement: it refuses peaks that grow) and ``method`` its method; ``scene`` a scene's
+    checked texts (:class:`SceneTexts`).
+    """
+
+    __slots__ = ("form", "inputs", "parsed", "cycles", "cycles_sigma", "fit", "method",
+                 "scene")
+
+    def __init__(self, form: str):
+        self.form = form
+        self.inputs: dict[str, Entry] = {}
+        self.parsed: dict = {}
+        self.cycles: int | None = None
+        self.cycles_sigma: float | None = None
+        self.fit = None
+        self.method: str | None = None
+        self.scene: SceneTexts | None = None
+
+    def __repr__(self) -> str:
+        return f"DampingInputs({self.form!r}, {list(self.inputs)!r})"
+
 
 def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None = None,
                   omega: str | None = None, decrement: str | None = None,
@@ -151,7 +208,8 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
                   params: tuple[str, ...] | list[str] = (), g: str | None = None,
                   method: str | None = None, rtol: float | None = None,
                   strict: bool = False) -> Result:
-    """The damping ratio and everything that follows from it, from one measurement.
+    """The damping ratio and everything that follows from it, from one measurement
+    (:func:`read`, then :func:`compute`).
 
     Every argument is the text the user typed (``None`` when not given); see the module's
     docstring for the forms. Returns a :class:`Result` with ``zeta``, ``delta``, ``regime``,
@@ -162,6 +220,19 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
     >>> round(r.results["zeta"].si, 6), r.results["regime"].si
     (0.036622, 'underdamped')
     """
+    return compute(read(c=c, k=k, m=m, omega=omega, decrement=decrement, ratio=ratio,
+                        cycles=cycles, amplitudes=amplitudes, scene=scene, params=params, g=g,
+                        method=method, rtol=rtol, strict=strict))
+
+
+def read(*, c: str | None = None, k: str | None = None, m: str | None = None,
+         omega: str | None = None, decrement: str | None = None, ratio: str | None = None,
+         cycles: str | None = None, amplitudes: str | None = None, scene: str | None = None,
+         params: tuple[str, ...] | list[str] = (), g: str | None = None,
+         method: str | None = None, rtol: float | None = None,
+         strict: bool = False) -> DampingInputs:
+    """The texts of :func:`damping_ratio` -> :class:`DampingInputs`: the form chosen, every
+    quantity parsed and checked once (the peaks fitted), a scene's texts checked."""
     forms = []
     if c is not None:
         forms.append("--c")
@@ -186,7 +257,9 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         if omega is not None:
             raise InputError("--omega is not used with --scene: the scene gives its own "
                              "natural frequency")
-        return _from_scene(scene, params, k, m, g, method, rtol, strict)
+        read_in = DampingInputs(form)
+        read_in.scene = _read_scene(scene, params, k, m, g, method, rtol, strict)
+        return read_in
     if g is not None:
         raise InputError("--g is a scene parameter: use it with --scene")
     if form == "--cycles":
@@ -202,74 +275,87 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
         given, other = ("--k", "--m") if m is None else ("--m", "--k")
         raise InputError(f"{given} needs {other}: together they give the natural frequency "
                          "sqrt(k/m) and c_c = 2 sqrt(k m)")
-    fit_method = _check_method(form, method)
+    read_in = DampingInputs(form)
+    read_in.method = _check_method(form, method)
 
-    inputs: dict[str, Entry] = {}
-
-    def read(name: str, text: str, dim: Dim, label: str, constraint: str | None):
+    def quantity(name: str, text: str, dim: Dim, label: str, constraint: str | None):
         parsed = parse_quantity(text, dim, label=label, strict=strict, constraint=constraint)
-        inputs[name] = entry_from_parsed(name, parsed, dim)
+        read_in.inputs[name] = entry_from_parsed(name, parsed, dim)
+        read_in.parsed[name] = parsed
         return parsed
 
+    if form == "--c":
+        quantity("c", c, DAMPING, "--c", "nonnegative")
+        quantity("k", k, STIFFNESS, "--k", "positive")
+        quantity("m", m, MASS, "--m", "positive")
+        return read_in
+    if form == "--decrement":
+        quantity("decrement", decrement, DIMENSIONLESS, "--decrement", "nonnegative")
+    elif form == "--ratio":
+        pr = quantity("ratio", ratio, DIMENSIONLESS, "--ratio", None)
+        read_in.cycles, read_in.cycles_sigma = _read_cycles(cycles if cycles is not None
+                                                            else "1")
+        read_in.inputs["cycles"] = Entry("cycles", float(read_in.cycles), DIMENSIONLESS,
+                                         description="whole cycles between the two peaks",
+                                         text="1" if cycles is None else cycles)
+        if pr.si < 1.0:
+            raise InputError(f"--ratio must be at least 1: it is x_i / x_(i+N), the "
+                             f"earlier peak over the later one; got {pr.si:.15g} (for "
+                             f"decaying peaks, did you mean {1.0 / pr.si:.6g}?)"
+                             if pr.si > 0 else
+                             f"--ratio must be at least 1: it is x_i / x_(i+N), the "
+                             f"earlier peak over the later one; got {pr.si:.15g}")
+    else:
+        peaks, unit = parse_amplitudes(amplitudes)
+        read_in.inputs["amplitudes"] = Entry("amplitudes", peaks, None, unit=unit,
+                                             description="successive peaks, one per cycle",
+                                             text=amplitudes)
+        read_in.fit = _fit(peaks, read_in.method, rtol)
+    if omega is not None:
+        quantity("omega", omega, ANGULAR_RATE, "--omega", "positive")
+    if k is not None:
+        quantity("k", k, STIFFNESS, "--k", "positive")
+        quantity("m", m, MASS, "--m", "positive")
+    return read_in
+
+
+def compute(inputs: DampingInputs) -> Result:
+    """The Result of a measurement read by :func:`read`, with its ``sensitivity``: exact
+    derivatives for the closed forms (:func:`_sensitivity`), a scene's own carried through
+    zeta to the results added here (:func:`_from_scene`)."""
+    if inputs.form == "--scene":
+        return _from_scene(inputs.scene)
     from ..physics import damping as phys
 
+    form, parsed = inputs.form, inputs.parsed
     extra: dict = {}
     formula: list[str] = []
     reference = ""
-    fit = None
+    fit = inputs.fit
     exact_zeros: set[str] = set()
     c_unit = None
     if form == "--c":
-        pc = read("c", c, DAMPING, "--c", "nonnegative")
-        pk = read("k", k, STIFFNESS, "--k", "positive")
-        pm = read("m", m, MASS, "--m", "positive")
+        pc, pk, pm = parsed["c"], parsed["k"], parsed["m"]
         outcome = phys.damping_from_coefficients(pc.quantity, pk.quantity, pm.quantity)
-        c_unit = inputs["c"].unit if pc.unit_text else None
+        c_unit = inputs.inputs["c"].unit if pc.unit_text else None
         if pc.si == 0.0:
             exact_zeros |= {"zeta", "delta", "xi"}
         formula = ["c_c = 2 sqrt(k m), zeta = c / c_c, omega = sqrt(k/m), xi = c / (2 m)",
                    "underdamped: omega_d = sqrt(4 k m - c^2) / (2 m), T_d = 2 pi / omega_d, "
                    "delta = 2 pi c / sqrt(4 k m - c^2)", "Q = c_c / (2 c) = 1/(2 zeta)"]
     else:
-        if form == "--decrement":
-            delta = read("decrement", decrement, DIMENSIONLESS, "--decrement",
-                         "nonnegative").si
-            formula = []
-        elif form == "--ratio":
-            pr = read("ratio", ratio, DIMENSIONLESS, "--ratio", None)
-            n_cycles = parse_cycles(cycles if cycles is not None else "1")
-            inputs["cycles"] = Entry("cycles", float(n_cycles), DIMENSIONLESS,
-                                     description="whole cycles between the two peaks",
-                                     text="1" if cycles is None else cycles)
-            if pr.si < 1.0:
-                raise InputError(f"--ratio must be at least 1: it is x_i / x_(i+N), the "
-                                 f"earlier peak over the later one; got {pr.si:.15g} (for "
-                                 f"decaying peaks, did you mean {1.0 / pr.si:.6g}?)"
-                                 if pr.si > 0 else
-                                 f"--ratio must be at least 1: it is x_i / x_(i+N), the "
-                                 f"earlier peak over the later one; got {pr.si:.15g}")
-            delta = phys.decrement_from_ratio(pr.si, n_cycles)
+        delta = _decrement(inputs)
+        if form == "--ratio":
             formula = ["delta = ln(R) / N"]
             reference = "E5.18"
-        else:
-            peaks, unit = parse_amplitudes(amplitudes)
-            inputs["amplitudes"] = Entry("amplitudes", peaks, None, unit=unit,
-                                         description="successive peaks, one per cycle",
-                                         text=amplitudes)
-            fit = _fit(peaks, fit_method, rtol)
-            delta = fit.delta
+        elif form == "--amplitudes":
             extra["fit"] = fit.as_dict()
             formula = (["ln x_i = ln x0 - delta i, least squares over the peaks i = 0 .. n-1"]
-                       if fit_method == "log-linear" else
+                       if inputs.method == "log-linear" else
                        ["x_i = x0 exp(-delta i), least squares over the peaks i = 0 .. n-1"])
         if delta == 0.0:
             exact_zeros |= {"zeta", "delta", "xi", "c"}
-        kw = {}
-        if omega is not None:
-            kw["omega"] = read("omega", omega, ANGULAR_RATE, "--omega", "positive").quantity
-        if k is not None:
-            kw["k"] = read("k", k, STIFFNESS, "--k", "positive").quantity
-            kw["m"] = read("m", m, MASS, "--m", "positive").quantity
+        kw = {name: parsed[name].quantity for name in ("omega", "k", "m") if name in parsed}
         outcome = phys.damping_from_decrement(delta, **kw)
         formula += ["zeta = delta / sqrt(4 pi^2 + delta^2), Q = 1/(2 zeta)"]
         if kw:
@@ -282,20 +368,200 @@ def damping_ratio(*, c: str | None = None, k: str | None = None, m: str | None =
     if c_unit is not None:
         for name in ("c", "c_c"):
             results[name].unit = c_unit
-        results["c"].exact = inputs["c"].exact
+        results["c"].exact = inputs.inputs["c"].exact
     if fit is not None:
         results["residual"] = _entry("residual", fit.residual)
         exact_zeros |= {"residual", "delta_se"}  # 0 for exact peaks, never an underflow
         if fit.delta_se is not None:
             results["delta_se"] = _entry("delta_se", fit.delta_se)
     warnings = list(outcome.warnings) + (fit.warnings if fit is not None else [])
-    result = Result(command="damping-ratio", results=results, inputs=inputs, scene=None,
-                    model="linear", method=fit_method or "closed-form", warnings=warnings,
-                    extra=extra)
+    result = Result(command="damping-ratio", results=results, inputs=inputs.inputs,
+                    scene=None, model="linear", method=inputs.method or "closed-form",
+                    warnings=warnings, extra=extra)
     result.add_overflow_warnings()
-    result.explanation = _explain(formula, inputs, results, reference, fit, form)
+    result.explanation = _explain(formula, inputs.inputs, results, reference, fit, form)
     result.add_underflow_warnings(exact_zeros)
+    result.sensitivity = lambda: _sensitivity(inputs, results)
     return result
+
+
+def _decrement(inputs: DampingInputs) -> float:
+    """The logarithmic decrement per cycle the measurement gives (not for ``--c``)."""
+    from ..physics.damping import decrement_from_ratio
+
+    if inputs.form == "--decrement":
+        return inputs.parsed["decrement"].si
+    if inputs.form == "--ratio":
+        return decrement_from_ratio(inputs.parsed["ratio"].si, inputs.cycles)
+    return inputs.fit.delta
+
+
+# --- derivatives, for the propagation of uncertainties ---------------------------------------
+
+def _grad(*terms) -> dict:
+    """``sum a * g`` over the ``(a, g)`` pairs: the chain rule on gradients, a gradient being
+    {input name: derivative in SI}."""
+    out: dict = {}
+    for coefficient, gradient in terms:
+        for name, derivative in gradient.items():
+            out[name] = out.get(name, 0.0) + coefficient * derivative
+    return out
+
+
+def _gradients(inputs: DampingInputs, values: dict[str, float]) -> dict[str, dict]:
+    """The gradient of every result of a closed form with respect to the inputs read, by
+    the chain rule (in numpy floats: an overflow is ``inf``, never an exception).
+
+    ``--c``: ``c_c = 2 sqrt(k m)``, ``omega = sqrt(k/m)``, ``xi = c/(2m)``,
+    ``zeta = c/c_c``, ``Q = c_c/(2c)``, ``s = sqrt(1 - zeta^2) = omega_d/omega``
+    (``ds = -(zeta/s) d zeta``), ``delta = 2 pi zeta/s`` (``d delta = (2 pi/s^3) d zeta``),
+    ``omega_d = omega s``. The decrement forms: ``delta`` (``--decrement``),
+    ``ln(R)/N`` (``--ratio``) or the fit (no uncertain input); ``h = hypot(2 pi, delta)``,
+    ``zeta = delta/h`` (``d zeta = (2 pi)^2/h^3 d delta``), ``Q = h/(2 delta)``,
+    ``s = 2 pi/h``, ``omega`` typed or ``sqrt(k/m)``, ``xi = zeta omega``,
+    ``omega_d = omega s``, ``c = zeta c_c``. Always ``f_d = omega_d/(2 pi)``,
+    ``T_d = 2 pi/omega_d``.
+
+    Parameters
+    ----------
+    inputs : DampingInputs
+        The measurement as read (not a scene).
+    values : dict
+        The numeric results in SI, by name (``omega_d`` of ``--c`` gives ``s``).
+    """
+    f64 = np.float64
+    x = {name: f64(parsed.si) for name, parsed in inputs.parsed.items()}
+    two_pi, one = f64(_TWO_PI), f64(1.0)
+    g: dict[str, dict] = {}
+    omega = None
+    if "k" in x:
+        k, m = x["k"], x["m"]
+        c_c, omega = 2.0 * np.sqrt(k) * np.sqrt(m), np.sqrt(k) / np.sqrt(m)
+        g["c_c"] = _grad((c_c / (2.0 * k), {"k": one}), (c_c / (2.0 * m), {"m": one}))
+        g["omega"] = _grad((omega / (2.0 * k), {"k": one}), (-omega / (2.0 * m), {"m": one}))
+    if inputs.form == "--c":
+        c = x["c"]
+        zeta, q = c / c_c, c_c / (2.0 * c)
+        g["c"] = {"c": one}
+        g["xi"] = _grad((1.0 / (2.0 * m), {"c": one}), (-c / (2.0 * m) / m, {"m": one}))
+        g["zeta"] = _grad((1.0 / c_c, {"c": one}), (-zeta / c_c, g["c_c"]))
+        g["Q"] = _grad((1.0 / (2.0 * c), g["c_c"]), (-q / c, {"c": one}))
+        s = f64(values["omega_d"]) / omega if "omega_d" in values else f64(np.nan)
+        g["delta"] = _grad((two_pi / s ** 3, g["zeta"]))
+        g_s = _grad((-zeta / s, g["zeta"]))
+    else:
+        if inputs.form == "--decrement":
+            delta, g_delta = x["decrement"], {"decrement": one}
+        elif inputs.form == "--ratio":
+            n = f64(inputs.cycles)
+            delta = np.log(x["ratio"]) / n
+            g_delta = {"ratio": 1.0 / (x["ratio"] * n), "cycles": -delta / n}
+        else:  # the fit: the peaks carry no uncertainty
+            delta, g_delta = f64(inputs.fit.delta), {}
+        h = np.hypot(two_pi, delta)
+        zeta, s = delta / h, two_pi / h
+        g["delta"] = g_delta
+        g["zeta"] = _grad((s * s / h, g_delta))
+        g["Q"] = _grad((-(two_pi / delta) ** 2 / (2.0 * h), g_delta))
+        g_s = _grad((-s * delta / (h * h), g_delta))
+        if "omega" in x:
+            omega = x["omega"]
+            g["omega"] = {"omega": one}
+        if "k" in x:
+            g["c"] = _grad((c_c, g["zeta"]), (zeta, g["c_c"]))
+        if omega is not None:
+            g["xi"] = _grad((zeta, g["omega"]), (omega, g["zeta"]))
+    if omega is not None:
+        omega_d = omega * s
+        g["omega_d"] = _grad((s, g["omega"]), (omega, g_s))
+        g["f_d"] = _grad((1.0 / two_pi, g["omega_d"]))
+        g["T_d"] = _grad((-two_pi / omega_d / omega_d, g["omega_d"]))
+    return g
+
+
+def _sensitivity(inputs: DampingInputs, results: dict[str, Entry]):
+    """Exact derivatives of the results of a closed form (:func:`_gradients`) with respect
+    to the uncertain inputs, named as the inputs are. The fit of ``--amplitudes`` is never
+    run again: its peaks are plain numbers, so zeta, delta, Q, ``residual`` and ``delta_se``
+    carry no uncertainty, and the rest depends on ``--omega`` or ``--k``, ``--m`` in closed
+    form. A whole number of ``--cycles`` has no derivative: a ``±`` typed with it leaves the
+    results that go through the decrement unpropagated."""
+    from ..result.propagate import Sensitivity, UncertainInput
+
+    uncertain: list[UncertainInput] = []
+    for name in inputs.inputs:
+        if name == "cycles":
+            si, sigma = inputs.cycles, inputs.cycles_sigma
+        elif name in inputs.parsed:
+            si, sigma = inputs.parsed[name].si, inputs.parsed[name].uncertainty
+        else:
+            continue
+        if sigma is not None:
+            uncertain.append(UncertainInput(name, float(si), float(sigma)))
+    values = {name: e.si for name, e in results.items()
+              if e.dim is not None and not isinstance(e.si, str)}
+    with np.errstate(all="ignore"):
+        gradients = _gradients(inputs, values)
+    count_uncertain = inputs.cycles_sigma is not None
+    slopes: dict[str, dict[int, float]] = {}
+    failed: set[str] = set()
+    for name in values:
+        gradient = gradients.get(name, {})
+        if count_uncertain and "cycles" in gradient:
+            failed.add(name)
+        slopes[name] = {i: float(gradient.get(item.name, 0.0))
+                        for i, item in enumerate(uncertain) if item.name != "cycles"}
+    return Sensitivity(uncertain, slopes, failed)
+
+
+def _scene_sensitivity(scene_sensitivity, results: dict[str, Entry], given=None):
+    """A damping scene's own sensitivity (central differences on its parameters as read,
+    :func:`dyncalc.scenes.runner.scene_sensitivity`, or on the values of an inverse problem,
+    :func:`dyncalc.scenes.inverse.solve`) carried through zeta to the results added here:
+    ``d delta / d zeta = 2 pi / (1 - zeta^2)^(3/2)``, ``d Q / d zeta = -1 / (2 zeta^2)``.
+    A ``delta=`` or ``Q=`` solved from (``given``) is the input, not the zeta it became
+    (:func:`_as_given`)."""
+    sensitivity = scene_sensitivity()
+    if given is not None and given[1].uncertainty is not None:
+        _as_given(sensitivity, given, results)
+    zeta = np.float64(results["zeta"].si)
+    factors = {}
+    with np.errstate(all="ignore"):
+        if "delta" in results:
+            factors["delta"] = _TWO_PI / np.sqrt((1.0 - zeta) * (1.0 + zeta)) ** 3
+        if "Q" in results:
+            factors["Q"] = -0.5 / (zeta * zeta)
+        by_zeta = sensitivity.slopes.get("zeta", {})
+        for name, factor in factors.items():
+            if "zeta" in sensitivity.failed:
+                sensitivity.failed.add(name)
+                continue
+            sensitivity.failed.discard(name)
+            sensitivity.slopes[name] = {i: factor * np.asarray(slope, dtype=float)
+                                        for i, slope in by_zeta.items()}
+    return sensitivity
+
+
+def _as_given(sensitivity, given, results: dict[str, Entry]) -> None:
+    """The target ``zeta`` of an inverse scene, solved from ``delta=`` or ``Q=``, as the
+    value typed: named as typed, its slopes times ``d zeta / d delta`` (or ``d Q``)."""
+    from ..result.propagate import UncertainInput
+
+    name, parsed = given
+    typed = UncertainInput(name, float(parsed.si), float(parsed.uncertainty))
+    index = next((i for i, item in enumerate(sensitivity.inputs) if item.name == "zeta"),
+                 None)
+    if index is None:  # u(zeta) was beyond float64 and not passed on
+        sensitivity.inputs.append(typed)
+        sensitivity.failed |= {n for n, e in results.items()
+                               if e.dim is not None and not isinstance(e.si, str)}
+        return
+    sensitivity.inputs[index] = typed
+    slope = _zeta_slope(name, parsed.si)
+    with np.errstate(all="ignore"):
+        for row in sensitivity.slopes.values():
+            if index in row:
+                row[index] = slope * np.asarray(row[index], dtype=float)
 
 
 def _check_method(form: str, method: str | None) -> str | None:
@@ -405,31 +671,52 @@ def _explain(formula, inputs, results, reference, fit, form="") -> Explanation:
 # --- scenes with a damper --------------------------------------------------------------------
 
 def _decrement_as_zeta(scene, texts: dict[str, str], labels: dict[str, str],
-                       strict: bool) -> None:
+                       strict: bool):
     """``delta=`` or ``Q=`` given to solve a damping scene for one of its parameters: the
     damping ratio they mean (``zeta = delta / sqrt(4 pi^2 + delta^2)``, ``zeta = 1/(2Q)``)
-    becomes the ``zeta=`` target the scene solves from (:mod:`dyncalc.scenes.inverse`)."""
+    becomes the ``zeta=`` target the scene solves from (:mod:`dyncalc.scenes.inverse`), with
+    the uncertainty that follows (``u(zeta) = |d zeta / d delta| u(delta)``) when one was
+    typed. Returns ``(name, parsed)`` of the value given, or ``None``."""
     from ..physics.damping import zeta_from_decrement
 
     given = [n for n in ("delta", "Q") if n in texts and scene.param(n) is None]
     if not given:
-        return
+        return None
     if len(given) > 1 or "zeta" in texts:
         raise InputError("give one of zeta=, delta= and Q= to solve from")
     name = given[0]
     text = texts.pop(name)
     label = labels.pop(name, f"{name}=").rstrip("=")
-    value = parse_quantity(text, DIMENSIONLESS, label=label, strict=strict,
-                           constraint="positive").si
+    parsed = parse_quantity(text, DIMENSIONLESS, label=label, strict=strict,
+                            constraint="positive")
+    value = parsed.si
     zeta = zeta_from_decrement(value) if name == "delta" else 0.5 / value
     texts["zeta"], labels["zeta"] = repr(zeta), f"zeta (from {name})="
+    if parsed.uncertainty is not None:
+        with np.errstate(all="ignore"):
+            sigma = float(abs(_zeta_slope(name, value)) * parsed.uncertainty
+                          if parsed.uncertainty else 0.0)
+        if math.isfinite(zeta) and math.isfinite(sigma):
+            texts["zeta"] = f"{zeta!r} +/- {sigma!r}"
+    return name, parsed
 
 
-def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
+def _zeta_slope(name: str, value: float):
+    """``d zeta / d delta = (2 pi)^2 / h^3`` (``h = hypot(2 pi, delta)``) at ``value`` of
+    ``delta``, or ``d zeta / d Q = -1 / (2 Q^2)`` at ``value`` of ``Q``."""
+    value = np.float64(value)
+    with np.errstate(all="ignore"):
+        if name == "delta":
+            h = np.hypot(_TWO_PI, value)
+            return (_TWO_PI / h) ** 2 / h
+        return -0.5 / value / value
+
+
+def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
+    """Check a damping scene and gather its texts (``--k``, ``--m``, ``--g`` and the
+    ``NAME=QUANTITY`` words) for :func:`_from_scene`."""
     from ..result.checks import split_assignment
-    from ..physics.damping import damping_from_zeta
     from ..scenes import get_scene
-    from .natural_frequency import compute_scene
 
     scene = get_scene(name)
     damped = damping_scene_names()
@@ -447,9 +734,25 @@ def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
         if key in texts:
             raise InputError(f"{key} is given twice ({labels[key]} and {key}=)")
         texts[key], labels[key] = text, f"{key}="
-    _decrement_as_zeta(scene, texts, labels, strict)
-    result = compute_scene(scene, texts, labels=labels, method=method, rtol=rtol,
-                           strict=strict, command="damping-ratio")
+    given = _decrement_as_zeta(scene, texts, labels, strict)
+    return SceneTexts(scene, texts, labels, method, rtol, strict, given)
+
+
+def _from_scene(read_in: SceneTexts) -> Result:
+    """The scene's Result with the decrement, Q and regime its zeta gives added; the
+    scene's sensitivity carried through zeta to them (:func:`_scene_sensitivity`)."""
+    from ..physics.damping import damping_from_zeta
+    from .natural_frequency import compute_scene
+
+    result = compute_scene(read_in.scene, read_in.texts, labels=read_in.labels,
+                           method=read_in.method, rtol=read_in.rtol, strict=read_in.strict,
+                           command="damping-ratio")
+    scene_sensitivity = result.sensitivity
+    given = read_in.given
+    if given is not None and given[1].uncertainty is not None:
+        # zeta (from delta), the target (no damping scene takes zeta), is shown plain as
+        # before: its uncertainty is delta's, propagated under delta's name
+        result.inputs["zeta"].uncertainty = None
     zeta = result.results["zeta"].si
     added = damping_from_zeta(zeta)
     results: dict[str, Entry] = {}
@@ -473,6 +776,8 @@ def _from_scene(name, params, k, m, g, method, rtol, strict) -> Result:
         warnings += [w for w in added.warnings if w not in warnings]
     result.results = results
     result.warnings = warnings
+    if scene_sensitivity is not None:
+        result.sensitivity = lambda: _scene_sensitivity(scene_sensitivity, results, given)
     if result.explanation is not None:
         result.explanation.formula.append(
             "delta = 2 pi zeta / sqrt((1 - zeta)(1 + zeta)) (underdamped), Q = 1/(2 zeta)")

@@ -296,7 +296,7 @@ def _resolve_shared(root, shared: dict[str, str], strict: bool) -> None:
             constraint = "positive"
             leaf.parsed[pname] = parse_quantity(
                 ptext, dim, label=f"{pname} of {leaf.name}", strict=strict,
-                constraint=constraint, source=None if pname in own else pname)
+                constraint=constraint)
     unused = sorted(set(shared) - used)
     if unused:
         raise InputError(f"{unused[0]}={shared[unused[0]].strip()} is not used by any element; "

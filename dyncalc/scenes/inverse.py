@@ -26,6 +26,10 @@ How (decided here; README.md, "Homework and design helpers"):
 Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
 catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
 spring), far enough apart.
+
+Uncertainties: the Result's ``sensitivity`` (:func:`_sensitivity`) applies the implicit
+function theorem at the roots found, with the scene's partial derivatives by central
+differences on the values as read: no root is searched for again.
 """
 from __future__ import annotations
 
@@ -65,7 +69,7 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
                                  label=labels.get(target, f"{target}=").rstrip("="),
                                  strict=strict)
     problem = _Problem(scene, prepared, unknown, target, method, rtol)
-    roots, how = problem.roots_near(parsed_goal.si, key=(scene.name, unknown.name, target))
+    roots, how = problem.roots(parsed_goal.si)
     if not roots:
         if problem.seen and target not in problem.seen:
             raise InputError(f"{scene.name} gives no result {target}; its results are "
@@ -75,6 +79,23 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     inputs = dict(prepared.inputs)
     inputs[target] = entry_from_parsed(target, parsed_goal, kind.dim, symbol=kind.symbol,
                                        description=kind.description)
+    result = _result(problem, roots, inputs, _typed(parsed_goal, kind), command)
+    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
+    if how[1]:
+        note = f"{unknown.name} solved from {target}: {how[1]}"
+        result.amend_explanation(lambda explanation: explanation.assumptions.append(note))
+    names = [unknown.name] if len(roots) == 1 else \
+        [f"{unknown.name}_{i}" for i in range(1, len(roots) + 1)]
+    result.sensitivity = lambda: _sensitivity(problem, roots, names, parsed_goal, target,
+                                              len(roots) == 1)
+    return result
+
+
+def _result(problem: _Problem, roots: list[float], inputs: dict[str, Entry], goal_text: str,
+            command: str):
+    """The Result of the roots found: the unknown (``k``, or ``k_1``, ``k_2``, ... for several
+    roots) first, then the scene's results at a single root."""
+    unknown, target = problem.param, problem.target
     unit = "deg" if unknown.dim is ANGLE else unknown.dim.si
     describe = f"{unknown.description} (solved from {target})"
     names = [unknown.name] if len(roots) == 1 else \
@@ -88,15 +109,8 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
         values = {}
         shown = ", ".join(f"{_shown(x, unknown):.6g} {unit}" for x in roots)
         warnings.append(f"{len(roots)} values of {unknown.name} give {target} = "
-                        f"{_typed(parsed_goal, kind)}: {shown}; each is a result")
-    result = make_result(scene, inputs, outcome, values, warnings, command, solved)
-    result.sensitivity = lambda: _sensitivity(problem, roots, names, parsed_goal, target,
-                                              bool(values))
-    result.extra["inverse"] = {"unknown": unknown.name, "method": how[0], "detail": how[1]}
-    if how[1]:
-        note = f"{unknown.name} solved from {target}: {how[1]}"
-        result.amend_explanation(lambda explanation: explanation.assumptions.append(note))
-    return result
+                        f"{goal_text}: {shown}; each is a result")
+    return make_result(problem.scene, inputs, outcome, values, warnings, command, solved)
 
 
 def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed_goal,
@@ -160,10 +174,9 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
             if index == goal_index:
                 dx = 1.0 / y_x
                 slopes.setdefault(name, {})[index] = dx
-                if with_values:
+                if with_values:  # the result solved from moves with its goal, 1 for 1
                     for k, slope in z_x.items():
-                        if k != target:
-                            slopes.setdefault(k, {})[index] = slope * dx
+                        slopes.setdefault(k, {})[index] = 1.0 if k == target else slope * dx
                 continue
             h = step(item.si, item.sigma)
             moved = []
@@ -187,10 +200,11 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
                 continue
             dx = -float(partial[target]) / y_x
             slopes.setdefault(name, {})[index] = dx
-            if with_values:
+            if with_values:  # the result solved from stays at its goal: 0
                 for k, slope in partial.items():
-                    if k != target and k in z_x:
-                        slopes.setdefault(k, {})[index] = slope + z_x[k] * dx
+                    if k in z_x:
+                        slopes.setdefault(k, {})[index] = (0.0 if k == target
+                                                           else slope + z_x[k] * dx)
     return Sensitivity(inputs, slopes, failed)
 
 
@@ -322,29 +336,15 @@ class _Problem:
 
     # -- solving ---------------------------------------------------------------------------
 
-    def roots_near(self, goal: float, key) -> tuple[list[float], tuple[str, str]]:
-        """:meth:`roots`; in a re-run of uncertainty propagation (inputs nudged by 1e-6),
-        first within 0.1 % of the roots the run as typed found, each bracketed anew."""
-        from ..result.propagate import nudged_hint, store_hint
-
-        hint = nudged_hint(key)
-        if hint is not None:
-            before, how = hint
-            near = [self._root_between(r - 1e-3 * abs(r), r + 1e-3 * abs(r), goal)
-                    for r in before]
-            if before and all(r is not None for r in near):
-                return _distinct(near), how
-        roots, how = self.roots(goal)
-        store_hint(key, (roots, how))
-        return roots, how
-
     def _root_between(self, lo: float, hi: float, goal: float) -> float | None:
         """The root of ``y - goal`` in ``[lo, hi]`` if the ends bracket one, else ``None``."""
         g_lo, g_hi = self.y(lo) - goal, self.y(hi) - goal
-        if not (math.isfinite(g_lo) and math.isfinite(g_hi)) or g_lo * g_hi > 0:
+        if not (math.isfinite(g_lo) and math.isfinite(g_hi)):
             return None
         if g_lo == 0 or g_hi == 0:
             return lo if g_lo == 0 else hi
+        if (g_lo > 0) == (g_hi > 0):  # by the signs: a product of two tiny ones underflows
+            return None
         from scipy.optimize import brentq
 
         return brentq(lambda x: self.y(x) - goal, lo, hi, xtol=1e-300,

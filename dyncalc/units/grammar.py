@@ -43,7 +43,6 @@ revolution (``rpm``, ``rps``, ``turn``) as one cycle. See :func:`convert`.
 """
 from __future__ import annotations
 
-import contextvars
 import math
 import re
 import unicodedata
@@ -576,8 +575,7 @@ def _check_value(si, dim: Dim, label: str, allow_inf: bool, constraint: str | No
 
 
 def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = False,
-                   allow_inf: bool = False, constraint: str | None = None,
-                   source: str | None = None) -> Parsed:
+                   allow_inf: bool = False, constraint: str | None = None) -> Parsed:
     """Read one scalar quantity of dimension ``dim`` from ``text``.
 
     Parameters
@@ -594,9 +592,6 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     allow_inf : bool
         Accept ``inf`` (a rigid spring); otherwise infinities are refused.
     constraint : {None, "positive", "nonnegative", "nonzero"}
-    source : str, optional
-        Names one value read in several places (a network's shared ``EI=...``): its
-        uncertainty is then one input, not one per place (:mod:`dyncalc.result.propagate`).
 
     Returns
     -------
@@ -611,8 +606,7 @@ def parse_quantity(text: str, dim: Dim, *, label: str = "value", strict: bool = 
     """
     split = _split_uncertainty(text, label)
     if split is not None:
-        return _parse_uncertain(text, split, dim, label, strict, allow_inf, constraint,
-                                source)
+        return _parse_uncertain(text, split, dim, label, strict, allow_inf, constraint)
     return _finish(_evaluate(text, label), text, dim, label, strict, allow_inf, constraint)
 
 
@@ -672,8 +666,7 @@ def _with_unit(reading: _Reading, unit, names: list[str], unit_text: str, label:
 
 
 def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: str,
-                     strict: bool, allow_inf: bool, constraint: str | None,
-                     source: str | None) -> Parsed:
+                     strict: bool, allow_inf: bool, constraint: str | None) -> Parsed:
     """A quantity with its standard uncertainty; a side without a unit takes the other's.
     An uncertainty in percent (or permille, ppm) of a quantity with a dimension is relative:
     ``100 N/m ± 5%`` is 5 N/m."""
@@ -714,16 +707,8 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
         sigma_si = _finish(sigma, text, dim, spread_label, strict, False, "nonnegative").si
     parsed = Parsed(parsed.quantity, parsed.si, parsed.assumed_si, parsed.unit_text, text,
                     uncertainty=sigma_si)
-    hook = UNCERTAIN_INPUT_HOOK.get()
-    return parsed if hook is None else hook(parsed, dim, label, allow_inf, constraint, source)
+    return parsed
 
-
-#: What becomes of a quantity read with an uncertainty while a hook is installed:
-#: ``hook(parsed, dim, label, allow_inf, constraint, source)`` returns the quantity to use (the
-#: propagation of :mod:`dyncalc.result.propagate` records it, or hands back a nudged copy).
-#: The parser keeps no record itself, and the dependency runs from result to units only.
-UNCERTAIN_INPUT_HOOK: contextvars.ContextVar = contextvars.ContextVar(
-    "dyncalc_uncertain_input", default=None)
 
 #: Units of an uncertainty that is a fraction of the value (``± 5%``).
 _RELATIVE_UNITS = frozenset({"percent", "permille", "ppm"})
