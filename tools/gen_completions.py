@@ -18,6 +18,8 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from generated_files import stale_files, write_files  # noqa: E402 (beside this script)
 OUT_DIR = ROOT / "completions"
 
 PROG_NAME = "dyncalc"
@@ -80,23 +82,12 @@ def generate() -> dict[str, str]:
 
 def write(out_dir: Path = OUT_DIR) -> list[Path]:
     """Write every script to ``out_dir``; the paths written."""
-    out_dir.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name, text in generate().items():
-        path = out_dir / name
-        path.write_bytes(text.encode("utf-8"))
-        written.append(path)
-    return written
+    return write_files(generate(), out_dir)
 
 
 def check(out_dir: Path = OUT_DIR) -> list[str]:
-    """The names of the files in ``out_dir`` that are missing or differ from :func:`generate`."""
-    stale = []
-    for name, text in generate().items():
-        path = out_dir / name
-        if not path.is_file() or path.read_bytes() != text.encode("utf-8"):
-            stale.append(name)
-    return stale
+    """The names of the scripts in ``out_dir`` that are missing or differ from :func:`generate`."""
+    return stale_files(generate(), out_dir)
 
 
 def main(argv: list[str] | None = None) -> int:
