@@ -73,7 +73,6 @@ class Output:
     def emit(self, result) -> int:
         """Print ``result`` in the chosen form; the exit status (1 if a check failed)."""
         from ..result import encode
-        from . import render
 
         units = self.unit_map(result) if self.units else {}
         checks = []
@@ -87,15 +86,21 @@ class Output:
                 click.echo(f"warning: {one_line(w)}", err=True)
             for c in checks:
                 if not c.passed:
-                    click.echo(render._check_line(c, self.digits), err=True)
+                    from .render import _check_line
+
+                    click.echo(_check_line(c, self.digits), err=True)
             click.echo(text)
         elif self.as_json:
             click.echo(encode.to_json(result, units, checks, self.explain))
         elif _is_terminal():
             from rich.console import Console
 
+            from . import render
+
             render.rich_text(result, units, self.digits, checks, self.explain, Console())
         else:
+            from . import render  # human text only: not for --json or --value (start-up)
+
             click.echo(render.plain_text(result, units, self.digits, checks, self.explain))
         return EXIT_CHECK_FAILED if any(not c.passed for c in checks) else EXIT_OK
 

@@ -7,9 +7,9 @@ Values are carried as SI magnitudes (floats, or numpy arrays for vectors) beside
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 from typing import Any, Callable
 
+from ..records import Record
 from ..units import Dim, Parsed, convert
 
 __all__ = ["Entry", "Explanation", "Result", "entry_from_parsed", "format_number"]
@@ -27,27 +27,31 @@ def format_number(value, digits: int) -> str:
     return f"{value:.{digits}g}"
 
 
-@dataclass
-class Entry:
+class Entry(Record):
     """One named input or result.
 
     ``si`` is the magnitude in ``dim.si`` (float, array, or ``str`` for a word such as a
     regime); ``unit`` is the unit it is shown in unless ``--unit`` says otherwise; ``symbol`` and
     ``description`` are for the human table; ``assumed_si`` marks a bare number read as SI;
     ``text`` is an input as the user typed it (or the default's text), ``None`` on results.
+
+    A plain class, not a dataclass (no code generated at import: start-up), with a
+    dataclass's repr and equality from :class:`~dyncalc.records.Record`.
     """
 
-    name: str
-    si: Any
-    dim: Dim | None
-    unit: str = ""
-    symbol: str = ""
-    description: str = ""
-    assumed_si: bool = False
-    exact: Any = None  # the magnitude in ``unit`` exactly as typed or computed
-    overflowed: bool = False  # a finite true value beyond float64: shown as inf / null
-    uncertainty: Any = None  # standard uncertainty in ``dim.si`` (float or array), if any
-    text: str | None = None  # an input's text as typed (JSON ``inputs.NAME.text``)
+    __slots__ = ("name", "si", "dim", "unit", "symbol", "description", "assumed_si", "exact",
+                 "overflowed", "uncertainty", "text")
+
+    def __init__(self, name: str, si: Any, dim: Dim | None, unit: str = "", symbol: str = "",
+                 description: str = "", assumed_si: bool = False, exact: Any = None,
+                 overflowed: bool = False, uncertainty: Any = None, text: str | None = None):
+        self.name, self.si, self.dim, self.unit = name, si, dim, unit
+        self.symbol, self.description, self.assumed_si = symbol, description, assumed_si
+        self.exact = exact  # the magnitude in ``unit`` exactly as typed or computed
+        self.overflowed = overflowed  # a finite true value beyond float64: shown as inf / null
+        self.uncertainty = uncertainty  # standard uncertainty in ``dim.si``, if any
+        self.text = text  # an input's text as typed (JSON ``inputs.NAME.text``)
+
 
     @property
     def canonical_unit(self) -> str:
@@ -88,8 +92,7 @@ def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:
                  uncertainty=parsed.uncertainty, text=parsed.text, **kw)
 
 
-@dataclass
-class Explanation:
+class Explanation(Record):
     """The formula, the same with values substituted, the model's assumptions, the reference.
 
     ``formula`` and ``substituted`` are plain text; ``latex`` and ``latex_substituted`` the
@@ -98,14 +101,21 @@ class Explanation:
     of its variance each uncertain input contributes (``{"omega": {"k": 0.2, "m": 0.8}}``).
     """
 
-    formula: list[str]
-    substituted: list[str] = field(default_factory=list)
-    assumptions: list[str] = field(default_factory=list)
-    reference: str = ""
-    latex: list[str] = field(default_factory=list)
-    latex_substituted: list[str] = field(default_factory=list)
-    example: str = ""
-    variance: dict[str, dict[str, float]] = field(default_factory=dict)
+    __slots__ = ("formula", "substituted", "assumptions", "reference", "latex",
+                 "latex_substituted", "example", "variance")
+
+    def __init__(self, formula: list[str], substituted: list[str] | None = None,
+                 assumptions: list[str] | None = None, reference: str = "",
+                 latex: list[str] | None = None, latex_substituted: list[str] | None = None,
+                 example: str = "", variance: dict[str, dict[str, float]] | None = None):
+        self.formula = formula
+        self.substituted = [] if substituted is None else substituted
+        self.assumptions = [] if assumptions is None else assumptions
+        self.reference = reference
+        self.latex = [] if latex is None else latex
+        self.latex_substituted = [] if latex_substituted is None else latex_substituted
+        self.example = example
+        self.variance = {} if variance is None else variance
 
     def as_dict(self) -> dict:
         return {"formula": self.formula, "substituted": self.substituted,

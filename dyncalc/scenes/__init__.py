@@ -119,7 +119,7 @@ def _set_all(record, *values) -> None:
 
 
 _SCENES: dict[str, Scene] = {}
-_loaded = False
+_imported = 0  # how many of CATALOG_MODULES have been imported, in order
 
 
 def register(scene: Scene) -> Scene:
@@ -140,13 +140,19 @@ def register(scene: Scene) -> Scene:
     return scene
 
 
+def _load(until: str | None = None) -> None:
+    """Import the catalog modules in order: all of them, or only until scene ``until`` is
+    registered (a one-off of mass-spring loads the basic scenes and their physics alone, not
+    every physics module of the catalog: start-up)."""
+    global _imported
+    while _imported < len(CATALOG_MODULES) and (until is None or until not in _SCENES):
+        importlib.import_module(CATALOG_MODULES[_imported])
+        _imported += 1
+
+
 def catalog() -> dict[str, Scene]:
     """Every scene, by name, in the order registered."""
-    global _loaded
-    if not _loaded:
-        for module in CATALOG_MODULES:
-            importlib.import_module(module)
-        _loaded = True
+    _load()
     return _SCENES
 
 
@@ -156,7 +162,8 @@ def scene_names() -> list[str]:
 
 def get_scene(name: str) -> Scene:
     """The scene called ``name``; refuses an unknown name with the list of known ones."""
-    scenes = catalog()
+    _load(until=name)
+    scenes = _SCENES if name in _SCENES else catalog()
     if name not in scenes:
         known = ", ".join(scenes) if scenes else "none yet: the catalog is empty"
         raise InputError(f"there is no scene {name!r}; the scenes are: {known}")
