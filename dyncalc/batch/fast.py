@@ -114,11 +114,12 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
                                     plain[p.name] if whole else None)
                 good &= read.ok
                 si[p.name] = read.si
-                inputs.append((p.name, read, column, units[p.name]))
+                inputs.append((p.name, read, column, units[p.name],
+                               whole and plain[p.name] is not None))
             else:
                 value, text = _default_input(p, spec.strict, cache)
                 si[p.name] = np.full(len(rows), value)
-                inputs.append((p.name, text, None, None))
+                inputs.append((p.name, text, None, None, False))
         if not good.any():
             continue
         with np.errstate(all="ignore"):
@@ -143,7 +144,7 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
                     f'"scene": {json.dumps(scene_name)}, "model": "linear", '
                     '"method": "closed-form"')
             parts = []
-            for name, read, column, header_unit in inputs:
+            for name, read, column, header_unit, plain_column in inputs:
                 if isinstance(read, str):
                     parts.append([read] * len(keep))
                     continue
@@ -152,10 +153,21 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
                 unit_json = read.unit_json if every else [read.unit_json[i]
                                                           for i in keep.tolist()]
                 typed = column if every else [column[i] for i in keep.tolist()]
-                typed = [json.dumps(with_header_unit(c.strip(), header_unit)) for c in typed]
+                if plain_column:  # plain numbers: the text is the cell and the header's unit
+                    suffix = json.dumps(" " + header_unit)[1:-1] if header_unit else ""
+                    typed = ['"' + c.strip() + suffix + '"' for c in typed]
+                else:
+                    typed = [json.dumps(with_header_unit(c.strip(), header_unit))
+                             for c in typed]
                 prefix = json.dumps(name) + ': {"value": '
-                parts.append([f'{prefix}{v!r}, "unit": {u}, "text": {t}{a}}}'
-                              for v, (u, a), t in zip(shown.tolist(), unit_json, typed)])
+                if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
+                    unit, assumed = (u.replace("%", "%%") for u in unit_json[0])
+                    template = (prefix.replace("%", "%%") + '%r, "unit": ' + unit
+                                + ', "text": %s' + assumed + "}")
+                    parts.append(list(map(template.__mod__, zip(shown.tolist(), typed))))
+                else:
+                    parts.append([f'{prefix}{v!r}, "unit": {u}, "text": {t}{a}}}'
+                                  for v, (u, a), t in zip(shown.tolist(), unit_json, typed)])
             texts = list(map(", ".join, zip(*parts)))
         blocks.append(FastBlock(rows, values, kinds, head, texts))
     return blocks
