@@ -104,8 +104,3 @@ def _classify_unit(name: str) -> str:
     if "radian" in root:
         return "angle"
     return "other"
-
-
-def _is_angle_unit(name: str) -> bool:
-    """A unit that carries an angle (radian, degree, ...), other than the full turn."""
-    return _unit_class(name) == "angle"
