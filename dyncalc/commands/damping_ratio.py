@@ -792,11 +792,8 @@ def _from_scene(read_in: SceneTexts) -> Result:
 
 # --- the command record ----------------------------------------------------------------------
 
-_INPUTS = ("c", "k", "m", "omega", "decrement", "ratio", "cycles", "amplitudes", "g")
-
-
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
-    return damping_ratio(**{name: values.get(name) for name in _INPUTS},
+    return damping_ratio(**{p.name: values.get(p.name) for p in COMMAND.inputs},
                          scene=values.get("scene"), params=tuple(words),
                          method=values.get("method"), rtol=rtol, strict=strict)
 

@@ -16,9 +16,8 @@ from .record import Command, Parameter, ResultName
 __all__ = ["COMMAND", "STANDARD", "INFERENCE", "collect_parameters", "infer_scene", "compute_scene",
            "natural_frequency"]
 
-#: Standard options and the scene parameter each one is (docs/commands.md).
-STANDARD = {"k": "k", "m": "m", "kt": "kt", "inertia": "J", "length": "l",
-            "amplitude": "amplitude", "zeta": "zeta", "g": "g"}
+#: Standard options whose scene parameter has another name (``--inertia`` is ``J``).
+_SCENE_NAMES = {"inertia": "J", "length": "l"}
 
 #: Without --scene, the parameters given choose the scene (docs/scenes.md, the top).
 INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum", {"l"}))
@@ -147,3 +146,6 @@ COMMAND = Command(
     _run,
     words="[NAME=QUANTITY]...",
 )
+
+#: Standard options and the scene parameter each one is (docs/commands.md), from the record.
+STANDARD = {p.name: _SCENE_NAMES.get(p.name, p.name) for p in COMMAND.inputs}

@@ -43,8 +43,6 @@ _KINDS = {
     "path_roll": (LENGTH, "m", "ℓ_roll", "path length until then (out and back)"),
     "mu_min": (DIMENSIONLESS, "", "μ_min", "static friction that keeps it rolling on the slope"),
 }
-_LABELS = {"v0": "--v0", "mu": "--mu", "body": "--body", "kappa": "--kappa",
-           "radius": "--radius", "omega0": "--omega0", "g": "--g", "incline": "--incline"}
 _REFERENCE = ("Gross et al., Engineering Mechanics 3, Example 3.45 (bowling ball: v0 = 5 m/s, "
               "mu = 0.3 gives 0.49 s, 2.08 m, 3.57 m/s)")
 
@@ -66,7 +64,7 @@ def _bodies() -> dict[str, float]:
 
 
 def _read(texts: dict, name: str, dim, strict: bool, **kw):
-    return parse_quantity(texts[name], dim, label=_LABELS[name], strict=strict, **kw)
+    return parse_quantity(texts[name], dim, label=COMMAND.parameter(name).flag, strict=strict, **kw)
 
 
 def _method(method: str | None) -> str:
@@ -125,7 +123,7 @@ def read(texts: dict[str, str | None], strict: bool = False) -> RollingInputs:
     for name in ("v0", "mu"):
         if name not in texts:
             example = {"v0": "--v0 '5 m/s'", "mu": "--mu 0.3"}[name]
-            raise InputError(f"rolling-onset needs {_LABELS[name]} (e.g. {example}); see "
+            raise InputError(f"rolling-onset needs {COMMAND.parameter(name).flag} (e.g. {example}); see "
                              "'dyncalc rolling-onset --help'")
 
     inputs: dict[str, Entry] = {}
@@ -587,7 +585,7 @@ def _explain(onset, kappa, body_name, mu, g, v0, radius, omega0, incline, sin_b,
 # --- the command record ----------------------------------------------------------------------
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
-    texts = {name: values.get(name) for name in _LABELS}
+    texts = {p.name: values.get(p.name) for p in COMMAND.inputs}
     return rolling_onset_result(texts, method=values.get("method"), rtol=rtol, strict=strict)
 
 
