@@ -1718,3 +1718,21 @@ def test_earth_heading_whose_degrees_overflow():
     assert_contract(out)
     assert out.exit_code == 0
     assert json.loads(out.stdout)["results"]["v_r"]["value"] == [0.0, 1.0, 0.0]
+
+
+def test_damping_note_of_a_scene_whose_frequency_overflows():
+    """Long run of issue 14 (seed 14): ``zeta=1e-300`` on a pendulum-on-rotating-disk whose
+    omega overflows: the explanation said "nan% below omega" (1 - inf/inf). The drop is now
+    worked out from zeta alone, zeta^2 / (1 + sqrt(1 - zeta^2)): 0 % here, 0.125 % at 0.05."""
+    argv = ["natural-frequency", "zeta=1e-300", "--explain", "--scene",
+            "pendulum-on-rotating-disk", "r=7.409e+279mm", "--json", "l=7  ft",
+            "Omega=7.409e+279 1/s"]
+    out = run_cli(argv)
+    assert_contract(out)
+    assumptions = json.loads(out.stdout)["extra"]["explanation"]["assumptions"]
+    assert ("damping lowers the frequency: omega_d = omega sqrt(1 - zeta^2) is 0% below omega "
+            "at zeta = 1e-300") in assumptions
+    ordinary = json.loads(run_cli(["natural-frequency", "--k", "100N/m", "--m", "2kg", "--zeta",
+                                   "0.05", "--explain", "--json"]).stdout)
+    assert ("damping lowers the frequency: omega_d = omega sqrt(1 - zeta^2) is 0.125% below "
+            "omega at zeta = 0.05") in ordinary["extra"]["explanation"]["assumptions"]

@@ -7,6 +7,7 @@ exactly one; relations between parameters (``R > r``) are checked before any phy
 """
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -309,10 +310,12 @@ def _explain(scene: Scene, inputs: dict[str, Entry], results: dict[str, Entry],
     assumptions = [*scene.assumptions, *outcome.assumptions]
     assumptions += [text for size in scene.sizes if (text := _sized(size, values))]
     zeta, omega, omega_d = (values.get(n) for n in ("zeta", "omega", "omega_d"))
-    if zeta and omega and omega_d:
+    if zeta and omega and omega_d and zeta < 1:
+        # 1 - sqrt(1 - zeta^2) from zeta alone, without cancellation: finite where omega and
+        # omega_d overflow (their quotient inf / inf would read nan)
+        drop = zeta * zeta / (1.0 + math.sqrt((1.0 - zeta) * (1.0 + zeta)))
         assumptions.append(f"damping lowers the frequency: omega_d = omega sqrt(1 - zeta^2) is "
-                           f"{100 * (1 - omega_d / omega):.3g}% below omega at zeta = "
-                           f"{zeta:.3g}")
+                           f"{100 * drop:.3g}% below omega at zeta = {zeta:.3g}")
     example = scene.example
     if scene.example_result:
         example += " gives " + ", ".join(f"{name} = {value}"
