@@ -24,3 +24,19 @@ def error_line(result):
     lines = result.stderr.splitlines()
     assert len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
     return lines[0]
+
+
+def count_readings(monkeypatch, *modules, name="parse_quantity"):
+    """Count the texts the given modules read: their ``name`` (``parse_quantity``) is wrapped
+    so that each call appends its text to the list returned (the read-once tests of issue
+    14: propagation must never read a text again)."""
+    calls = []
+    for module in modules:
+        original = getattr(module, name)
+
+        def counting(*args, _original=original, **kwargs):
+            calls.append(args[0])
+            return _original(*args, **kwargs)
+
+        monkeypatch.setattr(module, name, counting)
+    return calls

@@ -16,7 +16,7 @@ import pytest
 from dyncalc.commands import damping_ratio as dr
 from dyncalc.result.propagate import RELATIVE_STEP, propagate
 from dyncalc.units import Q_
-from helpers import json_of
+from helpers import count_readings, json_of
 
 EXACT = 1e-13
 DIFF_TOL = 1e-8
@@ -320,14 +320,7 @@ def test_scene_reads_every_text_once(monkeypatch):
     import dyncalc.scenes
     from dyncalc.scenes import runner
 
-    calls = []
-    original = runner.parse_quantity
-
-    def counting(*args, **kwargs):
-        calls.append(args[0])
-        return original(*args, **kwargs)
-
-    monkeypatch.setattr(runner, "parse_quantity", counting)
+    calls = count_readings(monkeypatch, runner)
     scene = dyncalc.scenes.get_scene("pendulum-spring-dashpot")
     runs = []
     counted = scene.replace(compute=lambda **kw: runs.append(1) or scene.compute(**kw))
@@ -350,14 +343,7 @@ def test_inverse_scene_from_q_reads_once_and_solves_once(monkeypatch):
     typed: Q, m."""
     from dyncalc.scenes import inverse, runner
 
-    calls = []
-    for module in (dr, runner, inverse):
-        original = module.parse_quantity
-
-        def counting(*args, _original=original, **kwargs):
-            calls.append(args[0])
-            return _original(*args, **kwargs)
-        monkeypatch.setattr(module, "parse_quantity", counting)
+    calls = count_readings(monkeypatch, dr, runner, inverse)
     searches = []
     roots = inverse._Problem.roots
     monkeypatch.setattr(inverse._Problem, "roots",

@@ -15,7 +15,7 @@ from dyncalc.commands import rolling_onset as rolling_module
 from dyncalc.commands.rolling_onset import TIMING_RUNS, compute, read, rolling_onset_result
 from dyncalc.physics import rolling as rolling_physics
 from dyncalc.result.propagate import RELATIVE_STEP, propagate
-from helpers import json_of
+from helpers import count_readings, json_of
 
 G0 = 9.80665
 INPUTS = ("v0", "mu", "kappa", "radius", "omega0", "g", "incline")
@@ -153,16 +153,7 @@ def test_spin_and_slope_derivatives_against_mpmath(texts, sigma):
 def test_the_text_is_read_once_per_input(monkeypatch):
     """Propagation parses nothing again: one parse_quantity per quantity typed (and one for
     the default --g), with one uncertain input or seven, with the closed form or the ODE."""
-    from dyncalc.units import grammar
-
-    calls = []
-    original = grammar.parse_quantity
-
-    def counting(*args, **kwargs):
-        calls.append(args[0])
-        return original(*args, **kwargs)
-
-    monkeypatch.setattr(rolling_module, "parse_quantity", counting)
+    calls = count_readings(monkeypatch, rolling_module)
     seven = {"v0": "3+/-0.1 m/s", "mu": "0.25+/-0.01", "kappa": "0.4+/-0.02",
              "radius": "0.1+/-0.001 m", "omega0": "-200+/-3 rad/s", "g": "9.8+/-0.02",
              "incline": "10+/-0.5 deg"}

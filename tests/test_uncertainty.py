@@ -20,7 +20,7 @@ import pytest
 
 from dyncalc.scenes.runner import run_scene
 from dyncalc.result.propagate import propagate
-from helpers import error_line, invoke, json_of
+from helpers import count_readings, error_line, invoke, json_of
 
 TWO_PI = 2 * math.pi
 G0 = 9.80665
@@ -513,16 +513,8 @@ def test_propagation_reads_every_text_once(monkeypatch):
     parsed again (n uncertain springs: exactly n readings, for n = 5 and n = 40), and a
     scene's nudged computations call its physics twice per uncertain input, no more."""
     from dyncalc.commands import springs as springs_module
-    from dyncalc.units import grammar
 
-    calls = []
-    original = grammar.parse_quantity
-
-    def counting(*args, **kwargs):
-        calls.append(args[0])
-        return original(*args, **kwargs)
-
-    monkeypatch.setattr(springs_module, "parse_quantity", counting)
+    calls = count_readings(monkeypatch, springs_module)
     for n in (5, 40):
         calls.clear()
         texts = [f"{100 + i} N/m ± 1%" for i in range(n)]
