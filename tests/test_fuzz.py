@@ -1736,3 +1736,20 @@ def test_damping_note_of_a_scene_whose_frequency_overflows():
                                    "0.05", "--explain", "--json"]).stdout)
     assert ("damping lowers the frequency: omega_d = omega sqrt(1 - zeta^2) is 0.125% below "
             "omega at zeta = 0.05") in ordinary["extra"]["explanation"]["assumptions"]
+
+
+def test_damping_scene_solved_from_zeta_with_several_roots():
+    """Found by a random sweep during issue 14: ``damping-ratio --scene rod-in-fluid
+    l=1e-300m zeta=4.9e-324`` solves beta with five roots, whose results carry no zeta, and
+    the command read ``results["zeta"]`` (internal error, KeyError). Every root has the zeta
+    solved from, so it stays a result, with the decrement and Q it gives."""
+    out = run_cli(["damping-ratio", "--scene", "rod-in-fluid", "m=0.5kg", "l=1e-300m",
+                   "zeta=4.9e-324", "--json"])
+    assert_contract(out)
+    results = json.loads(out.stdout)["results"]
+    assert [name for name in results if name.startswith("beta_")] == [
+        f"beta_{i}" for i in range(1, 6)]
+    assert results["zeta"]["value"] == 5e-324
+    # 2 pi zeta among subnormals: a multiple of 4.9e-324 (6 of them), within its spacing
+    assert results["delta"]["value"] == pytest.approx(2 * math.pi * 5e-324, rel=0.2)
+    assert results["regime"]["value"] == "underdamped"

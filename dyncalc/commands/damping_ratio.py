@@ -753,6 +753,12 @@ def _from_scene(read_in: SceneTexts) -> Result:
         # zeta (from delta), the target (no damping scene takes zeta), is shown plain as
         # before: its uncertainty is delta's, propagated under delta's name
         result.inputs["zeta"].uncertainty = None
+    if "zeta" not in result.results:  # an inverse problem with several roots
+        if "zeta" not in result.inputs:
+            raise PhysicsError(f"{read_in.scene.name}: several values of the unknown fit and "
+                               "each has its own damping ratio; natural-frequency lists them")
+        # solved from zeta: every root has the zeta given, so it stays a result
+        result.results["zeta"] = _entry("zeta", result.inputs["zeta"].si)
     zeta = result.results["zeta"].si
     added = damping_from_zeta(zeta)
     results: dict[str, Entry] = {}

@@ -136,6 +136,8 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
         inputs.append(UncertainInput(target, float(parsed_goal.si),
                                      float(parsed_goal.uncertainty)))
     slopes: dict[str, dict[int, object]] = {}
+    if goal_index is not None:  # the result solved from is the goal, whatever the root
+        slopes[target] = {goal_index: 1.0}
     failed: set[str] = set()
 
     def numbers(at: _Problem, x: float) -> dict[str, object] | None:
