@@ -1753,3 +1753,7 @@ def test_damping_scene_solved_from_zeta_with_several_roots():
     # 2 pi zeta among subnormals: a multiple of 4.9e-324 (6 of them), within its spacing
     assert results["delta"]["value"] == pytest.approx(2 * math.pi * 5e-324, rel=0.2)
     assert results["regime"]["value"] == "underdamped"
+    # Q = 1/(2 zeta) overflows: null, with the warning every overflowed result gets
+    assert results["Q"]["value"] is None
+    assert ("Q overflows float64 at these inputs (beyond 1.8e308); it is left out (null in "
+            "JSON)") in json.loads(out.stdout)["warnings"]

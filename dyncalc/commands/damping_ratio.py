@@ -782,6 +782,7 @@ def _from_scene(read_in: SceneTexts) -> Result:
         warnings += [w for w in added.warnings if w not in warnings]
     result.results = results
     result.warnings = warnings
+    result.add_overflow_warnings()  # the results added here (Q = 1/(2 zeta) at a tiny zeta)
     if scene_sensitivity is not None:
         result.sensitivity = lambda: _scene_sensitivity(scene_sensitivity, results, given)
     if result.explanation is not None:

@@ -209,13 +209,13 @@ class Result:
         overflow.
         """
         for name, entry in self.results.items():
-            if not (isinstance(entry.si, float) and math.isinf(entry.si)):
+            if entry.overflowed or not (isinstance(entry.si, float) and math.isinf(entry.si)):
                 continue
             if name.startswith("T"):
                 omega = self.results.get("omega" + name[1:])
                 if omega is not None and omega.si == 0.0:
                     continue
             entry.overflowed = True
-            self.warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308 "
-                                 f"{entry.dim.si if entry.dim else ''}); it is left out (null "
-                                 "in JSON)")
+            unit = f" {entry.dim.si}" if entry.dim is not None and entry.dim.si else ""
+            self.warnings.append(f"{name} overflows float64 at these inputs (beyond 1.8e308"
+                                 f"{unit}); it is left out (null in JSON)")
