@@ -122,7 +122,8 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
     differences of the forward scene on the parameters as read (two scene computations per
     uncertain input and per root, plus two for ``y_x``): no root is searched for again and
     nothing is parsed again."""
-    from ..result.propagate import RELATIVE_STEP, Sensitivity, UncertainInput
+    from ..result.propagate import (RELATIVE_STEP, Sensitivity, UncertainInput,
+                                    central_differences)
     from .runner import _nudged
 
     scene, prepared = problem.scene, problem.prepared
@@ -153,14 +154,11 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
                 out[name] = np.asarray(entry.si, dtype=float)
         return out
 
-    def step(value: float, sigma: float) -> float:
-        return RELATIVE_STEP * (abs(value) if value != 0 else sigma or 1.0)
-
     for name, x in zip(names, roots):
         base = numbers(problem, x) or {}
         # a root whose derivative cannot be worked out leaves every result it sets without one
         unknowable = {name, *(base if with_values else ())} - {target}
-        hx = step(x, 0.0)
+        hx = RELATIVE_STEP * (abs(x) if x != 0 else 1.0)
         up, down = numbers(problem, x + hx), numbers(problem, x - hx)
         if up is None or down is None or target not in up or target not in down:
             failed.update(unknowable)
@@ -170,43 +168,38 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
         if y_x == 0 or not math.isfinite(y_x):
             failed.update(unknowable)
             continue
-        for index, item in enumerate(inputs):
+
+        def rerun(index: int, offset: float, x=x):
+            nudged = _nudged(scene, prepared, params[index], offset)
+            return None if nudged is None else numbers(
+                _Problem(scene, nudged, problem.param, target, problem.method, problem.rtol), x)
+
+        # the scene's partial derivatives in each parameter at this root (central, or
+        # one-sided where a nudge is refused), as for a forward scene
+        partials = central_differences(inputs[:len(params)], base, rerun)
+        by_target = partials.slopes.get(target, {})
+        for index, item in enumerate(inputs[:len(params)]):
             if item.sigma == 0:
                 continue
-            if index == goal_index:
-                dx = 1.0 / y_x
-                slopes.setdefault(name, {})[index] = dx
-                if with_values:  # the result solved from moves with its goal, 1 for 1
-                    for k, slope in z_x.items():
-                        slopes.setdefault(k, {})[index] = 1.0 if k == target else slope * dx
-                continue
-            h = step(item.si, item.sigma)
-            moved = []
-            for offset in (h, -h):
-                nudged = _nudged(scene, prepared, item.name, offset)
-                moved.append(None if nudged is None else numbers(
-                    _Problem(scene, nudged, problem.param, target, problem.method,
-                             problem.rtol), x))
-            if moved[0] is not None and moved[1] is not None:
-                partial = {k: (moved[0][k] - moved[1][k]) / (2 * h) for k in moved[0]
-                           if k in moved[1]}
-            else:  # one side refused (a value at its bound): the one-sided difference
-                one = moved[0] if moved[0] is not None else moved[1]
-                if one is None or not base:
-                    failed.update(unknowable)
-                    continue
-                sign = 1.0 if moved[0] is not None else -1.0
-                partial = {k: sign * (one[k] - base[k]) / h for k in one if k in base}
-            if target not in partial:
+            if index not in by_target:
                 failed.update(unknowable)
                 continue
-            dx = -float(partial[target]) / y_x
+            dx = -float(by_target[index]) / y_x
             slopes.setdefault(name, {})[index] = dx
-            if with_values:  # the result solved from stays at its goal: 0
-                for k, slope in partial.items():
-                    if k in z_x:
-                        slopes.setdefault(k, {})[index] = (0.0 if k == target
-                                                           else slope + z_x[k] * dx)
+            if not with_values:
+                continue
+            for k in z_x:  # the result solved from stays at its goal: 0
+                if k in partials.failed:
+                    failed.add(k)
+                elif index in partials.slopes.get(k, {}):
+                    slopes.setdefault(k, {})[index] = (
+                        0.0 if k == target else partials.slopes[k][index] + z_x[k] * dx)
+        if goal_index is not None and inputs[goal_index].sigma != 0:
+            dx = 1.0 / y_x
+            slopes.setdefault(name, {})[goal_index] = dx
+            if with_values:  # the result solved from moves with its goal, 1 for 1
+                for k, slope in z_x.items():
+                    slopes.setdefault(k, {})[goal_index] = 1.0 if k == target else slope * dx
     return Sensitivity(inputs, slopes, failed)
 
 
