@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import functools
 
+from ..units.grammar import _normalise
+
 __all__ = ["check_units", "magnitude"]
 
 
@@ -54,8 +56,6 @@ def check_units(**dimensions):
 
         @functools.wraps(function)
         def checked(*args, **kwargs):
-            from ..units.grammar import _normalise
-
             for name, value in (*zip(names, args), *kwargs.items()):
                 dim = dimensions.get(name)
                 if dim is not None and hasattr(value, "units"):
