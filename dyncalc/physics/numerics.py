@@ -801,3 +801,12 @@ def sqrt_ratio_array(a, b):
     shift = shift - odd
     with np.errstate(over="ignore", under="ignore"):
         return np.ldexp(np.sqrt(ma / mb), (shift // 2).astype(np.int32))
+
+
+def finite_nonzero(values: dict):
+    """The rows where every array of ``values`` is finite and nonzero: the rows a column
+    kernel may call exact when the one-off warns of a result that overflows or underflows."""
+    mask = True
+    for array in values.values():
+        mask = mask & np.isfinite(array) & (array != 0.0)
+    return mask

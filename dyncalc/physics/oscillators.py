@@ -18,7 +18,9 @@ from .face import check_units, magnitude
 from .numerics import (HALF_TURN, PI_HI, PI_LO, SERIES_MAX_TERMS, UNIT_ROUNDOFF, agm,
                        agm_compensated, half_complement_sin, monomial, pendulum_series,
                        root_monomial, sqrt_ratio)
-from .outcome import Outcome, periodic
+from .columns import Columns, column_kernel
+from .numerics import finite_nonzero, sqrt_ratio_array
+from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["mass_spring", "torsional", "pendulum", "physical_pendulum", "large_amplitude",
            "PENDULUM_METHODS", "SMALL_ANGLE_METHODS", "ELLIPTIC_ERROR", "ODE_FLOOR"]
@@ -84,6 +86,26 @@ def torsional(kt, J) -> Outcome:
     7.957747154594767
     """
     return Outcome(periodic(sqrt_ratio(magnitude(kt, "N*m/rad"), magnitude(J, "kg*m**2"))))
+
+
+def _ratio_columns(a, b) -> Columns:
+    """omega = sqrt(a / b) on columns (:func:`~dyncalc.physics.numerics.sqrt_ratio_array`,
+    bit for bit :func:`~dyncalc.physics.numerics.sqrt_ratio`); rows whose results are zero or
+    beyond float64 (the one-off warns) are not exact."""
+    values = periodic_arrays(sqrt_ratio_array(a, b))
+    return Columns(values, exact=finite_nonzero(values))
+
+
+@column_kernel(mass_spring)
+def _mass_spring_columns(k, m) -> Columns:
+    """:func:`mass_spring` on columns: ``k`` in N/m, ``m`` in kg."""
+    return _ratio_columns(k, m)
+
+
+@column_kernel(torsional)
+def _torsional_columns(kt, J) -> Columns:
+    """:func:`torsional` on columns: ``kt`` in N*m/rad, ``J`` in kg*m^2."""
+    return _ratio_columns(kt, J)
 
 
 def _amplitude_parts(amplitude) -> tuple[float, str, float]:
@@ -342,6 +364,15 @@ def pendulum(l, g, amplitude=None, method: str = "auto", rtol: float = 1e-9) -> 
     """
     omega0 = sqrt_ratio(magnitude(g, "m/s**2"), magnitude(l, "m"))
     return large_amplitude(omega0, amplitude, method, rtol)
+
+
+@column_kernel(pendulum)
+def _pendulum_columns(l, g, amplitude=None, method: str = "auto", rtol: float = 1e-9):
+    """:func:`pendulum` on columns, small swings only (``amplitude`` None, method ``auto`` or
+    ``small-angle``); ``None`` (no row exact) otherwise."""
+    if amplitude is not None or method not in ("auto", "small-angle"):
+        return None
+    return _ratio_columns(g, l)
 
 
 @check_units(m=MASS, a=LENGTH, J=INERTIA, J_A=INERTIA, g=ACCELERATION, amplitude=ANGLE)

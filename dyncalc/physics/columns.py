@@ -1,0 +1,59 @@
+"""Column kernels: the SI kernel under a physics function, called on whole numpy columns.
+
+Batch mode computes a chunk of rows at once: each parameter is a float64 array in its SI unit
+(the ``si`` unit of its :class:`~dyncalc.units.Dim`; a choice such as ``body`` as the array of
+the values its words stand for, ``kappa``), and the kernel returns a :class:`Columns`. A
+kernel reproduces the one-off function *bit for bit* on the rows it marks ``exact``; every
+other row (a warning, a refusal, another model or method, a value the arrays cannot give
+exactly) is left to the one-off function, so batch output never differs from the one-off's.
+
+A kernel is attached to its physics function with :func:`column_kernel`, and found as the
+function's ``columns`` attribute::
+
+    @column_kernel(mass_spring)
+    def _mass_spring_columns(k, m):
+        omega = sqrt_ratio_array(k, m)
+        return Columns(periodic_arrays(omega), exact=np.isfinite(omega) & (omega > 0))
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..records import Record
+
+__all__ = ["Columns", "column_kernel", "kernel_of"]
+
+
+class Columns(Record):
+    """What a column kernel returns.
+
+    ``values`` maps result names to float64 arrays in the unit the one-off
+    :class:`~dyncalc.physics.outcome.Outcome` gives them (SI), in its order; ``exact`` is a
+    boolean array: the rows whose values are the one-off's to the bit, with no warning, no
+    refusal and this ``model`` and ``method`` (the other rows' values are ignored);
+    ``error_estimate`` is the one-off's (a float, the same for every row) or ``None``.
+    """
+
+    _FIELDS = ("values", "exact", "model", "method", "error_estimate")
+    __slots__ = _FIELDS
+    __hash__ = None
+
+    def __init__(self, values: dict[str, Any], exact: Any, model: str = "linear",
+                 method: str = "closed-form", error_estimate: float | None = None):
+        self.values, self.exact, self.model, self.method, self.error_estimate = (
+            values, exact, model, method, error_estimate)
+
+
+def column_kernel(physics):
+    """Attach the decorated kernel to the physics function ``physics`` as
+    ``physics.columns`` (the decorated kernel is returned unchanged)."""
+    def attach(kernel):
+        physics.columns = kernel
+        kernel.physics = physics
+        return kernel
+    return attach
+
+
+def kernel_of(physics):
+    """The column kernel of ``physics``, or ``None`` where it has none."""
+    return getattr(physics, "columns", None)
