@@ -181,8 +181,9 @@ class _Writer:
                 entry = (json.dumps(name).replace("%", "%%") + ': {"value": %s, "unit": '
                          + json.dumps(unit).replace("%", "%%") + "}")
                 parts.append(list(map(entry.__mod__, numbers)))
-            template = '{"line": %d, ' + block.head.replace("%", "%%") + \
-                ', "inputs": {%s}, "results": {%s}, "warnings": [], "extra": {}}'
+            template = ('{"line": %d, ' + block.head.replace("%", "%%")
+                        + ', "inputs": {%s}, "results": {%s}, "warnings": [], "extra": '
+                        + block.extra.replace("%", "%%") + "}")
             made = list(map(template.__mod__, zip(line_numbers, block.inputs,
                                                   map(", ".join, zip(*parts)))))
         else:
