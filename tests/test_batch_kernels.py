@@ -16,8 +16,9 @@ import pytest
 
 from dyncalc import batch
 from dyncalc.batch import fast as fast_path
+from dyncalc.batch.fast_commands import _command_fast
 from dyncalc.commands.natural_frequency import STANDARD
-from dyncalc.physics.columns import kernel_of
+from dyncalc.physics.columns import Columns, kernel_of
 from dyncalc.scenes import catalog, get_scene
 
 SCENES = list(catalog())
@@ -96,3 +97,71 @@ def test_ordinary_rows_take_the_vectorised_path(name):
     blocks = fast_path._natural_frequency_fast(spec, columns, table, True, {})
     covered = sum(len(block.rows) for block in blocks)
     assert covered >= 0.5 * len(rows), f"{name}: {covered} of {len(rows)} rows vectorised"
+
+
+def _coriolis_spec(adapter):
+    spec = batch.CoriolisRows()
+    spec.adapter, spec.fast = adapter, _command_fast
+    return spec
+
+
+def _fake_coriolis(given, settings):
+    """a_c = 2 omega x v_r for small whole-number vectors, where every product is exact."""
+    import numpy as np
+
+    if set(given) != {"omega", "vr"}:
+        return None
+    a_c = 2.0 * np.cross(given["omega"], given["vr"])
+    size = np.sqrt((a_c * a_c).sum(axis=1))
+    exact = (np.abs(given["omega"]) < 10).all(axis=1) & (np.abs(given["vr"]) < 10).all(axis=1)
+    exact &= (size == np.round(size)) & (size > 0)
+    return Columns({"a_c": a_c, "a_c_mag": size}, exact, model="vectors")
+
+
+def _command_run(spec, path, fast, as_json):
+    out, err = io.StringIO(), io.StringIO()
+    code = batch.run_batch(spec, str(path), as_json=as_json, on_error="skip", out=out,
+                           err=err, fast=fast)
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("header", ["omega,vr", "omega [rpm],vr", "omega,vr [km/h]"])
+@pytest.mark.parametrize("adapter", [_fake_coriolis, lambda given, settings: None])
+def test_command_blocks_equal_the_one_off_rows(tmp_path, adapter, header):
+    """The vectorised path of a record command (vectors read from cells, a header unit, cells
+    refused, rows the adapter does not mark exact) writes what the one-off path writes."""
+    rows = ['"0,0,2","1,0,0"', '"0,0,1","0,3,0"', '"0,0,2","4,0,0"', '"0,0,x","1,0,0"',
+            '"0,0,2",', '"0,0,3","1 m/s,0,0"', '"0,0,50","1,0,0"', '"0,0,2","0,0,1"',
+            '"0,0,1e400","1,0,0"', '" 0 , 0 , 2 ","-1,0,0"']
+    path = tmp_path / "rows.csv"
+    path.write_text(header + "\n" + "\n".join(rows) + "\n")
+    spec = _coriolis_spec(adapter)
+    for as_json in (False, True):
+        fast = _command_run(spec, path, True, as_json)
+        slow = _command_run(spec, path, False, as_json)
+        assert fast == slow
+    if adapter is _fake_coriolis and header == "omega,vr":
+        table = [[r[1:r.index('",')] for r in rows],
+                 [r[r.index('",') + 2:].strip('"') for r in rows]]
+        columns = [batch.Column(0, "omega", "omega", "", "omega"),
+                   batch.Column(1, "vr", "vr", "", "vr")]
+        blocks = _command_fast(spec, columns, table, True, {})
+        assert [b.rows.tolist() for b in blocks] == [[0, 1, 2, 9]]  # the others: generic
+
+
+def test_a_wrong_adapter_is_caught_by_the_probe(tmp_path):
+    """An adapter whose numbers are not the one-off's sends its block to the generic path."""
+    def wrong(given, settings):
+        out = _fake_coriolis(given, settings)
+        out.values["a_c_mag"] = out.values["a_c_mag"] * 2.0
+        return out
+
+    path = tmp_path / "rows.csv"
+    path.write_text('omega,vr\n"0,0,2","1,0,0"\n')
+    spec = _coriolis_spec(wrong)
+    table = [["0,0,2"], ["1,0,0"]]
+    columns = [batch.Column(0, "omega", "omega", "", "omega"),
+               batch.Column(1, "vr", "vr", "", "vr")]
+    assert _command_fast(spec, columns, table, True, {}) == []
+    assert len(_command_fast(_coriolis_spec(_fake_coriolis), columns, table, True, {})) == 1
+    assert _command_run(spec, path, True, True) == _command_run(spec, path, False, True)

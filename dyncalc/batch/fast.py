@@ -18,14 +18,15 @@ from .header import Column, with_header_unit
 
 class FastBlock:
     """Rows of a chunk computed together: their positions in the chunk, the result arrays (SI,
-    in the order the one-off gives them) and kinds, and for JSON the constant part of each
+    in the order the one-off gives them; vectors as rows of an (n, 3) array, words as str
+    arrays) and their dimensions (``None`` for words), and for JSON the constant part of each
     line (``head``), each row's ``inputs`` object text and the ``extra`` object text."""
 
-    __slots__ = ("rows", "values", "kinds", "head", "inputs", "extra")
+    __slots__ = ("rows", "values", "dims", "head", "inputs", "extra")
 
-    def __init__(self, rows, values, kinds, head, inputs, extra="{}"):
-        self.rows, self.values, self.kinds, self.head, self.inputs, self.extra = (
-            rows, values, kinds, head, inputs, extra)
+    def __init__(self, rows, values, dims, head, inputs, extra="{}"):
+        self.rows, self.values, self.dims, self.head, self.inputs, self.extra = (
+            rows, values, dims, head, inputs, extra)
 
 
 def _default_input(p, strict: bool, cache: dict):
@@ -209,7 +210,7 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
     if len(keep) != len(rows):
         rows = rows[keep]
         values = {name: array[keep] for name, array in values.items()}
-    kinds = {name: result_kind(name) for name in values}
+    dims = {name: result_kind(name).dim for name in values}
     head = texts = None
     extra = "{}"
     if out.error_estimate is not None:
@@ -219,7 +220,7 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
                 f'"scene": {json.dumps(scene.name)}, "model": {json.dumps(out.model)}, '
                 f'"method": {json.dumps(out.method)}')
         texts = _input_texts(inputs, keep, words)
-    return FastBlock(rows, values, kinds, head, texts, extra)
+    return FastBlock(rows, values, dims, head, texts, extra)
 
 
 def _input_texts(inputs, keep: np.ndarray, words: dict) -> list[str]:
@@ -231,6 +232,9 @@ def _input_texts(inputs, keep: np.ndarray, words: dict) -> list[str]:
             continue
         if isinstance(read, str):
             parts.append([read] * len(keep))
+            continue
+        if hasattr(read, "texts"):  # words or vectors (dyncalc.batch.fast_commands)
+            parts.append(read.texts(name, keep))
             continue
         every = len(keep) == len(read.shown)
         shown = read.shown if every else read.shown[keep]
