@@ -62,18 +62,18 @@ def pow_array(x, power: int):
     x = np.asarray(x, dtype=float)
     if power == 1:
         return x.copy()
-    if power == 2:
-        out = x * x
-        _, err = _two_product(x, x)
-        distance = np.abs(err / np.spacing(out))        # the exact value: out + err
-    elif power == -1:
-        out = 1.0 / x
-        high, low = _two_product(out, x)
-        distance = np.abs(((1.0 - high) - low) / x / np.spacing(out))   # 1/x - out
-    else:
-        return np.array([value ** power for value in x.tolist()], dtype=float)
-    with np.errstate(invalid="ignore"):
-        near = ~(np.abs(distance - 0.5) > POW_BAND)      # (NaN: near, the safe side)
+    with np.errstate(all="ignore"):
+        if power == 2:
+            out = x * x
+            _, err = _two_product(x, x)
+            distance = np.abs(err / np.spacing(out))        # the exact value: out + err
+        elif power == -1:
+            out = 1.0 / x
+            high, low = _two_product(out, x)
+            distance = np.abs(((1.0 - high) - low) / x / np.spacing(out))   # 1/x - out
+        else:
+            return np.array([value ** power for value in x.tolist()], dtype=float)
+        near = ~(np.abs(distance - 0.5) > POW_BAND)          # (NaN: near, the safe side)
     index = np.flatnonzero(near)
     if index.size:
         out[index] = [value ** power for value in x[index].tolist()]
@@ -124,8 +124,9 @@ def root_monomial_array(coefficient: float, factors):
     """:func:`~dyncalc.physics.numerics.root_monomial` elementwise, bit for bit: the exponent
     halved exactly before one square root of the mantissa.
 
-    >>> root_monomial_array(1.0, [(np.array([1e300, 4.0]), 1), (np.array([1e-300, 1.0]), -1)]).tolist()
-    [1e+300, 2.0]
+    >>> k, m = np.array([8e200, 4.0, 1e300]), np.array([1e-200, 1.0, 1e-300])
+    >>> root_monomial_array(2.0, [(k, 1), (m, -1)]).tolist()   # 2e600 would overflow midway
+    [4e+200, 2.8284271247461903, 1.414213562373095e+300]
     """
     mantissa, exponent, zero = _scaled_product_array(coefficient, factors)
     odd = (exponent % 2).astype(bool)
