@@ -16,7 +16,9 @@ def check_kernel(columns, one_off, n: int):
     or a PhysicsError/InputError) on every row: rows marked exact must have the one-off's
     names, SI values to the bit, model, method and error estimate, and no warning or refusal.
 
-    Returns ``(exact, refused, warned)`` boolean arrays for the caller's share checks.
+    Returns ``(exact, refused, clean)`` boolean arrays for the caller's share checks:
+    ``clean`` marks the rows the one-off computes without refusal or warning and with every
+    value finite and nonzero (the rows a kernel could mark exact).
     """
     exact = np.broadcast_to(np.asarray(columns.exact, dtype=bool), (n,))
     refused = np.zeros(n, dtype=bool)
@@ -32,16 +34,19 @@ def check_kernel(columns, one_off, n: int):
             refused[i] = True
             continue
         warned[i] = bool(out.warnings)
+        for name in names:
+            want[name][i] = float(out.values[name].magnitude) if name in out.values else 0.0
         if not exact[i]:
             continue
         assert list(out.values) == names, (i, list(out.values))
         assert (out.model, out.method, out.error_estimate) == (
             columns.model, columns.method, columns.error_estimate), i
-        for name in names:
-            want[name][i] = float(out.values[name].magnitude)
     assert not (exact & refused).any(), np.flatnonzero(exact & refused)[:5]
     assert not (exact & warned).any(), np.flatnonzero(exact & warned)[:5]
     for name in names:
         mismatch = got[name][exact].view(np.int64) != want[name][exact].view(np.int64)
         assert not mismatch.any(), (name, np.flatnonzero(exact)[mismatch][:5])
-    return exact, refused, warned
+    clean = ~refused & ~warned
+    for name in names:
+        clean &= np.isfinite(want[name]) & (want[name] != 0.0)
+    return exact, refused, clean

@@ -154,6 +154,7 @@ class WideArray:
     """
 
     __slots__ = ("m", "e")
+    __array_ufunc__ = None      # ``array * WideArray`` defers to WideArray.__rmul__, as Wide
 
     def __init__(self, value=0.0, exponent=0):
         m, e = np.frexp(np.asarray(value, dtype=float))
