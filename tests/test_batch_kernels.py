@@ -81,16 +81,25 @@ def test_vectorised_rows_equal_the_one_off_rows(tmp_path, name, ordinary):
         assert fast[1].splitlines() == slow[1].splitlines()
 
 
-@pytest.mark.parametrize("name", [n for n in SCENES if kernel_of(get_scene(n).compute)])
+#: Scenes with a kernel that leaves ordinary rows to the one-off path, and why.
+ONE_OFF_ONLY = {
+    # the one-off subtracts r from R in the unit R was typed in; the kernel takes metres
+    "rolling-in-track": "R - r in the unit typed",
+}
+
+
+@pytest.mark.parametrize("name", [n for n in SCENES if kernel_of(get_scene(n).compute)
+                                  and n not in ONE_OFF_ONLY])
 def test_ordinary_rows_take_the_vectorised_path(name):
-    """Rows giving every parameter at ordinary magnitudes (no amplitude, no zeta) are mostly
-    computed by the scene's kernel."""
+    """Rows giving every parameter at ordinary magnitudes (no amplitude, no zeta; a choice at
+    its default word) are mostly computed by the scene's kernel."""
     scene = get_scene(name)
     rng = random.Random(name)
     params = [p for p in scene.params if p.name not in ("zeta", "amplitude")
               and not (p.choices is None and p.name == "kappa")
               and not any(p.name in group[1:] for group in scene.one_of)]
-    rows = [[_cell(rng, p, True) for p in params] for _ in range(200)]
+    rows = [[p.default if p.choices is not None and p.default else _cell(rng, p, True)
+             for p in params] for _ in range(200)]
     table = [list(column) for column in zip(*rows)]
     columns = [batch.Column(i, p.name, p.name, "", p.name) for i, p in enumerate(params)]
     spec = batch.NaturalFrequencyRows(STANDARD, scene=name)

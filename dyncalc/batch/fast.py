@@ -161,6 +161,8 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
     from ..result.kinds import result_kind
 
     scene = plan.scene
+    # a choice left to its default is its default word (body=solid-cylinder, sense=inward)
+    words = {**{p.name: p.default for p in plan.defaults if p.choices is not None}, **words}
     good = np.ones(len(rows), dtype=bool)
     si: dict[str, Any] = {}
     inputs = []
