@@ -164,3 +164,20 @@ def round_certified(hi, lo, bound):
         certain = (np.isfinite(z) & (np.abs(z) >= 2.0 ** -1022) & (room > 0.0)) | (
             (hi == 0.0) & (lo == 0.0))
     return z, certain
+
+
+def dd_add(ah, al, bh, bl):
+    """``(ah + al) + (bh + bl)`` as a double-double: relative error below ``2^-104`` for
+    operands of one sign; for opposite signs below ``2^-104`` of the larger operand."""
+    s, e = two_sum_array(ah, bh)
+    return _renormalise(s, e + (al + bl))
+
+
+def dd_sqrt(ah, al):
+    """``sqrt(ah + al)`` as a double-double (one Newton correction of the float root, its
+    square formed exactly): relative error below ``2^-103``; 0 gives 0."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.sqrt(ah)
+        p, e = two_product_array(s, s)
+        correction = np.where(s > 0.0, (((ah - p) - e) + al) / (2.0 * s), 0.0)
+    return _renormalise(s, correction)
