@@ -87,8 +87,9 @@ def root_monomial_array(coefficient: float, factors):
     """:func:`~dyncalc.physics.numerics.root_monomial` elementwise: ``sqrt(coefficient *
     prod(x ** p))`` with the binary exponent halved exactly.
 
-    >>> root_monomial_array(6.0, [(np.array([1e200]), 1), (np.array([1e-100]), -3)]).tolist()
-    [inf]
+    >>> root_monomial_array(6.0, [(np.array([1e200, 1e200]), 1),
+    ...                           (np.array([1e-100, 1e-200]), -3)]).tolist()  # sqrt(6e800)
+    [2.4494897427831778e+250, inf]
     """
     mantissa, exponent, zero = _scaled_product_array(coefficient, factors)
     odd = (exponent % 2).astype(bool)
