@@ -63,11 +63,10 @@ def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
                                     strict=strict)
         except InputError:
             sample = None
-        # a unit of a plain dimension (an angular rate's or an angle's units have rules of
-        # their own), or none at all: the number is taken in the SI unit, as it stands
-        if sample is not None and (dim.kind in ("plain", "dimensionless")
-                                   or (not unit and sample.assumed_si)) \
-                and float(sample.quantity.magnitude) == 1.0:
+        # the reader keeps the unit as typed (``1 unit`` reads as 1 of it; an angular rate in
+        # rpm comes back in rad/s, a cycle rate in turns as Hz: those cells go to the generic
+        # path), so pint's conversion of the whole array is the one-off's conversion of a cell
+        if sample is not None and float(sample.quantity.magnitude) == 1.0:
             info = _UnitInfo()
             info.units = sample.quantity.units
             info.target = dim.si.replace("^", "**") if dim.si else ""

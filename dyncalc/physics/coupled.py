@@ -15,9 +15,11 @@ from ..lazy import numpy as np
 
 from ..errors import PhysicsError
 from ..units import MASS, STIFFNESS
+from .columns import Columns, column_kernel
 from .face import check_units, magnitude
-
-from .outcome import Outcome, periodic
+from .numerics_arrays import (dd_add, dd_div, dd_mul, dd_sqrt, round_certified,
+                              two_product_array, two_sum_array)
+from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["coupled_blocks", "two_by_two_modes"]
 
@@ -141,3 +143,88 @@ def coupled_blocks(m1, m2, k1, k2, k3) -> Outcome:
     return Outcome(values, model="linear", method="closed-form",
                    assumptions=["linear springs, frictionless floor, no damping; mode shapes "
                                 "are (x1, x2) amplitude ratios scaled to unit length"])
+
+
+#: Ratio of the smallest non-zero stiffness (mass) to the largest beyond which the columns
+#: leave the row to the one-off (the scaled double-double products would lose bits).
+_SPREAD = 2.0 ** -250
+#: ``max(|a - d|/2, |b|)`` below this share of ``max(a, d)`` makes the mode shapes ill
+#: conditioned in the inputs (near-equal uncoupled frequencies): those rows are left to the
+#: one-off, whose 40 digits and the double-double could then disagree.
+_WELL_POSED = 2.0 ** -30
+#: Relative error bounds of the double-double frequencies and mode components (a few 2^-104
+#: per step; the modes amplified at most 2^30 by the condition above). The decimal values of
+#: the one-off are within about 1e-36 of the exact ones, far inside these bounds.
+_OMEGA_BOUND = 2.0 ** -95
+_MODE_BOUND = 2.0 ** -68
+
+
+def _unit_mode_columns(x1, x2):
+    """Components of ``(x1, x2)`` (double-doubles) scaled to unit length, each rounded with
+    :func:`round_certified`: ``(v1, v2, certain)``, first non-zero component positive."""
+    norm = dd_sqrt(*dd_add(*dd_mul(*x1, *x1), *dd_mul(*x2, *x2)))
+    v1, sure1 = round_certified(*dd_div(*x1, *norm), _MODE_BOUND)
+    v2, sure2 = round_certified(*dd_div(*x2, *norm), _MODE_BOUND)
+    flip = (v1 < 0.0) | ((v1 == 0.0) & (v2 < 0.0))
+    sign = np.where(flip, -1.0, 1.0)
+    return np.stack([sign * v1 + 0.0, sign * v2 + 0.0], axis=-1), sure1 & sure2
+
+
+@column_kernel(coupled_blocks)
+def _coupled_blocks_columns(m1, m2, k1, k2, k3) -> Columns:
+    """:func:`coupled_blocks` on columns (masses in kg, stiffnesses in N/m).
+
+    The one-off computes in 40-digit decimals and rounds once to floats, which numpy cannot
+    repeat; but its floats are the correctly rounded exact values wherever those are not within
+    about 1e-36 of a rounding boundary. So the same closed form is evaluated here in
+    double-double arithmetic (stiffnesses and masses scaled by powers of two first, the
+    eigenvalues scaled back exactly) and each result rounded with :func:`round_certified`: a
+    row is exact only where every rounding is certainly the correct one (all but about one row
+    in 2^15 for the modes). Rows not exact: stiffnesses or masses more than 2^250 apart, nearly
+    equal uncoupled frequencies with a weak coupling (:data:`_WELL_POSED`), negative or fewer
+    than two positive stiffnesses (refused), results zero or beyond float64.
+    """
+    ks = (k1, k2, k3)
+    _, sk = np.frexp(np.maximum(np.maximum(k1, k2), k3))
+    _, sm = np.frexp(np.maximum(m1, m2))
+    with np.errstate(all="ignore"):
+        K1, K2, K3 = (np.ldexp(k, -sk) for k in ks)
+        M1, M2 = np.ldexp(m1, -sm), np.ldexp(m2, -sm)
+        tame = (M1 >= _SPREAD) & (M2 >= _SPREAD)
+        for k in (K1, K2, K3):
+            tame &= (k == 0.0) | (k >= _SPREAD)
+        a = dd_div(*two_sum_array(K1, K3), M1, 0.0)
+        d = dd_div(*two_sum_array(K2, K3), M2, 0.0)
+        mass = two_product_array(M1, M2)
+        b = dd_div(-K3, 0.0, *dd_sqrt(*mass))
+        half = tuple(0.5 * x for x in dd_add(*a, -d[0], -d[1]))
+        radius = dd_sqrt(*dd_add(*dd_mul(*half, *half), *dd_mul(*b, *b)))
+        lam2 = dd_add(*(0.5 * x for x in dd_add(*a, *d)), *radius)
+        det = dd_add(*dd_add(*two_product_array(K1, K2), *two_product_array(K1, K3)),
+                     *two_product_array(K2, K3))
+        lam1 = dd_div(*dd_div(*det, *mass), *lam2)
+        shift = sk.astype(np.int64) - sm              # lambda = lambda_scaled 2^shift
+        odd = (shift % 2).astype(bool)
+        twice = np.where(odd, 2.0, 1.0)
+        omegas, sure = [], tame
+        for lam in (lam1, lam2):
+            w, ok = round_certified(*dd_sqrt(twice * lam[0], twice * lam[1]), _OMEGA_BOUND)
+            omegas.append(np.ldexp(w, ((shift - odd) // 2).astype(np.int32)))
+            sure = sure & ok
+        largest = np.maximum(a[0], d[0])
+        sure &= np.maximum(np.abs(half[0]), np.abs(b[0])) >= _WELL_POSED * largest
+        ge = half[0] >= 0.0
+        plus, minus = dd_add(*half, *radius), dd_add(*radius, -half[0], -half[1])
+        u1 = tuple(np.where(ge, p, q) for p, q in zip(plus, b))
+        u2 = tuple(np.where(ge, p, q) for p, q in zip(b, minus))
+        root1, root2 = dd_sqrt(M1, 0.0), dd_sqrt(M2, 0.0)
+        mode1, sure1 = _unit_mode_columns(dd_div(-u2[0], -u2[1], *root1), dd_div(*u1, *root2))
+        mode2, sure2 = _unit_mode_columns(dd_div(*u1, *root1), dd_div(*u2, *root2))
+        values = {**periodic_arrays(omegas[0], "_1"), **periodic_arrays(omegas[1], "_2")}
+    positive = (k1 > 0.0).astype(int) + (k2 > 0.0) + (k3 > 0.0)
+    exact = (sure & sure1 & sure2 & (positive >= 2) & (np.minimum(np.minimum(k1, k2), k3) >= 0.0)
+             & (np.abs(omegas[0]) >= 2.0 ** -1022) & (np.abs(omegas[1]) >= 2.0 ** -1022))
+    for array in values.values():
+        exact &= np.isfinite(array) & (array != 0.0)
+    values.update(mode_1=mode1, mode_2=mode2)
+    return Columns(values, exact=exact)

@@ -15,11 +15,15 @@ from __future__ import annotations
 
 import math
 
+from ..lazy import numpy as np
 from ..units import Q_
 from ..units import ACCELERATION, ANGULAR_RATE, DAMPING, LENGTH, LINEAR_DRAG, MASS, STIFFNESS
 from .face import check_units, magnitude
 from .numerics import Wide, monomial, root_monomial, sqrt_ratio, two_product
-from .outcome import Outcome, damped, periodic
+from .columns import Columns, column_kernel
+from .numerics import finite_nonzero
+from .numerics_arrays import hypot_array, monomial_array, root_monomial_array
+from .outcome import Outcome, damped, damped_arrays, periodic, periodic_arrays
 
 __all__ = ["pendulum_spring_dashpot", "rod_in_fluid", "frame_brace_damper",
            "small_damping_error", "FRAME_METHODS", "TWO_PI", "CRITICAL_BAND", "REGIMES",
@@ -115,6 +119,42 @@ def pendulum_spring_dashpot(m, a, k, d, g) -> Outcome:
     return Outcome(values, warnings=notes)
 
 
+def _damped_columns(values: dict, omega, zeta, extra: dict, damper) -> Columns:
+    """The columns of a damped scene: ``values`` (``omega``, ``f``, ``T`` and the scene's
+    ``extra`` results before ``zeta``) completed with :func:`damped_arrays`. Exact rows are
+    underdamped (the one-off warns from ``zeta = 1`` on), with every result finite and non-zero
+    but ``xi`` and ``zeta``, which are zero without a damper (``damper == 0``, no underflow)."""
+    with np.errstate(all="ignore"):
+        values.update(damped_arrays(omega, zeta))
+    rates = {name: array for name, array in values.items()
+             if name != "zeta" and name not in extra}
+    extra_ok = True
+    for array in extra.values():
+        extra_ok = extra_ok & np.isfinite(array) & ((array != 0.0) | (damper == 0.0))
+    exact = (finite_nonzero(rates) & (zeta < 1.0) & extra_ok
+             & ((zeta != 0.0) | (damper == 0.0)))
+    return Columns(values, exact=exact)
+
+
+@column_kernel(pendulum_spring_dashpot)
+def _pendulum_spring_dashpot_columns(m, a, k, d, g) -> Columns:
+    """:func:`pendulum_spring_dashpot` on columns (``m`` in kg, ``a`` in m, ``k`` in N/m,
+    ``d`` in N*s/m, ``g`` in m/s^2): the same monomials (:func:`root_monomial_array`) and
+    ``math.hypot`` row by row."""
+    damper = d != 0.0
+    with np.errstate(all="ignore"):
+        omega = hypot_array(root_monomial_array(1.0, [(k, 1), (m, -1)]),
+                            root_monomial_array(0.5, [(g, 1), (a, -1)]))
+        xi = np.where(damper, monomial_array(0.125, [(d, 1), (m, -1)]), 0.0)
+        scaled = hypot_array(root_monomial_array(1.0, [(k, 1), (m, 1), (d, -2)]),
+                             root_monomial_array(0.5, [(g, 1), (m, 2), (a, -1), (d, -2)]))
+        zeta = np.where(damper, np.where(scaled > 0.0, 0.125 / np.where(scaled > 0.0, scaled,
+                                                                        1.0), np.inf), 0.0)
+    values = periodic_arrays(omega)
+    values["xi"] = xi
+    return _damped_columns(values, omega, zeta, {"xi": xi}, d)
+
+
 @check_units(m=MASS, l=LENGTH, beta=LINEAR_DRAG, g=ACCELERATION)
 def rod_in_fluid(m, l, beta, g) -> Outcome:
     """Uniform rod pivoted at its upper end, swinging in a fluid with linear drag.
@@ -175,6 +215,25 @@ def rod_in_fluid(m, l, beta, g) -> Outcome:
     return Outcome(values, warnings=notes)
 
 
+@column_kernel(rod_in_fluid)
+def _rod_in_fluid_columns(m, l, beta, g) -> Columns:
+    """:func:`rod_in_fluid` on columns (``m`` in kg, ``l`` in m, ``beta`` in N*s/m^2, ``g`` in
+    m/s^2), by the same monomials (:func:`monomial_array`, :func:`root_monomial_array`)."""
+    with np.errstate(all="ignore"):
+        omega = root_monomial_array(1.5, [(g, 1), (l, -1)])
+        xi = np.where(beta != 0.0, monomial_array(0.5, [(beta, 1), (l, 1), (m, -1)]), 0.0)
+        zeta = root_monomial_array(1.0 / 6.0, [(beta, 2), (l, 3), (g, -1), (m, -2)])
+        beta_crit = root_monomial_array(6.0, [(g, 1), (m, 2), (l, -3)])
+    values = periodic_arrays(omega)
+    values["xi"] = xi
+    columns = _damped_columns(values, omega, zeta, {"xi": xi}, beta)
+    order = ("omega", "f", "T", "xi", "zeta", "beta_crit", "omega_d", "f_d", "T_d")
+    values["beta_crit"] = beta_crit
+    columns.values = {name: values[name] for name in order}
+    columns.exact = columns.exact & np.isfinite(beta_crit) & (beta_crit != 0.0)
+    return columns
+
+
 def small_damping_error(zeta: float) -> float:
     """Relative error of the small-damping peak ``y0/(2 zeta)`` against the exact one.
 
@@ -191,6 +250,13 @@ def small_damping_error(zeta: float) -> float:
     if zeta < _PEAK_LIMIT:
         return zeta * zeta / (1.0 + math.sqrt((1.0 - zeta) * (1.0 + zeta)))
     return (2.0 * zeta - 1.0) / (2.0 * zeta)
+
+
+def _small_damping_error_array(zeta):
+    """:func:`small_damping_error` elementwise (the same operations)."""
+    with np.errstate(all="ignore"):
+        below = zeta * zeta / (1.0 + np.sqrt((1.0 - zeta) * (1.0 + zeta)))
+        return np.where(zeta < _PEAK_LIMIT, below, (2.0 * zeta - 1.0) / (2.0 * zeta))
 
 
 @check_units(m=MASS, k=STIFFNESS, d=DAMPING, b0=ACCELERATION)
@@ -292,6 +358,30 @@ def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) ->
         values["y_max"] = Q_(y_max, "m")
     return Outcome(values, model="linear", method=method, error_estimate=estimate,
                    warnings=warnings, assumptions=assumptions)
+
+
+@column_kernel(frame_brace_damper)
+def _frame_brace_damper_columns(m, k, d, b0, method: str = "auto", rtol: float = 1e-9):
+    """:func:`frame_brace_damper` on columns (``m`` in kg, ``k`` in N/m, ``d`` in N*s/m, ``b0``
+    in m/s^2) for the ``exact`` peak; ``auto`` rows that the one-off gives the small-damping
+    model (its error at most ``rtol``) are not exact. ``None`` for ``small-damping``: its
+    error estimate differs from row to row, where a Columns carries one for all."""
+    if method not in ("auto", "exact"):
+        return None
+    with np.errstate(all="ignore"):
+        omega = root_monomial_array(0.5, [(k, 1), (m, -1)])
+        zeta = root_monomial_array(0.125, [(d, 2), (k, -1), (m, -1)])
+        y0 = monomial_array(2.0, [(m, 1), (b0, 1), (k, -1)])
+        small = np.where(d != 0.0, root_monomial_array(8.0, [(m, 3), (b0, 2), (k, -1),
+                                                              (d, -2)]), np.inf)
+        y_max = np.where(zeta < _PEAK_LIMIT, small / np.sqrt((1.0 - zeta) * (1.0 + zeta)), y0)
+    columns = _damped_columns(periodic_arrays(omega), omega, zeta, {}, d)
+    columns.values.update(y0=y0, y_max=y_max)
+    columns.exact = columns.exact & finite_nonzero({"y0": y0, "y_max": y_max})
+    if method == "auto":
+        columns.exact = columns.exact & (_small_damping_error_array(zeta) > rtol)
+    columns.method = "exact"
+    return columns
 
 
 # --- the damping-ratio command: zeta from a measurement --------------------------------------

@@ -14,12 +14,16 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
+from ..lazy import numpy as np
 from ..units import Q_
 from ..units import ACCELERATION, ANGLE, LENGTH, MASS, TORSIONAL_STIFFNESS
 from .face import check_units, magnitude
-from .numerics import HALF_TURN, PI_LO, UNIT_ROUNDOFF, monomial, sqrt_ratio
+from .columns import Columns, column_kernel
+from .numerics import (HALF_TURN, PI_LO, UNIT_ROUNDOFF, finite_nonzero, monomial, sqrt_ratio,
+                       sqrt_ratio_array)
+from .numerics_arrays import elementwise, monomial_array
 from .oscillators import _SHORT, _amplitude_parts
-from .outcome import Outcome, periodic
+from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["half_cylinder_shell", "rod_torsion_spring", "SHELL_METHODS", "WOUND_THRESHOLD"]
 
@@ -260,6 +264,21 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
     return out
 
 
+@column_kernel(half_cylinder_shell)
+def _half_cylinder_shell_columns(r, g, amplitude=None, method: str = "auto",
+                                 rtol: float = 1e-9):
+    """:func:`half_cylinder_shell` on columns (``r`` in m, ``g`` in m/s^2), small swings only
+    (``amplitude`` None, method ``auto`` or ``linear``: the closed form); ``None`` otherwise
+    (with an amplitude the one-off's choice and text depend on the unit typed, and the
+    quadrature's sum is a ``math.fsum`` per row)."""
+    if amplitude is not None or method not in ("auto", "linear"):
+        return None
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):
+        values = periodic_arrays(sqrt_ratio_array(g, PI_MINUS_2 * r))
+    return Columns(values, exact=finite_nonzero(values), model="linear",
+                   method="closed-form")
+
+
 # --- rod on a torsion spring -------------------------------------------------------------------
 
 def _rod_equilibrium(kappa: float) -> float:
@@ -288,6 +307,26 @@ def _rod_equilibrium(kappa: float) -> float:
         if not following < phi:
             break
         phi = following
+    return phi
+
+
+def _rod_equilibrium_array(kappa):
+    """:func:`_rod_equilibrium` on an array of ``kappa``: the same monotone Newton iterates,
+    row by row the same floats (``math.sin`` and ``math.cos`` per row, numpy's may differ by an
+    ulp; the step's ``* + /`` are IEEE in both), each row stopping where the scalar loop
+    stops. So the final float is the scalar solver's, bit for bit, whatever it converges to."""
+    phi = np.full(np.shape(kappa), 0.5 * math.pi)
+    live = np.arange(phi.size)
+    with np.errstate(all="ignore"):
+        for _ in range(200):
+            if not live.size:
+                break
+            now = phi[live]
+            sin, cos = elementwise(math.sin, now), elementwise(math.cos, now)
+            following = (now * sin + cos) / (sin + kappa[live])
+            going = following < now
+            live = live[going]
+            phi[live] = following[going]
     return phi
 
 
@@ -356,3 +395,20 @@ def rod_torsion_spring(m, l, kt, g) -> Outcome:
                             "this result is the one between the horizontal and the downward "
                             "vertical")
     return out
+
+
+@column_kernel(rod_torsion_spring)
+def _rod_torsion_spring_columns(m, l, kt, g) -> Columns:
+    """:func:`rod_torsion_spring` on columns (``m`` in kg, ``l`` in m, ``kt`` in N*m/rad,
+    ``g`` in m/s^2): ``kappa`` by :func:`monomial_array`, the equilibrium by the scalar
+    solver's own iterates (:func:`_rod_equilibrium_array`), so every row is bit for bit the
+    one-off's. Rows with ``kappa`` at most :data:`WOUND_THRESHOLD` (a warning), ``kt <= 0``
+    (refused) or a result zero or beyond float64 are not exact."""
+    with np.errstate(all="ignore"):
+        kappa = monomial_array(1.0, [(kt, 1), (m, -1), (g, -1), (l, -1)])
+        phi0 = _rod_equilibrium_array(kappa)
+        omega = sqrt_ratio_array(g, l) * np.sqrt(elementwise(math.sin, phi0) + kappa)
+    values = periodic_arrays(omega)
+    values["phi_0"] = phi0
+    return Columns(values, exact=finite_nonzero(values) & (kt > 0.0) & (kappa > WOUND_THRESHOLD),
+                   model="linear", method="root-find")

@@ -12,6 +12,11 @@ arrays, so every element is *bit for bit* what the scalar kernel gives for it
 * :class:`WideArray` twins :class:`~dyncalc.physics.numerics.Wide`.
 
 numpy is imported lazily (``from ..lazy import numpy as np``).
+
+The twins of the second part (rotating, damping, nonlinear, coupled) call libm's
+function row by row where numpy's own may round differently (:func:`elementwise`), and
+double-double helpers (``dd_*``, :func:`round_certified`) certify a correctly rounded result
+(tests/test_numerics_arrays_b.py).
 """
 from __future__ import annotations
 
@@ -19,27 +24,14 @@ import math
 
 from ..lazy import numpy as np
 
-__all__ = ["pow_array", "monomial_array", "root_monomial_array", "WideArray"]
+__all__ = ["pow_array", "monomial_array", "root_monomial_array", "WideArray", "elementwise",
+           "hypot_array", "two_sum_array", "two_product_array", "round_certified"]
 
 #: How close (in ulp of the result) to a rounding midpoint a product or quotient may come
 #: before :func:`pow_array` asks the C library's ``pow`` itself: glibc's ``pow`` is within
 #: 0.52 ulp, not 0.5, and rounds differently from ``x * x`` or ``1 / x`` only there (the
 #: largest gap measured on 3 million mantissas is 0.0065 ulp; this band is eight times that).
 POW_BAND = 0.05
-
-
-def _split(a):
-    c = 134217729.0 * a  # 2**27 + 1 (Veltkamp), as numerics._split
-    hi = c - (c - a)
-    return hi, a - hi
-
-
-def _two_product(a, b):
-    """``(p, e)``, ``p = fl(a b)``, ``a b = p + e`` exactly (Dekker), elementwise."""
-    p = a * b
-    ah, al = _split(a)
-    bh, bl = _split(b)
-    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
 def pow_array(x, power: int):
@@ -65,11 +57,11 @@ def pow_array(x, power: int):
     with np.errstate(all="ignore"):
         if power == 2:
             out = x * x
-            _, err = _two_product(x, x)
+            _, err = two_product_array(x, x)
             distance = np.abs(err / np.spacing(out))        # the exact value: out + err
         elif power == -1:
             out = 1.0 / x
-            high, low = _two_product(out, x)
+            high, low = two_product_array(out, x)
             distance = np.abs(((1.0 - high) - low) / x / np.spacing(out))   # 1/x - out
         else:
             return np.array([value ** power for value in x.tolist()], dtype=float)
@@ -78,6 +70,34 @@ def pow_array(x, power: int):
     if index.size:
         out[index] = [value ** power for value in x[index].tolist()]
     return out
+
+
+# --- libm row by row (rotating, damping, nonlinear, coupled) ---
+
+def elementwise(function, *arrays):
+    """``function`` (a ``math`` function taking floats) applied row by row to float64 arrays:
+    the one-off functions' libm calls bit for bit, where numpy's own ``sin``, ``atan2``,
+    ``hypot`` or ``power`` may round differently (measured: ``np.arctan2`` differs from
+    ``math.atan2`` on 5 % of random inputs here, ``np.hypot`` from ``math.hypot`` on 1 %).
+
+    >>> elementwise(math.atan2, np.array([1.0]), np.array([1.0])).tolist() == [math.pi / 4]
+    True
+    """
+    lists = [np.asarray(a, dtype=float).ravel().tolist() for a in arrays]
+    return np.fromiter(map(function, *lists), dtype=float, count=len(lists[0]))
+
+
+def _safe_hypot(a: float, b: float) -> float:
+    try:
+        return math.hypot(a, b)
+    except OverflowError:
+        return math.inf
+
+
+def hypot_array(a, b):
+    """``math.hypot`` row by row, ``inf`` where it overflows (the twin of
+    ``damping._hypot``; Python's hypot is not libm's, so ``np.hypot`` differs)."""
+    return elementwise(_safe_hypot, a, b)
 
 
 def _scaled_product_array(coefficient: float, factors):
@@ -198,3 +218,89 @@ class WideArray:
     def to_float(self):
         """``float(Wide)`` elementwise: ``m * 2**e``, ``inf`` beyond float64."""
         return _ldexp(self.m, self.e)
+
+
+# double-double arithmetic on arrays (values hi + lo, |lo| <= ulp(hi)/2) -----------------------
+
+def two_sum_array(a, b):
+    """The twin of ``numerics._two_sum``: ``(s, e)`` with ``s = fl(a + b)``, ``a + b = s + e``
+    exactly (Knuth)."""
+    s = a + b
+    back = s - a
+    return s, (a - (s - back)) + (b - back)
+
+
+def _split_array(a):
+    c = 134217729.0 * a   # 2**27 + 1 (Veltkamp)
+    hi = c - (c - a)
+    return hi, a - hi
+
+
+def two_product_array(a, b):
+    """The twin of :func:`~dyncalc.physics.numerics.two_product` (Dekker): ``(p, e)`` with
+    ``p = fl(a b)`` and ``a b = p + e`` exactly for magnitudes within about 1e-290..1e290."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        p = a * b
+        ah, al = _split_array(a)
+        bh, bl = _split_array(b)
+        return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _renormalise(hi, lo):
+    s = hi + lo
+    return s, lo - (s - hi)
+
+
+def dd_mul(ah, al, bh, bl):
+    """``(ah + al)(bh + bl)`` as a double-double, relative error below ``2^-104``."""
+    p, e = two_product_array(ah, bh)
+    return _renormalise(p, e + (ah * bl + al * bh))
+
+
+def dd_div(ah, al, bh, bl):
+    """``(ah + al) / (bh + bl)`` as a double-double, relative error below ``2^-103``."""
+    q = ah / bh
+    ph, pl = dd_mul(bh, bl, q, 0.0)
+    sh, sl = two_sum_array(ah, -ph)
+    return _renormalise(q, ((sh + (sl - pl + al)) / bh))
+
+
+def dd_one_minus(ah, al):
+    """``1 - (ah + al)`` as a double-double (exact but for the final renormalisation)."""
+    s, e = two_sum_array(1.0, -ah)
+    return _renormalise(s, e - al)
+
+
+def round_certified(hi, lo, bound):
+    """``(fl(hi + lo), certain)``: the float nearest ``hi + lo``, and where it is *certainly*
+    the float nearest the exact value ``x`` the double-double approximates, given
+    ``|hi + lo - x| <= bound |hi + lo|``: the interval around ``hi + lo`` holds no rounding
+    boundary (a midpoint between floats). Where ``certain`` is False the caller leaves the row
+    to the one-off code (a chance of about ``bound / 2^-53`` per row). Zero (exact) is certain;
+    subnormal results are not (their spacing is not relative).
+    """
+    z = hi + lo
+    residual = (hi - z) + lo                      # hi + lo - z, to a rounding of itself
+    with np.errstate(invalid="ignore", over="ignore"):
+        spacing = np.abs(z) - np.nextafter(np.abs(z), 0.0)   # the smaller of the two spacings
+        room = 0.5 * spacing - np.abs(residual) - bound * np.abs(z) * 1.0000001
+        certain = (np.isfinite(z) & (np.abs(z) >= 2.0 ** -1022) & (room > 0.0)) | (
+            (hi == 0.0) & (lo == 0.0))
+    return z, certain
+
+
+def dd_add(ah, al, bh, bl):
+    """``(ah + al) + (bh + bl)`` as a double-double: relative error below ``2^-104`` for
+    operands of one sign; for opposite signs below ``2^-104`` of the larger operand."""
+    s, e = two_sum_array(ah, bh)
+    return _renormalise(s, e + (al + bl))
+
+
+def dd_sqrt(ah, al):
+    """``sqrt(ah + al)`` as a double-double (one Newton correction of the float root, its
+    square formed exactly): relative error below ``2^-103``; 0 gives 0."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.sqrt(ah)
+        p, e = two_product_array(s, s)
+        correction = np.where(s > 0.0, (((ah - p) - e) + al) / (2.0 * s), 0.0)
+    return _renormalise(s, correction)

@@ -18,12 +18,15 @@ import math
 from fractions import Fraction
 
 from ..errors import PhysicsError
+from ..lazy import numpy as np
 from ..units import Q_
 from ..units import ACCELERATION, ANGULAR_RATE, LENGTH, MASS, STIFFNESS, VELOCITY
 from .face import check_units, magnitude
-from .numerics import PI_LO, sqrt_ratio
-
-from .outcome import Outcome, periodic
+from .columns import Columns, column_kernel
+from .numerics import PI_LO, finite_nonzero, sqrt_ratio, sqrt_ratio_array
+from .numerics_arrays import (dd_div, dd_mul, dd_one_minus, elementwise, hypot_array,
+                              round_certified, two_product_array)
+from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["pendulum_accelerating_support", "pendulum_on_rotating_disk",
            "bead_on_rotating_ring", "quarter_car", "BIFURCATION_ULPS", "NEAR_BIFURCATION",
@@ -97,6 +100,18 @@ def pendulum_accelerating_support(l, a0, g) -> Outcome:
                                 "constant support acceleration"])
 
 
+@column_kernel(pendulum_accelerating_support)
+def _pendulum_accelerating_support_columns(l, a0, g) -> Columns:
+    """:func:`pendulum_accelerating_support` on columns (``l`` in m, ``a0`` and ``g`` in
+    m/s^2). ``atan2`` and ``hypot`` are taken row by row from ``math`` (numpy's round
+    differently), the rest as the one-off does. Rows with a result zero or beyond float64 are
+    not exact (``phi_0 = 0`` only counts where ``a0 = 0``: elsewhere it is an underflow)."""
+    values = periodic_arrays(sqrt_ratio_array(hypot_array(g, a0), l))
+    exact = finite_nonzero(values)
+    values["phi_0"] = 0.0 - elementwise(math.atan2, a0, g)
+    return Columns(values, exact=exact & ((values["phi_0"] != 0.0) | (a0 == 0.0)))
+
+
 @check_units(r=LENGTH, l=LENGTH, Omega=ANGULAR_RATE)
 def pendulum_on_rotating_disk(r, l, Omega) -> Outcome:
     """A pendulum pivoted on a disk spinning at ``Omega`` about a vertical axis, swinging in
@@ -134,6 +149,15 @@ def pendulum_on_rotating_disk(r, l, Omega) -> Outcome:
     return Outcome(periodic(sqrt_ratio(r_, l_) * spin), model="linear", method="closed-form",
                    assumptions=["small oscillations in the horizontal plane, weight "
                                 "neglected, constant spin"])
+
+
+@column_kernel(pendulum_on_rotating_disk)
+def _pendulum_on_rotating_disk_columns(r, l, Omega) -> Columns:
+    """:func:`pendulum_on_rotating_disk` on columns (``r``, ``l`` in m, ``Omega`` in rad/s);
+    a zero spin (refused) or a result zero or beyond float64 is not exact."""
+    with np.errstate(over="ignore"):
+        values = periodic_arrays(sqrt_ratio_array(r, l) * np.abs(Omega))
+    return Columns(values, exact=finite_nonzero(values))
 
 
 @check_units(r=LENGTH, Omega=ANGULAR_RATE, g=ACCELERATION)
@@ -226,6 +250,57 @@ def bead_on_rotating_ring(r, Omega, g) -> Outcome:
                    exact_zeros=set() if excess > 0 else {"theta_eq"})
 
 
+#: ``rho = r Omega^2 / g`` at or beyond which (at or below :data:`_BEAD_BELOW`) the bead is
+#: certainly farther than :data:`NEAR_BIFURCATION` from its bifurcation (a margin of 2^-40 over
+#: ``1/(1 -+ 0.02)`` covers the rounding of the bound and of ``rho``).
+_BEAD_ABOVE = 1.0 / (1.0 - NEAR_BIFURCATION) * (1.0 + 2.0 ** -40)
+_BEAD_BELOW = 1.0 / (1.0 + NEAR_BIFURCATION) * (1.0 - 2.0 ** -40)
+#: Relative error bound of the double-double values the columns round: a few 2^-104 per step,
+#: amplified at most 50 times by ``1 - x`` (``x <= 0.98`` away from the bifurcation).
+_DD_BOUND = 2.0 ** -90
+
+
+@column_kernel(bead_on_rotating_ring)
+def _bead_on_rotating_ring_columns(r, Omega, g) -> Columns:
+    """:func:`bead_on_rotating_ring` on columns (``r`` in m, ``Omega`` in rad/s, ``g`` in
+    m/s^2), both regimes.
+
+    The one-off rounds exact rationals once: ``1 - rho`` below the bifurcation, ``1 - 1/rho``
+    and ``1 - 1/rho^2`` above (``rho = r Omega^2 / g``, via fractions). Here ``rho`` is formed
+    from the binary mantissas in double-double arithmetic (relative error below 2^-100), each
+    rational to within :data:`_DD_BOUND`, and rounded with :func:`round_certified`: a row is
+    exact only where that rounding is certainly the correctly rounded one (all but about one
+    row in 2^37). ``asin`` is math's, row by row. Rows within :data:`NEAR_BIFURCATION` (plus a
+    margin) of the bifurcation (the one-off warns) and rows with a result zero or beyond
+    float64 are not exact.
+    """
+    spin = np.abs(Omega)
+    mr, er = np.frexp(r)
+    ms, es = np.frexp(spin)
+    mg, eg = np.frexp(g)
+    with np.errstate(all="ignore"):
+        sh, sl = two_product_array(ms, ms)
+        rho_h, rho_l = dd_div(*dd_mul(sh, sl, mr, 0.0), mg, 0.0)       # rho 2^-E
+        shift = er.astype(np.int64) + 2 * es - eg
+        # beyond 2^+-200 rho's part in 1 - rho (1 - 1/rho) is far below an ulp of 1
+        shift = np.clip(np.where(spin == 0.0, 0, shift), -200, 200).astype(np.int32)
+        rho_h, rho_l = np.ldexp(rho_h, shift), np.ldexp(rho_l, shift)
+        above, below = rho_h >= _BEAD_ABOVE, rho_h <= _BEAD_BELOW
+        th, tl = dd_div(1.0, 0.0, np.where(above, rho_h, 2.0), np.where(above, rho_l, 0.0))
+        gap, sure_gap = round_certified(*dd_one_minus(th, tl), _DD_BOUND)        # 1 - 1/rho
+        stiff, sure_stiff = round_certified(*dd_one_minus(*dd_mul(th, tl, th, tl)),
+                                            _DD_BOUND)                            # 1 - 1/rho^2
+        rest, sure_rest = round_certified(*dd_one_minus(np.where(below, rho_h, 0.0),
+                                                        np.where(below, rho_l, 0.0)),
+                                          _DD_BOUND)                              # 1 - rho
+        omega = np.where(above, spin * np.sqrt(stiff), sqrt_ratio_array(g, r) * np.sqrt(rest))
+        theta = np.where(above, 2.0 * elementwise(math.asin, np.sqrt(0.5 * gap)), 0.0)
+    values = periodic_arrays(omega)
+    exact = finite_nonzero(values) & np.where(above, sure_gap & sure_stiff, below & sure_rest)
+    values["theta_eq"] = theta
+    return Columns(values, exact=exact)
+
+
 @check_units(k=STIFFNESS, m=MASS, L=LENGTH, U0=LENGTH, v0=VELOCITY)
 def quarter_car(k, m, L, U0, v0) -> Outcome:
     """A quarter-car: body mass ``m`` on a suspension spring ``k`` whose lower end follows a
@@ -316,3 +391,56 @@ def quarter_car(k, m, L, U0, v0) -> Outcome:
                             f"amplitude is {gain:.3g} times the road amplitude; a real "
                             "suspension is limited by the damping this model leaves out")
     return out
+
+
+#: ``_PI2`` as a double-double (relative error about 1e-33).
+_PI2_HI = float(_PI2)
+_PI2_LO = float(_PI2 - Fraction(_PI2_HI))
+#: ``|gap|`` at or above which the amplification ``1/|gap|`` is certainly at most
+#: :data:`LARGE_AMPLIFICATION` (no warning).
+_GAP_FLOOR = (1.0 / LARGE_AMPLIFICATION) * (1.0 + 2.0 ** -30)
+#: Relative error bound of the double-double ``x_amp``: ``rho`` within a few 2^-104,
+#: amplified at most 2^20 times by ``1 - rho`` (``|gap| >= 1e-6``), and the quotient.
+_CAR_BOUND = 2.0 ** -78
+
+
+@column_kernel(quarter_car)
+def _quarter_car_columns(k, m, L, U0, v0) -> Columns:
+    """:func:`quarter_car` on columns (``k`` in N/m, ``m`` in kg, ``L`` and ``U0`` in m,
+    ``v0`` in m/s).
+
+    ``x_amp`` is the one-off's exact rational ``U0 / |1 - rho|``, ``rho = 4 pi^2 m v0^2 /
+    (k L^2)``, rounded once; here ``rho`` is formed from the binary mantissas in double-double
+    arithmetic (pi^2 to 1e-33) and the quotient rounded with :func:`round_certified`: a row is
+    exact only where that rounding is certainly the correct one (all but about one row in
+    2^25). Rows near resonance (amplification above :data:`LARGE_AMPLIFICATION`: the one-off
+    warns or refuses), with ``x_amp`` subnormal or a result zero or beyond float64 are not
+    exact (``Omega = 0`` counts where ``v0 = 0``).
+    """
+    omega = sqrt_ratio_array(k, m)
+    with np.errstate(all="ignore"):
+        v_crit = L * omega / (2.0 * math.pi)
+        forcing = 2.0 * math.pi * v0 / L
+        mm, em = np.frexp(m)
+        mv, ev = np.frexp(v0)
+        mk, ek = np.frexp(k)
+        ml, el = np.frexp(L)
+        mu, eu = np.frexp(U0)
+        num = dd_mul(*dd_mul(_PI2_HI, _PI2_LO, mm, 0.0), *two_product_array(mv, mv))
+        den = dd_mul(*two_product_array(ml, ml), mk, 0.0)
+        rho_h, rho_l = dd_div(*num, *den)                     # rho 2^-(shift)
+        shift = 2 + em.astype(np.int64) + 2 * ev - ek - 2 * el
+        shift = np.where(rho_h == 0.0, 0, shift)
+        big = shift > 200       # |gap| = rho (1 - 1/rho): 1/rho is far below an ulp
+        near = np.clip(shift, -200, 200).astype(np.int32)   # below 2^-200: gap = 1 - 0
+        gap_h, gap_l = dd_one_minus(np.ldexp(rho_h, near), np.ldexp(rho_l, near))
+        sign = np.where(gap_h < 0.0, -1.0, 1.0)
+        gap_h, gap_l = np.where(big, rho_h, sign * gap_h), np.where(big, rho_l, sign * gap_l)
+        amp, sure = round_certified(*dd_div(mu, 0.0, gap_h, gap_l), _CAR_BOUND)
+        amp = np.ldexp(amp, np.clip(eu - np.where(big, shift, 0), -3000, 3000).astype(np.int32))
+    values = periodic_arrays(omega)
+    exact = (finite_nonzero(values) & np.isfinite(v_crit) & (v_crit != 0.0) & sure
+             & (big | (gap_h >= _GAP_FLOOR)) & np.isfinite(amp) & (amp >= 2.0 ** -1022)
+             & np.isfinite(forcing) & ((forcing != 0.0) | (v0 == 0.0)))
+    values.update(Omega=forcing, x_amp=amp, v_crit=v_crit)
+    return Columns(values, exact=exact)
