@@ -1,0 +1,208 @@
+"""The commands' column adapters (``columns(given, settings)``) against the one-off commands.
+
+Every row is also computed the one-off way, through the command's own ``compute`` with the
+texts a batch row hands it, and its ``--json`` results are compared with the adapter's values
+JSON-encoded the same way (so a -0.0, an ulp or a name out of order fails). Rows where the
+one-off refuses or warns must not be exact; ordinary rows must mostly be exact.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from dyncalc.errors import InputError, PhysicsError
+from dyncalc.result.encode import _json_value, json_data
+from dyncalc.units import parse_quantity, parse_vector
+
+RNG_SEED = 20240611
+
+
+def _one_off(compute):
+    """(JSON text of the results' values, warnings, model, method), or None if it raises."""
+    try:
+        result = compute()
+    except (InputError, PhysicsError):
+        return None
+    data = json_data(result, {}, [], False)
+    values = [(name, item["value"]) for name, item in data["results"].items()]
+    return json.dumps(values), data["warnings"], data["model"], data["method"]
+
+
+def _columns_row(cols, i: int) -> str:
+    return json.dumps([(name, _json_value(value[i])) for name, value in cols.values.items()])
+
+
+def _compare(cols, rows, ordinary=None, share=0.9):
+    """Check the adapter's Columns against the one-off per row (``rows``: a list of
+    functions computing the one-off); returns the exact mask."""
+    exact = np.asarray(cols.exact, dtype=bool)
+    assert exact.shape == (len(rows),)
+    for i, compute in enumerate(rows):
+        got = _one_off(compute)
+        if got is None or got[1]:
+            assert not exact[i], (i, got)
+            continue
+        if exact[i]:
+            text, _warnings, model, method = got
+            assert _columns_row(cols, i) == text, i
+            assert (cols.model, cols.method) == (model, method)
+    if ordinary is not None:
+        assert exact[ordinary].mean() >= share, exact[ordinary].mean()
+    return exact
+
+
+def _si(texts, dim):
+    return np.array([parse_quantity(t, dim).si for t in texts])
+
+
+def _log_uniform(rng, low, high, n):
+    return 10.0 ** rng.uniform(low, high, n)
+
+
+# --- springs -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("how", ["series", "parallel"])
+def test_springs_columns_match_the_one_off(how):
+    from dyncalc.commands.springs import columns, network_stiffness
+    from dyncalc.units import STIFFNESS
+
+    rng = np.random.default_rng(RNG_SEED)
+    n, elements = 240, 3
+    k = _log_uniform(rng, -3, 6, (n, elements))
+    k[:20] = _log_uniform(rng, -300, 300, (20, elements))      # extremes
+    k[20:24] = [[1e-320, 1.0, 2.0], [1e308, 1e308, 1.0], [5e-324, 5e-324, 5e-324],
+                [1.7e308, 1.7e308, 1.7e308]]                    # underflow, overflow
+    k[24] = [200.0, 300.0, 600.0]                                # 1/(1/200+1/300+1/600) = 100
+    texts = [[f"{float(x)!r} N/m" for x in row] for row in k]
+    given = {f"k{j + 1}": _si([t[j] for t in texts], STIFFNESS) for j in range(elements)}
+    cols = columns(given, {"how": how})
+    rows = [lambda t=t: network_stiffness(how, t) for t in texts]
+    exact = _compare(cols, rows, ordinary=np.arange(25, n))
+    assert not exact[22 if how == "series" else 23]      # k_eq underflows / overflows
+    assert exact[20] and cols.values["k_eq"][20] == (1e-320 if how == "series" else 3.0)
+    expected = 100.0 if how == "series" else 1100.0
+    assert exact[24] and cols.values["k_eq"][24] == expected
+
+
+def test_springs_columns_torsional_and_refusals():
+    from dyncalc.commands.springs import columns, network_stiffness
+    from dyncalc.units import TORSIONAL_STIFFNESS
+
+    texts = [["0.1 N*m/rad", "0.2 N*m/rad"], ["3 N*m/rad", "6 N*m/rad"]]
+    given = {f"k{j + 1}": _si([t[j] for t in texts], TORSIONAL_STIFFNESS) for j in range(2)}
+    for how in ("series", "parallel"):
+        cols = columns(given, {"how": how, "units": {"k1": "N*m/rad"}})
+        exact = _compare(cols, [lambda t=t: network_stiffness(how, t) for t in texts])
+        assert exact.all()
+    assert cols.values["k_eq"].tolist() == [math.fsum([0.1, 0.2]), 9.0]
+    # the one-off adds in the first element's unit: not the SI sum
+    assert columns(given, {"how": "series", "units": {"k1": "lbf/in"}}) is None
+    assert columns({"k1": given["k1"], "EI": given["k2"]}, {"how": "series"}) is None
+    assert columns(given, {"how": "sideways"}) is None
+
+
+# --- damping-ratio -------------------------------------------------------------------------
+
+def _damping_rows(texts: dict, n: int):
+    from dyncalc.commands.damping_ratio import COMMAND
+
+    names = [p.name for p in COMMAND.inputs]
+    rows = []
+    for i in range(n):
+        values = {name: (texts[name][i] if name in texts else None) for name in names}
+        values.update(scene=None, method=None)
+        rows.append(lambda v=values: COMMAND.compute(v, (), rtol=None, strict=False))
+    return rows
+
+
+def test_damping_columns_from_coefficients():
+    from dyncalc.commands.damping_ratio import columns
+    from dyncalc.units import DAMPING, MASS, STIFFNESS
+
+    rng = np.random.default_rng(RNG_SEED + 1)
+    n = 300
+    k, m = _log_uniform(rng, -4, 6, n), _log_uniform(rng, -4, 4, n)
+    c = 2.0 * np.sqrt(k * m) * rng.uniform(0.001, 0.999, n)       # underdamped
+    c[:30] = 2.0 * np.sqrt(k[:30] * m[:30]) * rng.uniform(1.001, 5.0, 30)   # overdamped
+    c[30:35] = 0.0                                                  # undamped: a note
+    c[35] = 2.0 * math.sqrt(k[35] * m[35])                          # critical: a note
+    k[36:46], m[36:46] = _log_uniform(rng, -300, 300, 10), _log_uniform(rng, -300, 300, 10)
+    c[36:46] = _log_uniform(rng, -300, 300, 10)
+    c[46], k[46], m[46] = 4.0, 100.0, 1.0                           # zeta = 0.2 exactly
+    texts = {"c": [f"{float(x) / 1000!r} kN*s/m" for x in c], "k": [f"{float(x)!r} N/m" for x in k],
+             "m": [f"{float(x) * 1000!r} g" for x in m]}
+    given = {"c": _si(texts["c"], DAMPING), "k": _si(texts["k"], STIFFNESS),
+             "m": _si(texts["m"], MASS)}
+    cols = columns(given, {"scene": None, "method": None})
+    assert list(cols.values) == ["zeta", "delta", "regime", "Q", "c_c", "c", "omega", "xi",
+                                 "omega_d", "f_d", "T_d"]
+    exact = _compare(cols, _damping_rows(texts, n), ordinary=np.arange(47, n))
+    assert not exact[:36].any()
+    assert exact[46] and cols.values["zeta"][46] == 0.2
+    assert cols.values["regime"][46] == "underdamped"
+
+
+@pytest.mark.parametrize("extra", ["omega", "km", ""])
+def test_damping_columns_from_a_decrement(extra):
+    from dyncalc.commands.damping_ratio import columns
+    from dyncalc.units import ANGULAR_RATE, DIMENSIONLESS, MASS, STIFFNESS
+
+    rng = np.random.default_rng(RNG_SEED + 2)
+    n = 200
+    delta = _log_uniform(rng, -6, 2, n)
+    delta[:3] = [0.0, 1e-320, 1e300]                # undamped (a note), Q overflows, huge
+    delta[3] = math.log(10) / 10                    # E5.18
+    texts = {"decrement": [repr(float(x)) for x in delta]}
+    given = {"decrement": _si(texts["decrement"], DIMENSIONLESS)}
+    if extra == "omega":
+        texts["omega"] = [f"{float(x)!r} rad/s" for x in _log_uniform(rng, -3, 5, n)]
+        given["omega"] = _si(texts["omega"], ANGULAR_RATE)
+    elif extra == "km":
+        texts["k"] = [f"{float(x)!r} N/m" for x in _log_uniform(rng, -3, 6, n)]
+        texts["m"] = [f"{float(x)!r} kg" for x in _log_uniform(rng, -3, 3, n)]
+        given.update(k=_si(texts["k"], STIFFNESS), m=_si(texts["m"], MASS))
+    cols = columns(given, {"scene": None, "method": "closed-form"})
+    exact = _compare(cols, _damping_rows(texts, n), ordinary=np.arange(4, n))
+    assert not exact[:2].any() and exact[3]
+    assert round(cols.values["zeta"][3], 9) == 0.036622197   # Gross et al., E5.18
+
+
+def test_damping_columns_from_a_ratio():
+    from dyncalc.commands.damping_ratio import columns
+    from dyncalc.units import DIMENSIONLESS
+
+    rng = np.random.default_rng(RNG_SEED + 3)
+    n = 200
+    ratio = 1.0 + _log_uniform(rng, -8, 3, n)
+    ratio[:3] = [1.0, 0.5, 10.0]                     # no decay (a note), refused, E5.18
+    cycles = rng.integers(1, 50, n).astype(str).astype(object)
+    cycles[2] = "10"
+    cycles[3:6] = ["1e1", "0", " 7 "]                # read by the one-off / refused / plain
+    texts = {"ratio": [repr(float(x)) for x in ratio], "cycles": list(cycles)}
+    given = {"ratio": _si(texts["ratio"], DIMENSIONLESS), "cycles": np.array(cycles, dtype=str)}
+    cols = columns(given, {"scene": None, "method": None})
+    exact = _compare(cols, _damping_rows(texts, n), ordinary=np.arange(6, n))
+    assert not exact[:2].any() and not exact[3:5].any() and exact[2] and exact[5]
+    assert round(cols.values["zeta"][2], 9) == 0.036622197   # Gross et al., E5.18
+    # a numeric cycles column works the same
+    numeric = columns({"ratio": given["ratio"], "cycles": np.where(
+        exact, np.array([float(str(c)) if str(c).strip().isdigit() else 1.0 for c in cycles]),
+        1.0)}, {})
+    assert np.array_equal(numeric.values["zeta"][exact], cols.values["zeta"][exact])
+
+
+def test_damping_columns_refuse_what_they_do_not_vectorise():
+    from dyncalc.commands.damping_ratio import columns
+
+    one = np.ones(2)
+    assert columns({"c": one, "k": one, "m": one}, {"scene": "rod-in-fluid"}) is None
+    assert columns({"decrement": one}, {"method": "nonlinear"}) is None
+    assert columns({"amplitudes": np.array(["1,0.5", "2,1"])}, {}) is None
+    assert columns({"decrement": one, "ratio": one}, {}) is None       # two forms
+    assert columns({"decrement": one, "k": one}, {}) is None           # k without m
+    assert columns({"decrement": one, "omega": one, "k": one, "m": one}, {}) is None
+    assert columns({"c": one, "k": one}, {}) is None
+    assert columns({"cycles": one}, {}) is None
