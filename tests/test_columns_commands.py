@@ -206,3 +206,88 @@ def test_damping_columns_refuse_what_they_do_not_vectorise():
     assert columns({"decrement": one, "omega": one, "k": one, "m": one}, {}) is None
     assert columns({"c": one, "k": one}, {}) is None
     assert columns({"cycles": one}, {}) is None
+
+
+# --- coriolis ------------------------------------------------------------------------------
+
+_VECTOR_UNITS = {"omega": "rad/s", "vr": "m/s", "r": "m", "alpha": "rad/s^2", "a0": "m/s^2",
+                 "ar": "m/s^2"}
+
+
+def _coriolis_rows(texts: dict, n: int):
+    from dyncalc.commands.coriolis import COMMAND
+
+    names = [p.name for p in COMMAND.inputs]
+    rows = []
+    for i in range(n):
+        values = {name: (texts[name][i] if name in texts else None) for name in names}
+        rows.append(lambda v=values: COMMAND.compute(v, (), rtol=None, strict=False))
+    return rows
+
+
+def _coriolis_given(texts: dict):
+    from dyncalc.commands.coriolis import OPTIONS
+
+    return {name: np.array([parse_vector(t, OPTIONS[name][0], allow_scalar=True).si
+                            for t in column]) for name, column in texts.items()}
+
+
+@pytest.mark.parametrize("which", [("omega", "vr"), ("omega", "vr", "mass"),
+                                   ("omega", "vr", "r", "alpha", "a0", "ar", "mass"),
+                                   ("omega", "vr", "a0")])
+def test_coriolis_columns_vectors(which):
+    from dyncalc.commands.coriolis import columns
+
+    rng = np.random.default_rng(RNG_SEED + 4)
+    n = 150
+    texts = {}
+    for name in which:
+        if name == "mass":
+            texts[name] = [f"{float(x)!r} kg" for x in _log_uniform(rng, -3, 3, n)]
+            continue
+        v = _log_uniform(rng, -3, 3, (n, 3)) * rng.choice([-1.0, 1.0], (n, 3))
+        v *= rng.random((n, 3)) > 0.15                   # some zero components
+        v[:8] = _log_uniform(rng, -300, 300, (8, 3))     # extremes: overflows, underflows
+        if name == "omega":
+            v[8] = [0.0, 0.0, 2.0]
+        if name == "vr":
+            v[8] = [3.0, 0.0, 0.0]                       # a_c = 2 Omega x v_r = (0, 12, 0)
+        texts[name] = [",".join(repr(float(x)) for x in row) + " " + _VECTOR_UNITS[name]
+                       for row in v]
+    cols = columns(_coriolis_given(texts), {})
+    exact = _compare(cols, _coriolis_rows(texts, n), ordinary=np.arange(9, n))
+    assert exact[8] and cols.values["a_c"][8].tolist() == [0.0, 12.0, 0.0]
+    assert cols.values["a_c_mag"][8] == 12.0
+    assert not exact[:8].all()
+
+
+@pytest.mark.parametrize("which", [("omega", "vr"), ("omega", "vr", "r", "mass"),
+                                   ("omega", "vr", "alpha"), ("omega", "vr", "r", "alpha")])
+def test_coriolis_columns_magnitudes(which):
+    from dyncalc.commands.coriolis import columns
+
+    rng = np.random.default_rng(RNG_SEED + 5)
+    n = 150
+    units = {**_VECTOR_UNITS, "mass": "kg"}
+    values = {name: _log_uniform(rng, -3, 3, n) for name in which}
+    for name in which:
+        values[name][:6] = _log_uniform(rng, -300, 300, 6)
+        values[name][6] = 0.0 if name == "r" else 1.5
+    if "vr" in values:
+        values["vr"][7] = -1.0                           # a magnitude must not be negative
+        values["omega"][8], values["vr"][8] = 2.0, 3.0   # a_c = 2 Omega v_r = 12
+    texts = {name: [f"{float(x)!r} {units[name]}" for x in column]
+             for name, column in values.items()}
+    cols = columns(_coriolis_given(texts), {})
+    exact = _compare(cols, _coriolis_rows(texts, n), ordinary=np.arange(9, n))
+    assert not exact[7] and exact[8] and cols.values["a_c"][8] == 12.0
+
+
+def test_coriolis_columns_refuse_what_they_do_not_vectorise():
+    from dyncalc.commands.coriolis import columns
+
+    one, vec = np.ones(2), np.ones((2, 3))
+    assert columns({"latitude": one, "vr": vec}, {}) is None          # the Earth form
+    assert columns({"omega": vec}, {}) is None                         # no v_r
+    assert columns({"omega": vec, "vr": one}, {}) is None              # mixed forms
+    assert columns({"omega": one, "vr": one, "a0": one}, {}) is None   # a0 needs a direction
