@@ -291,3 +291,66 @@ def test_coriolis_columns_refuse_what_they_do_not_vectorise():
     assert columns({"omega": vec}, {}) is None                         # no v_r
     assert columns({"omega": vec, "vr": one}, {}) is None              # mixed forms
     assert columns({"omega": one, "vr": one, "a0": one}, {}) is None   # a0 needs a direction
+
+
+# --- rolling-onset ---------------------------------------------------------------------------
+
+def _rolling_rows(texts: dict, n: int):
+    from dyncalc.commands.rolling_onset import COMMAND
+
+    names = [p.name for p in COMMAND.inputs]
+    rows = []
+    for i in range(n):
+        values = {name: (texts[name][i] if name in texts else None) for name in names}
+        values["method"] = None
+        rows.append(lambda v=values: COMMAND.compute(v, (), rtol=None, strict=False))
+    return rows
+
+
+@pytest.mark.parametrize("which", [("v0", "mu"), ("v0", "mu", "body", "radius", "omega0"),
+                                   ("v0", "mu", "kappa", "g", "incline"),
+                                   ("v0", "mu", "radius", "omega0", "incline")])
+def test_rolling_columns_match_the_one_off(which):
+    from dyncalc.commands.rolling_onset import columns
+    from dyncalc.units import ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, VELOCITY
+
+    rng = np.random.default_rng(RNG_SEED + 6)
+    n = 80
+    columns_of = {
+        "v0": (VELOCITY, "m/s", _log_uniform(rng, -2, 2, n)),
+        "mu": (DIMENSIONLESS, "", rng.uniform(0.05, 1.0, n)),
+        "kappa": (DIMENSIONLESS, "", rng.uniform(0.0, 1.0, n)),
+        "g": (ACCELERATION, "m/s^2", rng.uniform(1.0, 30.0, n)),
+        "radius": (LENGTH, "mm", _log_uniform(rng, 0, 3, n)),
+        "omega0": (ANGULAR_RATE, "rad/s", rng.uniform(-50, 50, n)),
+        "incline": (ANGLE, "rad", rng.uniform(-0.3, 0.3, n)),
+    }
+    texts, given = {}, {}
+    for name in which:
+        if name == "body":
+            words = rng.choice(["solid-sphere", "hoop", "hollow-sphere", "solid-cylinder"], n)
+            texts[name], given[name] = list(words), words
+            continue
+        dim, unit, values = columns_of[name]
+        values[0] = {"v0": 5.0, "mu": 0.3, "radius": 110.0, "omega0": 0.0, "g": 9.80665,
+                     "kappa": 0.4, "incline": 0.0}[name]           # Example 3.45
+        texts[name] = [f"{float(x)!r} {unit}".strip() for x in values]
+        given[name] = _si(texts[name], dim)
+    cols = columns(given, {"method": None, "units": {"incline": "rad"}})
+    exact = _compare(cols, _rolling_rows(texts, n), ordinary=np.arange(1, n), share=0.5)
+    if "body" not in which or texts["body"][0] == "solid-sphere":
+        assert exact[0] and cols.values["v_roll"][0] == 25 / 7    # 5/7 v0, Gross et al. E3.45
+        assert round(cols.values["t_roll"][0], 5) == 0.48558
+
+
+def test_rolling_columns_refuse_what_they_do_not_vectorise():
+    from dyncalc.commands.rolling_onset import columns
+
+    one = np.ones(2)
+    assert columns({"v0": one, "mu": one}, {"method": "ode"}) is None
+    assert columns({"v0": one}, {}) is None
+    assert columns({"v0": one, "mu": one, "body": np.array(["hoop", "hoop"]), "kappa": one},
+                   {}) is None
+    assert columns({"v0": one, "mu": one, "incline": one}, {"units": {"incline": "deg"}}) is None
+    cols = columns({"v0": np.array([5.0, -1.0]), "mu": np.array([0.3, 0.3])}, {})
+    assert cols.exact.tolist() == [True, False]                   # v0 < 0 is refused
