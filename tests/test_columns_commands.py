@@ -78,7 +78,8 @@ def test_springs_columns_match_the_one_off(how):
     k[24] = [200.0, 300.0, 600.0]                                # 1/(1/200+1/300+1/600) = 100
     texts = [[f"{float(x)!r} N/m" for x in row] for row in k]
     given = {f"k{j + 1}": _si([t[j] for t in texts], STIFFNESS) for j in range(elements)}
-    cols = columns(given, {"how": how})
+    assert columns(given, {"how": how}) is None       # the unit typed is not known
+    cols = columns(given, {"how": how, "units": {"k1": "N/m", "k2": "N/m", "k3": "N/m"}})
     rows = [lambda t=t: network_stiffness(how, t) for t in texts]
     exact = _compare(cols, rows, ordinary=np.arange(25, n))
     assert not exact[22 if how == "series" else 23]      # k_eq underflows / overflows
@@ -100,8 +101,9 @@ def test_springs_columns_torsional_and_refusals():
     assert cols.values["k_eq"].tolist() == [math.fsum([0.1, 0.2]), 9.0]
     # the one-off adds in the first element's unit: not the SI sum
     assert columns(given, {"how": "series", "units": {"k1": "lbf/in"}}) is None
-    assert columns({"k1": given["k1"], "EI": given["k2"]}, {"how": "series"}) is None
-    assert columns(given, {"how": "sideways"}) is None
+    assert columns({"k1": given["k1"], "EI": given["k2"]},
+                   {"how": "series", "units": {"k1": ""}}) is None
+    assert columns(given, {"how": "sideways", "units": {"k1": ""}}) is None
 
 
 # --- damping-ratio -------------------------------------------------------------------------

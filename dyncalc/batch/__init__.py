@@ -23,14 +23,16 @@ Two paths give the same numbers:
   :func:`dyncalc.commands.natural_frequency.compute_scene`,
   :class:`SpringRows` :func:`dyncalc.commands.springs.network_stiffness`, ...);
 * a vectorised path (:func:`.fast._natural_frequency_fast`) computes whole chunks of
-  ``natural-frequency`` rows of the closed-form linear scenes (mass-spring, torsional, the
-  pendulum without an amplitude) at once with numpy, with the same kernels written for arrays
-  (:func:`~dyncalc.physics.numerics.sqrt_ratio_array`: the binary exponents split off with
-  ``np.frexp``, as :func:`~dyncalc.physics.numerics.sqrt_ratio` does with ``math.frexp``).
-  A unit is read once per chunk and column (pint converts the whole array), not once per
-  cell. Any row it cannot take exactly as the one-off would (a cell that is not a plain number
-  with a plain unit, a value out of range, a result that is zero, infinite or needs a warning)
-  goes to the generic path, so refusals and warnings are the one-off's own.
+  ``natural-frequency`` rows at once with numpy, through the column kernel of the scene's
+  physics function (:mod:`dyncalc.physics.columns`: the same formulas written for arrays,
+  bit for bit the one-off's, e.g. :func:`~dyncalc.physics.numerics.sqrt_ratio_array` splits
+  the binary exponents off with ``np.frexp`` as :func:`~dyncalc.physics.numerics.sqrt_ratio`
+  does with ``math.frexp``). A unit is read once per chunk and column (pint converts the whole
+  array), not once per cell. Any row it cannot take exactly as the one-off would (a cell that
+  is not a plain number with a plain unit, a value out of range, a constraint broken, a
+  result that is zero, infinite or needs a warning: every row the kernel does not mark exact)
+  goes to the generic path, so refusals and warnings are the one-off's own
+  (tests/test_batch_kernels.py holds the two paths byte-identical for every scene).
 
 Rows are read, computed and written in chunks of :data:`CHUNK_ROWS`, so memory stays flat
 however long the file. A bad row is reported on stderr as ``Error: line N: ...`` (its line in
@@ -60,7 +62,7 @@ import numpy as np
 
 from ..errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
 from ..result.propagate import propagate
-from .fast import FAST_SCENES, FastBlock
+from .fast import FastBlock
 from .header import Column, has_own_unit, read_header, with_header_unit
 from .rows import (CoriolisRows, DampingRows, NaturalFrequencyRows, RollingRows, RowSpec,
                    SpringRows)
@@ -70,7 +72,7 @@ from .write import _BLANK, _FAST, _Writer
 __all__ = ["run_batch", "RowSpec", "NaturalFrequencyRows", "SpringRows", "DampingRows",
            "RollingRows", "CoriolisRows", "CHUNK_ROWS", "ON_ERROR", "GENERIC_ENV", "MAX_LINE",
            "open_source", "Column", "read_header", "has_own_unit", "with_header_unit",
-           "FAST_SCENES", "FastBlock"]
+           "FastBlock"]
 
 #: Rows read, computed and written at a time; the result columns of CSV output are those of
 #: the first chunk's rows.

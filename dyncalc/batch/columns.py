@@ -18,6 +18,7 @@ _SIMPLE_UNIT = rf"{_NAME}(?:[ \t]*[*/·×]?[ \t]*{_NAME})*"
 _SIMPLE_UNIT_RE = re.compile(_SIMPLE_UNIT)
 #: A cell the vectorised path reads: a plain number and perhaps a simple unit. The number is
 #: an atomic group, so it is the literal dyncalc's tokenizer would read, never a shorter one.
+_LITERAL_CELL = rf"[+-]?(?>{_LITERAL})"
 _CELL_RE = re.compile(rf"[ \t]*([+-]?(?>{_LITERAL}))[ \t]*({_SIMPLE_UNIT})?[ \t]*")
 #: Every line of a column joined by line breaks, split in one pass into the number and the
 #: rest (which must then be a simple unit, checked once per distinct unit).
@@ -62,7 +63,10 @@ def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
                                     strict=strict)
         except InputError:
             sample = None
-        if sample is not None and dim.kind in ("plain", "dimensionless") \
+        # a unit of a plain dimension (an angular rate's or an angle's units have rules of
+        # their own), or none at all: the number is taken in the SI unit, as it stands
+        if sample is not None and (dim.kind in ("plain", "dimensionless")
+                                   or (not unit and sample.assumed_si)) \
                 and float(sample.quantity.magnitude) == 1.0:
             info = _UnitInfo()
             info.units = sample.quantity.units

@@ -1,4 +1,6 @@
-"""The vectorised path: whole chunks of closed-form ``natural-frequency`` rows with numpy."""
+"""The vectorised path: whole chunks of rows through the column kernels of the physics
+(:mod:`dyncalc.physics.columns`): every ``natural-frequency`` scene whose physics function has
+one, on the rows its kernel marks exact."""
 from __future__ import annotations
 
 import json
@@ -7,30 +9,24 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..physics.numerics import sqrt_ratio_array
-from ..physics.outcome import damped_arrays, periodic_arrays
+from ..physics.columns import kernel_of
+from ..physics.numerics import finite_nonzero
+from ..physics.outcome import damped_arrays
 from .columns import _plain_floats, _read_column
 from .header import Column, with_header_unit
-
-#: The natural-frequency scenes the vectorised path computes: scene -> (the two parameters of
-#: omega = sqrt(a / b), the parameters the row must not give (they need another model)).
-FAST_SCENES = {
-    "mass-spring": (("k", "m"), ()),
-    "torsional": (("kt", "J"), ()),
-    "pendulum": (("g", "l"), ("amplitude",)),
-}
 
 
 class FastBlock:
     """Rows of a chunk computed together: their positions in the chunk, the result arrays (SI,
-    in the order the one-off gives them) and kinds, and for JSON the constant part of each
-    line (``head``) and each row's ``inputs`` object text."""
+    in the order the one-off gives them; vectors as rows of an (n, 3) array, words as str
+    arrays) and their dimensions (``None`` for words), and for JSON the constant part of each
+    line (``head``), each row's ``inputs`` object text and the ``extra`` object text."""
 
-    __slots__ = ("rows", "values", "kinds", "head", "inputs")
+    __slots__ = ("rows", "values", "dims", "head", "inputs", "extra")
 
-    def __init__(self, rows, values, kinds, head, inputs):
-        self.rows, self.values, self.kinds, self.head, self.inputs = (
-            rows, values, kinds, head, inputs)
+    def __init__(self, rows, values, dims, head, inputs, extra="{}"):
+        self.rows, self.values, self.dims, self.head, self.inputs, self.extra = (
+            rows, values, dims, head, inputs, extra)
 
 
 def _default_input(p, strict: bool, cache: dict):
@@ -50,14 +46,11 @@ def _default_input(p, strict: bool, cache: dict):
 
 def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
                             cache: dict) -> list[FastBlock]:
-    """The rows of this chunk the vectorised path computes, as blocks (one per scene and set
-    of parameters given); every other row is left to the generic path. ``spec`` is the run's
-    :class:`~dyncalc.batch.rows.NaturalFrequencyRows` (which names this function its ``fast``
-    path); ``table`` holds the chunk's cells column by column."""
-    from ..scenes import get_scene
-    from ..result.kinds import result_kind
-
-    if spec.method not in (None, "auto") or not table or len(columns) > 62:
+    """The rows of this chunk the vectorised path computes, as blocks (one per scene, set of
+    parameters given and choice words); every other row is left to the generic path. ``spec``
+    is the run's :class:`~dyncalc.batch.rows.NaturalFrequencyRows` (which names this function
+    its ``fast`` path); ``table`` holds the chunk's cells column by column."""
+    if not table or len(columns) > 62:
         return []
     n = len(table[0])
     present: dict[str, np.ndarray] = {}
@@ -83,91 +76,184 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
     # the distinct signatures, in order (np.unique would import numpy.ma: 6 ms)
     for sig in sorted(set(signature.tolist())):
         given = [key for bit, key in enumerate(keys) if (sig >> bit) & 1]
-        if not given:
-            continue
-        try:
-            scene_name = spec.scene_for(given)
-        except InputError:
-            continue
-        if scene_name not in FAST_SCENES:
-            continue
-        (a_name, b_name), excluded = FAST_SCENES[scene_name]
-        scene = get_scene(scene_name)
-        names = {p.name for p in scene.params}
-        if any(k not in names or k in excluded for k in given):
-            continue
-        params = [p for p in scene.params if p.name not in excluded
-                  and (p.name in given or p.default is not None)]
-        if any(p.default is None and not p.optional and p.name not in given
-               for p in scene.params if p.name not in excluded):
+        plan = _plan(spec, given, units) if given else None
+        if plan is None:
             continue
         rows = np.arange(n) if sig == int(signature[0]) and (signature == sig).all() \
             else np.flatnonzero(signature == sig)
-        whole = len(rows) == n
-        good = np.ones(len(rows), dtype=bool)
-        si: dict[str, Any] = {}
-        inputs = []
-        for p in params:
-            if p.name in given:
-                column = cells[p.name] if whole else [cells[p.name][i] for i in rows]
-                read = _read_column(column, units[p.name], p, spec.strict, cache,
-                                    plain[p.name] if whole else None)
-                good &= read.ok
-                si[p.name] = read.si
-                inputs.append((p.name, read, column, units[p.name],
-                               whole and plain[p.name] is not None))
-            else:
-                value, text = _default_input(p, spec.strict, cache)
-                si[p.name] = np.full(len(rows), value)
-                inputs.append((p.name, text, None, None, False))
-        if not good.any():
-            continue
-        with np.errstate(all="ignore"):
-            omega = sqrt_ratio_array(np.where(good, si[a_name], 1.0),
-                                     np.where(good, si[b_name], 1.0))
-            values = periodic_arrays(omega)
-            if "zeta" in si:
-                good &= si["zeta"] < 1.0   # at or above critical: a warning, generic path
-                values.update(damped_arrays(omega, np.where(good, si["zeta"], 0.0)))
-            for array in values.values():  # zero or beyond float64: warnings, generic path
-                good &= np.isfinite(array) & (array != 0.0)
-        if not good.any():
-            continue
-        keep = np.flatnonzero(good)
-        if len(keep) != len(rows):
-            rows = rows[keep]
-            values = {name: array[keep] for name, array in values.items()}
-        kinds = {name: result_kind(name) for name in values}
-        head = texts = None
-        if want_json:
-            head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
-                    f'"scene": {json.dumps(scene_name)}, "model": "linear", '
-                    '"method": "closed-form"')
-            parts = []
-            for name, read, column, header_unit, plain_column in inputs:
-                if isinstance(read, str):
-                    parts.append([read] * len(keep))
-                    continue
-                every = len(keep) == len(read.shown)
-                shown = read.shown if every else read.shown[keep]
-                unit_json = read.unit_json if every else [read.unit_json[i]
-                                                          for i in keep.tolist()]
-                typed = column if every else [column[i] for i in keep.tolist()]
-                if plain_column:  # plain numbers: the text is the cell and the header's unit
-                    suffix = json.dumps(" " + header_unit)[1:-1] if header_unit else ""
-                    typed = ['"' + c.strip() + suffix + '"' for c in typed]
-                else:
-                    typed = [json.dumps(with_header_unit(c.strip(), header_unit))
-                             for c in typed]
-                prefix = json.dumps(name) + ': {"value": '
-                if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
-                    unit, assumed = (u.replace("%", "%%") for u in unit_json[0])
-                    template = (prefix.replace("%", "%%") + '%r, "unit": ' + unit
-                                + ', "text": %s' + assumed + "}")
-                    parts.append(list(map(template.__mod__, zip(shown.tolist(), typed))))
-                else:
-                    parts.append([f'{prefix}{v!r}, "unit": {u}, "text": {t}{a}}}'
-                                  for v, (u, a), t in zip(shown.tolist(), unit_json, typed)])
-            texts = list(map(", ".join, zip(*parts)))
-        blocks.append(FastBlock(rows, values, kinds, head, texts))
+        for words, subset in _by_words(plan, cells, rows):
+            block = _scene_block(spec, plan, words, subset, len(subset) == n, cells, plain,
+                                 units, want_json, cache)
+            if block is not None:
+                blocks.append(block)
     return blocks
+
+
+class _Plan:
+    """How the rows giving one set of parameters are computed: the scene, its kernel, the
+    parameters read from columns (``given``), the choice parameters (``choices``: read as
+    words), the parameters taken at their default, and the keyword arguments the kernel takes
+    besides the parameters (``method``, ``rtol``)."""
+
+    __slots__ = ("scene", "kernel", "given", "choices", "defaults", "settings")
+
+
+def _plan(spec, given: list[str], units: dict) -> _Plan | None:
+    """The plan of the rows that give ``given``, or ``None`` where the generic path must
+    answer (no scene, no kernel, a refusal, a setting the kernel does not take)."""
+    from ..scenes import get_scene
+    from ..scenes.runner import DEFAULT_RTOL, _resolve_groups
+
+    try:
+        scene = get_scene(spec.scene_for(given))
+        skipped = _resolve_groups(scene, dict.fromkeys(given, ""))
+    except InputError:
+        return None
+    kernel = kernel_of(scene.compute)
+    names = {p.name for p in scene.params}
+    if kernel is None or any(k not in names for k in given) \
+            or ("zeta" in given and not scene.accepts_zeta):
+        return None
+    if spec.method not in (None, "auto") and spec.method not in scene.methods:
+        return None
+    plan = _Plan()
+    plan.scene, plan.kernel, plan.given = scene, kernel, given
+    plan.choices = [p for p in scene.params if p.choices is not None and p.name in given]
+    if any(units[p.name] for p in plan.choices):
+        return None  # a unit on a column of words: the one-off refuses it
+    plan.defaults = []
+    for p in scene.params:
+        if p.name in given or p.name in skipped:
+            continue
+        if p.default is None:
+            if not p.optional:
+                return None  # a required parameter missing: the one-off refuses the row
+            continue
+        plan.defaults.append(p)
+    plan.settings = {}
+    if scene.methods:
+        plan.settings = {"method": spec.method or "auto",
+                         "rtol": DEFAULT_RTOL if spec.rtol is None else spec.rtol}
+    return plan
+
+
+def _by_words(plan: _Plan, cells: dict, rows: np.ndarray):
+    """The rows of a block split by the words of their choice columns (``body``):
+    ``(words by parameter, rows)`` pairs; rows with a word the parameter has not are left out
+    (the generic path refuses them)."""
+    if not plan.choices:
+        yield {}, rows
+        return
+    combos: dict[tuple, list[int]] = {}
+    columns = [cells[p.name] for p in plan.choices]
+    for i in rows.tolist():
+        words = tuple(column[i].strip() for column in columns)
+        if all(w in p.choices for w, p in zip(words, plan.choices)):
+            combos.setdefault(words, []).append(i)
+    for words, members in combos.items():
+        yield ({p.name: w for p, w in zip(plan.choices, words)},
+               np.asarray(members, dtype=np.intp))
+
+
+def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, cells, plain,
+                 units, want_json: bool, cache: dict) -> FastBlock | None:
+    """One block of rows: read their columns, run the kernel, keep the exact rows."""
+    from ..result.kinds import result_kind
+
+    scene = plan.scene
+    # a choice left to its default is its default word (body=solid-cylinder, sense=inward)
+    words = {**{p.name: p.default for p in plan.defaults if p.choices is not None}, **words}
+    good = np.ones(len(rows), dtype=bool)
+    si: dict[str, Any] = {}
+    inputs = []
+    for p in scene.params:
+        if p.name in words:
+            word = words[p.name]
+            value = p.choices[word]
+            si["kappa" if p.name == "body" else p.name] = \
+                np.full(len(rows), value) if not isinstance(value, str) else value
+            entry = json.dumps({p.name: {"value": word, "unit": ""}})[1:-2]
+            inputs.append((p.name, None, None, None, False, entry))
+        elif p.name in plan.given:
+            column = cells[p.name] if whole else [cells[p.name][i] for i in rows.tolist()]
+            read = _read_column(column, units[p.name], p, spec.strict, cache,
+                                plain[p.name] if whole else None)
+            good &= read.ok
+            si[p.name] = read.si
+            inputs.append((p.name, read, column, units[p.name],
+                           whole and plain[p.name] is not None, None))
+        elif p in plan.defaults:
+            value, text = _default_input(p, spec.strict, cache)
+            si[p.name] = np.full(len(rows), value)
+            inputs.append((p.name, text, None, None, False, None))
+    if not good.any():
+        return None
+    zeta = si.pop("zeta", None)
+    arguments = {name: (np.where(good, value, 1.0) if isinstance(value, np.ndarray) else value)
+                 for name, value in si.items()}
+    with np.errstate(all="ignore"):
+        for constraint in scene.constraints:
+            good &= np.asarray(constraint.holds(arguments), dtype=bool)
+        if not good.any():
+            return None
+        out = plan.kernel(**arguments, **plan.settings)
+        if out is None:
+            return None
+        good &= out.exact
+        values = dict(out.values)
+        if zeta is not None:
+            good &= zeta < 1.0   # at or above critical: a warning, generic path
+            damped = damped_arrays(values["omega"], np.where(good, zeta, 0.0))
+            good &= finite_nonzero({k: v for k, v in damped.items() if k != "zeta"})
+            values.update(damped)
+    if not good.any():
+        return None
+    keep = np.flatnonzero(good)
+    if len(keep) != len(rows):
+        rows = rows[keep]
+        values = {name: array[keep] for name, array in values.items()}
+    dims = {name: result_kind(name).dim for name in values}
+    head = texts = None
+    extra = "{}"
+    if out.error_estimate is not None:
+        extra = json.dumps({"error_estimate": out.error_estimate})
+    if want_json:
+        head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
+                f'"scene": {json.dumps(scene.name)}, "model": {json.dumps(out.model)}, '
+                f'"method": {json.dumps(out.method)}')
+        texts = _input_texts(inputs, keep, words)
+    return FastBlock(rows, values, dims, head, texts, extra)
+
+
+def _input_texts(inputs, keep: np.ndarray, words: dict) -> list[str]:
+    """Each kept row's ``inputs`` object text, in the scene's parameter order."""
+    parts = []
+    for name, read, column, header_unit, plain_column, entry in inputs:
+        if entry is not None:  # a word: the same for every row of the block
+            parts.append([f'{entry}, "text": {json.dumps(words[name])}}}'] * len(keep))
+            continue
+        if isinstance(read, str):
+            parts.append([read] * len(keep))
+            continue
+        if hasattr(read, "texts"):  # words or vectors (dyncalc.batch.fast_commands)
+            parts.append(read.texts(name, keep))
+            continue
+        every = len(keep) == len(read.shown)
+        shown = read.shown if every else read.shown[keep]
+        unit_json = read.unit_json if every else [read.unit_json[i] for i in keep.tolist()]
+        typed = column if every else [column[i] for i in keep.tolist()]
+        if plain_column:  # plain numbers: the text is the cell and the header's unit
+            suffix = json.dumps(" " + header_unit)[1:-1] if header_unit else ""
+            typed = ['"' + c.strip() + suffix + '"' for c in typed]
+        else:
+            typed = [json.dumps(with_header_unit(c.strip(), header_unit)) for c in typed]
+        prefix = json.dumps(name) + ': {"value": '
+        if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
+            unit, assumed = (u.replace("%", "%%") for u in unit_json[0])
+            template = (prefix.replace("%", "%%") + '%r, "unit": ' + unit
+                        + ', "text": %s' + assumed + "}")
+            parts.append(list(map(template.__mod__, zip(shown.tolist(), typed))))
+        else:
+            parts.append([f'{prefix}{v!r}, "unit": {u}, "text": {t}{a}}}'
+                          for v, (u, a), t in zip(shown.tolist(), unit_json, typed)])
+    return list(map(", ".join, zip(*parts)))

@@ -18,6 +18,19 @@ class RowSpec:
     command = ""
     example_header = "k [N/m],m [kg]"
     fast = None
+    #: the command's column adapter (:attr:`dyncalc.commands.record.Command.columns`), the
+    #: settings it is given and the ``strict`` flag (for the vectorised path)
+    adapter = None
+    settings: dict = {}
+    strict = False
+
+    def parameter(self, key: str):
+        """The record parameter a column key gives (vectorised path); ``None``: not one."""
+        return None
+
+    def input_names(self, keys: list[str]) -> dict[str, str]:
+        """The name the one-off gives the input of each column key of a row."""
+        return {key: key for key in keys}
 
     def key(self, name: str) -> str | None:
         raise NotImplementedError
@@ -87,9 +100,33 @@ class SpringRows(RowSpec):
     def __init__(self, how: str, *, strict: bool = False):
         from ..commands.springs import ELEMENTS
 
+        from ..commands.springs import SPRING_PARALLEL, SPRING_SERIES
+
         self.how, self.strict = how, strict
         self.command = f"spring-{how}"
         self.shared = list(dict.fromkeys(p for kind in ELEMENTS.values() for p in kind.params))
+        record = SPRING_SERIES if how == "series" else SPRING_PARALLEL
+        if record.columns is not None:
+            from .fast_commands import _command_fast
+
+            self.adapter, self.fast = record.columns, _command_fast
+
+    def parameter(self, key):
+        """An element column holds plain stiffnesses on the vectorised path (a torsional
+        spring, a beam word or a shared value leaves the row to the generic path)."""
+        if not self._ELEMENT_RE.match(key):
+            return None
+        from ..commands.record import Parameter
+        from ..units import STIFFNESS
+
+        return Parameter(key, STIFFNESS)
+
+    def input_names(self, keys):
+        """The one-off numbers a row's elements in order: ``k1``, ``k3`` given are its k1, k2."""
+        elements = [key for key in keys if self._ELEMENT_RE.match(key)]
+        names = {key: f"k{i}" for i, key in enumerate(elements, 1)}
+        names.update((key, key) for key in keys if key not in names)
+        return names
 
     def key(self, name):
         if self._ELEMENT_RE.match(name) or name in self.shared:
@@ -124,6 +161,13 @@ class RecordRows(RowSpec):
         self.scene_words = [name for name in scene_words if name not in self.columns]
         self.rtol, self.strict = rtol, strict
         self.example_header = example or self.example_header
+        if record.columns is not None and not self.scene_words:
+            from .fast_commands import _command_fast
+
+            self.adapter, self.fast = record.columns, _command_fast
+
+    def parameter(self, key):
+        return self.record.parameter(key) if key in self.columns else None
 
     def key(self, name):
         return name if name in self.columns or name in self.scene_words else None

@@ -46,11 +46,11 @@ class _Writer:
     def fix_columns(self, outcomes, blocks, upto: int) -> None:
         names: dict[str, Any] = {}
         first: list[tuple[int, list]] = []
-        for block in blocks:  # (a fast result always has a dimension: its SI unit is canonical)
+        for block in blocks:  # (a block's dims: the canonical unit is the SI unit)
             position = int(block.rows[0])
             if position < upto:
-                first.append((position, [(name, block.kinds[name].dim.si, block.kinds[name].dim)
-                                         for name in block.values]))
+                first.append((position, [(name, dim.si if dim is not None else "", dim)
+                                         for name, dim in block.dims.items()]))
         for i in range(upto):
             kind, item = outcomes[i]
             if kind == "ok":
@@ -160,7 +160,12 @@ class _Writer:
                 return
         shown = {}
         for name, array in block.values.items():
-            dim = block.kinds[name].dim
+            dim = block.dims[name]
+            if dim is None:  # words (a regime): the same text as the one-off's
+                words = array.tolist()
+                shown[name] = (list(map(json.dumps, words)) if self.as_json
+                               else [_csv_lines([[w]])[0] for w in words], "")
+                continue
             if name in self.units:
                 self.check_unit(name, dim)
             target = self.units.get(name, dim.si) if self.as_json else self.col_units[name]
@@ -168,6 +173,11 @@ class _Writer:
                 with np.errstate(over="ignore", under="ignore"):
                     array = np.asarray(convert(array, dim, target, label=f"--unit {name}",
                                                name=name), dtype=float)
+            if array.ndim == 2:  # vectors: a JSON list, or components comma-separated
+                shown[name] = ([json.dumps(v) for v in array.tolist()] if self.as_json else
+                               [_csv_lines([[",".join(_reprs(v))]])[0] for v in array.tolist()],
+                               target)
+                continue
             numbers = _reprs(array.tolist())
             if self.as_json and not np.isfinite(array).all():  # JSON has no infinity
                 numbers = [t if math.isfinite(v) else "null"
@@ -181,8 +191,9 @@ class _Writer:
                 entry = (json.dumps(name).replace("%", "%%") + ': {"value": %s, "unit": '
                          + json.dumps(unit).replace("%", "%%") + "}")
                 parts.append(list(map(entry.__mod__, numbers)))
-            template = '{"line": %d, ' + block.head.replace("%", "%%") + \
-                ', "inputs": {%s}, "results": {%s}, "warnings": [], "extra": {}}'
+            template = ('{"line": %d, ' + block.head.replace("%", "%%")
+                        + ', "inputs": {%s}, "results": {%s}, "warnings": [], "extra": '
+                        + block.extra.replace("%", "%%") + "}")
             made = list(map(template.__mod__, zip(line_numbers, block.inputs,
                                                   map(", ".join, zip(*parts)))))
         else:

@@ -13,10 +13,14 @@ __all__ = ["typed_in_si"]
 
 
 def typed_in_si(settings: dict, key: str, *si_units: str) -> bool:
-    """Whether parameter ``key`` was typed in one of ``si_units`` (or as a bare number, or its
-    unit is not known: ``settings["units"]`` does not name it)."""
-    unit = (settings.get("units") or {}).get(key)
-    if not unit or not str(unit).strip():
+    """Whether parameter ``key`` was typed in one of ``si_units`` or as a bare number
+    (``settings["units"][key]`` empty). ``False`` when ``settings["units"]`` does not name
+    ``key``: the unit typed is not known, so the one-off's arithmetic is not either."""
+    units = settings.get("units") or {}
+    if key not in units:
+        return False
+    unit = units[key]
+    if unit is None or not str(unit).strip():
         return True
     from ..errors import InputError
     from ..units import parse_unit

@@ -989,4 +989,5 @@ COMMAND = Command(
           for name, (dim, _words) in OPTIONS.items()),
     tuple(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
     _run,
+    columns=columns,
 )

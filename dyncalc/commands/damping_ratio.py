@@ -927,4 +927,5 @@ COMMAND = Command(
     results_from_kinds(_KINDS),
     _run,
     words="[NAME=QUANTITY]...",
+    columns=columns,
 )

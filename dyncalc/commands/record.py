@@ -77,17 +77,21 @@ class Command(Frozen):
 
     ``compute(values, words, *, rtol, strict)`` takes the options as typed (name -> text or
     ``None``, settings included) and the free words, and returns a
-    :class:`~dyncalc.result.Result`.
+    :class:`~dyncalc.result.Result`. ``columns(given, settings)``, where the command has
+    one, is its batch adapter: the SI arrays of the columns a block of rows gives (by
+    parameter name; vectors (n, 3), words as arrays of str) and the settings, to a
+    :class:`~dyncalc.physics.columns.Columns` of the one-off's results (or ``None``).
     """
 
-    __slots__ = ("name", "summary", "help", "parameters", "words", "results", "compute")
+    __slots__ = ("name", "summary", "help", "parameters", "words", "results", "compute",
+                 "columns")
 
     def __init__(self, name: str, summary: str, help: str, parameters: tuple[Parameter, ...],
                  results: tuple[ResultName, ...], compute: Callable[..., Any],
-                 words: str | None = None):
+                 words: str | None = None, columns: Callable[..., Any] | None = None):
         _set(self, {"name": name, "summary": summary, "help": help,
                     "parameters": tuple(parameters), "words": words,
-                    "results": tuple(results), "compute": compute})
+                    "results": tuple(results), "compute": compute, "columns": columns})
 
     def parameter(self, name: str) -> Parameter | None:
         return next((p for p in self.parameters if p.name == name), None)

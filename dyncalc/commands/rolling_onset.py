@@ -589,8 +589,8 @@ def columns(given: dict, settings: dict):
 
     ``given`` maps the columns the block gives (``v0``, ``mu``, ``body`` or ``kappa``,
     ``radius``, ``omega0``, ``g``, ``incline``: the record's input names) to SI arrays
-    (``body`` a str array); ``settings`` holds ``method`` and, optionally, ``units`` (key ->
-    the unit typed). The closed form runs through the kernel of
+    (``body`` a str array); ``settings`` holds ``method`` and, with an ``incline`` column,
+    ``units["incline"]`` (the unit it was typed in; ``""`` for a bare number). The closed form runs through the kernel of
     :func:`~dyncalc.physics.rolling.rolling_onset` (row by row: its arithmetic is exact
     rational, see there); ``--method ode``, an incline typed in another unit than radians
     (its sine is taken in the unit typed) and ``body`` with ``kappa`` give ``None``. Exact
@@ -606,7 +606,7 @@ def columns(given: dict, settings: dict):
     if (settings.get("method") not in (None, "auto", "closed-form")
             or not {"v0", "mu"} <= keys or {"body", "kappa"} <= keys
             or keys - {"v0", "mu", "body", "kappa", "radius", "omega0", "g", "incline"}
-            or not typed_in_si(settings, "incline", "rad")):
+            or ("incline" in keys and not typed_in_si(settings, "incline", "rad"))):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()
               if name != "body"}
@@ -694,4 +694,5 @@ COMMAND = Command(
     ),
     results_from_kinds(_KINDS),
     _run,
+    columns=columns,
 )

@@ -591,8 +591,8 @@ def columns(given: dict, settings: dict):
 
     ``given`` maps the element columns ``k1``, ``k2``, ... (in column order) to float64
     arrays: plain stiffnesses in SI (N/m, or N*m/rad for torsional elements); ``settings``
-    holds ``how`` (``series`` or ``parallel``) and, optionally, ``units`` (key -> the unit the
-    elements were typed in). Element functions (``cantilever(...)``) and shared values are not
+    holds ``how`` (``series`` or ``parallel``) and ``units`` (key -> the unit the elements were
+    typed in, ``""`` for a bare number: without it, ``None``). Element functions (``cantilever(...)``) and shared values are not
     vectorised; nor are elements typed in a unit other than SI (the one-off adds them in
     their own unit, :func:`dyncalc.physics.springs._common_unit`). Returns
     :class:`~dyncalc.physics.columns.Columns` with ``k_eq`` (the one-off's ``results``), exact
@@ -646,9 +646,12 @@ def _record(how: str, summary: str, examples: str) -> Command:
                           "torsional elements"),
                ResultName("k<i>", "k<i>", "N/m", "the stiffness of element i, when it is a "
                           "standard element (cantilever(), coil(), ...)"))
+    def adapter(given, settings):
+        return columns(given, {**settings, "how": how})
+
     return Command(f"spring-{how}", summary.split("\n")[0],
                    f"{summary}\n{NETWORK_HELP}\n{examples}", (), results, run,
-                   words="ELEMENT...")
+                   words="ELEMENT...", columns=adapter)
 
 
 SPRING_SERIES = _record(

@@ -505,23 +505,23 @@ def _coefficients_columns(c, k, m) -> Columns:
         four_km = W(4.0) * W(k) * W(m)
         critical = four_km.sqrt()
         excess, exponent = _excess_array(c, k, m)
-        fraction = (W(np.abs(excess), exponent) / four_km).value()
+        fraction = (W(np.abs(excess), exponent) / four_km).to_float()
         root = W(np.abs(excess), exponent).sqrt()
         omega_d = root / W(m) * W(0.5)
         underdamped = (c > 0.0) & (excess > 0.0) & (fraction > CRITICAL_BAND)
         regime = np.where(c == 0.0, "undamped", np.where(
             fraction <= CRITICAL_BAND, "critically damped",
             np.where(excess < 0.0, "overdamped", "underdamped")))
-        values = {"zeta": (W(c) / critical).value(),
-                  "delta": (W(TWO_PI) * W(c) / root).value(),
+        values = {"zeta": (W(c) / critical).to_float(),
+                  "delta": (W(TWO_PI) * W(c) / root).to_float(),
                   "regime": regime,
-                  "Q": (critical / W(c) * W(0.5)).value(),
-                  "c_c": critical.value(), "c": c.copy(),
+                  "Q": (critical / W(c) * W(0.5)).to_float(),
+                  "c_c": critical.to_float(), "c": c.copy(),
                   "omega": sqrt_ratio_array(k, m),
-                  "xi": (W(c) / W(m) * W(0.5)).value(),
-                  "omega_d": omega_d.value(),
-                  "f_d": (omega_d / W(TWO_PI)).value(),
-                  "T_d": (W(TWO_PI) / omega_d).value()}
+                  "xi": (W(c) / W(m) * W(0.5)).to_float(),
+                  "omega_d": omega_d.to_float(),
+                  "f_d": (omega_d / W(TWO_PI)).to_float(),
+                  "T_d": (W(TWO_PI) / omega_d).to_float()}
     ordinary = np.isfinite(c) & np.isfinite(k) & np.isfinite(m) & (k > 0.0) & (m > 0.0)
     return Columns(values, exact=underdamped & ordinary)
 
@@ -605,7 +605,7 @@ def _decrement_columns(delta, omega=None, k=None, m=None) -> Columns:
         h, ok = hypot_rows(np.full(delta.shape, TWO_PI), delta)
         values = {"zeta": delta / h, "delta": delta.copy(),
                   "regime": np.where(delta == 0.0, "undamped", "underdamped"),
-                  "Q": (W(h) / W(delta) * W(0.5)).value()}
+                  "Q": (W(h) / W(delta) * W(0.5)).to_float()}
         omega_si = None
         if omega is not None:
             omega_si = np.asarray(omega, dtype=float)
@@ -613,15 +613,15 @@ def _decrement_columns(delta, omega=None, k=None, m=None) -> Columns:
             k, m = np.asarray(k, dtype=float), np.asarray(m, dtype=float)
             omega_si = sqrt_ratio_array(k, m)
             critical = (W(4.0) * W(k) * W(m)).sqrt()
-            values["c_c"] = critical.value()
-            values["c"] = (critical * W(delta) / W(h)).value()
+            values["c_c"] = critical.to_float()
+            values["c"] = (critical * W(delta) / W(h)).to_float()
             values["omega"] = omega_si
             ok &= np.isfinite(k) & np.isfinite(m) & (k > 0.0) & (m > 0.0)
         if omega_si is not None:
-            values["xi"] = (W(omega_si) * W(delta) / W(h)).value()
-            values["omega_d"] = (W(omega_si) * W(TWO_PI) / W(h)).value()
-            values["f_d"] = (W(omega_si) / W(h)).value()
-            values["T_d"] = (W(h) / W(omega_si)).value()
+            values["xi"] = (W(omega_si) * W(delta) / W(h)).to_float()
+            values["omega_d"] = (W(omega_si) * W(TWO_PI) / W(h)).to_float()
+            values["f_d"] = (W(omega_si) / W(h)).to_float()
+            values["T_d"] = (W(h) / W(omega_si)).to_float()
             ok &= np.isfinite(omega_si) & (omega_si > 0.0)
     return Columns(values, exact=ok & (delta > 0.0) & np.isfinite(delta))
 

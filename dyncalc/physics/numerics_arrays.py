@@ -1,24 +1,214 @@
-"""Array twins of the careful scalar kernels: the same float operations, elementwise on numpy
-arrays, so that a column kernel (:mod:`dyncalc.physics.columns`) reproduces the one-off
-function bit for bit.
+"""Array twins of the scalar kernels of :mod:`~dyncalc.physics.numerics`, for column kernels.
 
-Each twin names its scalar original and is tested for bitwise equality against it over random
-inputs from 1e-300 to 1e300 (tests/test_numerics_arrays.py). numpy's elementwise ``+ - * /``,
-``sqrt``, ``frexp`` and ``ldexp`` round as the scalar operations do (IEEE 754, no fused
-multiply-add), so the twins only need to repeat the scalar steps in the same order; where the
-scalar code branches, the twins compute both sides and select.
+Each twin runs the same floating-point operations, in the same order, on whole float64 numpy
+arrays, so every element is *bit for bit* what the scalar kernel gives for it
+(tests/test_numerics_arrays.py compares them over random inputs from 1e-300 to 1e300):
+
+* :func:`pow_array` twins Python's ``x ** p`` (the C library's ``pow``, which numpy's own
+  ``power`` does not reproduce);
+* :func:`monomial_array` and :func:`root_monomial_array` twin
+  :func:`~dyncalc.physics.numerics.monomial` and
+  :func:`~dyncalc.physics.numerics.root_monomial`;
+* :class:`WideArray` twins :class:`~dyncalc.physics.numerics.Wide`;
+* :func:`two_product_array`, :func:`fsum_rows` (CPython's ``math.fsum``),
+  :func:`hypot_rows` (CPython's ``math.hypot``), :func:`series_sum_rows` and
+  :func:`parallel_sum_rows` twin their namesakes, row by row.
+
+numpy is imported lazily (``from ..lazy import numpy as np``).
 """
 from __future__ import annotations
 
+import math
+
 from ..lazy import numpy as np
 
-__all__ = ["two_sum_array", "two_product_array", "fsum_rows", "WideArray", "hypot_rows",
-           "series_sum_rows", "parallel_sum_rows",
-           "ldexp_array"]
+__all__ = ["pow_array", "monomial_array", "root_monomial_array", "WideArray",
+           "two_sum_array", "two_product_array", "fsum_rows", "hypot_rows", "series_sum_rows",
+           "parallel_sum_rows", "ldexp_array"]
 
 #: Exponents beyond these make ``ldexp`` give 0 or inf whatever the mantissa (and fit int32).
 _EXP_LIMIT = 1 << 20
 
+#: How close (in ulp of the result) to a rounding midpoint a product or quotient may come
+#: before :func:`pow_array` asks the C library's ``pow`` itself: glibc's ``pow`` is within
+#: 0.52 ulp, not 0.5, and rounds differently from ``x * x`` or ``1 / x`` only there (the
+#: largest gap measured on 3 million mantissas is 0.0065 ulp; this band is eight times that).
+POW_BAND = 0.05
+
+
+def _split(a):
+    c = 134217729.0 * a  # 2**27 + 1 (Veltkamp), as numerics._split
+    hi = c - (c - a)
+    return hi, a - hi
+
+
+def _two_product(a, b):
+    """``(p, e)``, ``p = fl(a b)``, ``a b = p + e`` exactly (Dekker), elementwise."""
+    p = a * b
+    ah, al = _split(a)
+    bh, bl = _split(b)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def pow_array(x, power: int):
+    """``x ** power`` elementwise, bit for bit as Python computes it for each float (the C
+    library's ``pow``), for mantissas ``0.5 <= x < 1`` (``math.frexp``'s) and any integer
+    power.
+
+    ``pow`` is not correctly rounded: for ``power = 2`` it differs from ``x * x`` (and for
+    ``-1`` from ``1 / x``) on about one mantissa in a thousand, where the exact result lies
+    within a few thousandths of an ulp of a rounding midpoint; numpy's ``power`` (vectorised
+    differently) differs on one in twenty. So ``x * x`` and ``1 / x`` are taken where the exact
+    value, recovered with Dekker's product, lies further than :data:`POW_BAND` ulp from a
+    midpoint (where any result within 0.52 ulp rounds the same way), and Python's ``**`` is
+    called on the few elements left (about one in ten), as it is for the other powers.
+    ``power = 1`` is ``x`` itself (``pow`` is exact where the result is representable).
+
+    >>> pow_array(np.array([0.75, 0.5]), 2).tolist()
+    [0.5625, 0.25]
+    """
+    x = np.asarray(x, dtype=float)
+    if power == 1:
+        return x.copy()
+    with np.errstate(all="ignore"):
+        if power == 2:
+            out = x * x
+            _, err = _two_product(x, x)
+            distance = np.abs(err / np.spacing(out))        # the exact value: out + err
+        elif power == -1:
+            out = 1.0 / x
+            high, low = _two_product(out, x)
+            distance = np.abs(((1.0 - high) - low) / x / np.spacing(out))   # 1/x - out
+        else:
+            return np.array([value ** power for value in x.tolist()], dtype=float)
+        near = ~(np.abs(distance - 0.5) > POW_BAND)          # (NaN: near, the safe side)
+    index = np.flatnonzero(near)
+    if index.size:
+        out[index] = [value ** power for value in x[index].tolist()]
+    return out
+
+
+def _scaled_product_array(coefficient: float, factors):
+    """(mantissa, exponent, zero) arrays of ``coefficient * prod(x ** p)``: the steps of
+    :func:`numerics._scaled_product`, ``zero`` marking the elements with a zero factor (where
+    the scalar returns ``None``)."""
+    m0, e0 = math.frexp(coefficient)
+    mantissa, exponent, zero = None, None, None
+    for value, power in factors:
+        value = np.asarray(value, dtype=float)
+        if mantissa is None:
+            mantissa = np.full(value.shape, m0)
+            exponent = np.full(value.shape, e0, dtype=np.int64)
+            zero = np.zeros(value.shape, dtype=bool)
+        here = value == 0.0
+        zero |= here
+        m, e = np.frexp(value)
+        mantissa = mantissa * pow_array(np.where(here, 0.5, m), power)  # (0 ** -1 raises)
+        exponent = exponent + e.astype(np.int64) * power
+        mantissa, e2 = np.frexp(mantissa)
+        exponent = exponent + e2
+    return mantissa, exponent, zero
+
+
+def _ldexp(mantissa, exponent):
+    """``math.ldexp`` elementwise, ``inf`` where it would raise OverflowError."""
+    exponent = np.clip(exponent, -4000, 4000)       # beyond, the result is 0 or inf anyway
+    with np.errstate(over="ignore", under="ignore"):
+        return np.ldexp(mantissa, exponent.astype(np.int32))
+
+
+def monomial_array(coefficient: float, factors):
+    """:func:`~dyncalc.physics.numerics.monomial` elementwise (``factors``: ``(array,
+    power)`` pairs, the arrays of one length), bit for bit the scalar's result.
+
+    >>> monomial_array(3.0, [(np.array([1e200, 2e11]), 1), (np.array([1e100, 2.0]), -3)]).tolist()
+    [3e-100, 75000000000.0]
+    """
+    mantissa, exponent, zero = _scaled_product_array(coefficient, factors)
+    return np.where(zero, 0.0, _ldexp(mantissa, exponent))
+
+
+def root_monomial_array(coefficient: float, factors):
+    """:func:`~dyncalc.physics.numerics.root_monomial` elementwise, bit for bit: the exponent
+    halved exactly before one square root of the mantissa.
+
+    >>> k, m = np.array([8e200, 4.0, 1e300]), np.array([1e-200, 1.0, 1e-300])
+    >>> root_monomial_array(2.0, [(k, 1), (m, -1)]).tolist()   # 2e600 would overflow midway
+    [4e+200, 2.8284271247461903, 1.414213562373095e+300]
+    """
+    mantissa, exponent, zero = _scaled_product_array(coefficient, factors)
+    odd = (exponent % 2).astype(bool)
+    mantissa = np.where(odd, 2.0 * mantissa, mantissa)
+    exponent = exponent - odd
+    return np.where(zero, 0.0, _ldexp(np.sqrt(mantissa), exponent // 2))
+
+
+class WideArray:
+    """:class:`~dyncalc.physics.numerics.Wide` elementwise: arrays ``m`` (the mantissas, in
+    [0.5, 1) or 0) and ``e`` (int64 binary exponents), ``value = m * 2**e``.
+
+    Every operation is Wide's, on arrays: ``np.frexp`` for ``math.frexp``, the mantissas
+    multiplied, divided or (aligned by ``np.ldexp`` to the larger exponent) added with one
+    float rounding, the exponents added exactly, the zero rules of ``Wide.__add__`` (a zero
+    term returns the other one unchanged) and of its constructor (zero has exponent 0). So an
+    expression written with WideArray operands in the order the scalar formula is written
+    gives, element by element, the scalar result's bits (also for the ``inf`` and ``nan`` that
+    a zero divisor makes, where the scalar raises). A float or a float array operand is
+    converted as ``Wide(x)`` is.
+
+    >>> w = (WideArray(np.array([1e200])) * 1e200 + WideArray(np.array([1e300])) * 1e100)
+    >>> (w / 1e300).to_float().tolist()
+    [2e+100]
+    """
+
+    __slots__ = ("m", "e")
+    __array_ufunc__ = None      # ``array * WideArray`` defers to WideArray.__rmul__, as Wide
+
+    def __init__(self, value=0.0, exponent=0):
+        m, e = np.frexp(np.asarray(value, dtype=float))
+        self.m = m
+        self.e = np.where(m != 0.0, e.astype(np.int64) + exponent, 0)
+
+    @staticmethod
+    def _of(other) -> "WideArray":
+        return other if isinstance(other, WideArray) else WideArray(other)
+
+    def __mul__(self, other) -> "WideArray":
+        other = self._of(other)
+        return WideArray(self.m * other.m, self.e + other.e)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other) -> "WideArray":
+        other = self._of(other)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return WideArray(self.m / other.m, self.e - other.e)
+
+    def __add__(self, other) -> "WideArray":
+        other = self._of(other)
+        top = np.maximum(self.e, other.e)
+        total = WideArray(_ldexp(self.m, self.e - top) + _ldexp(other.m, other.e - top), top)
+        keep_self = other.m == 0.0
+        keep_other = (self.m == 0.0) & ~keep_self
+        result = WideArray.__new__(WideArray)
+        result.m = np.where(keep_self, self.m, np.where(keep_other, other.m, total.m))
+        result.e = np.where(keep_self, self.e, np.where(keep_other, other.e, total.e))
+        return result
+
+    __radd__ = __add__
+
+    def sqrt(self) -> "WideArray":
+        odd = (self.e % 2).astype(bool)
+        with np.errstate(invalid="ignore"):
+            root = np.sqrt(np.where(odd, 2.0 * self.m, self.m))
+        return WideArray(root, (self.e - odd) // 2)
+
+    def to_float(self):
+        """``float(Wide)`` elementwise: ``m * 2**e``, ``inf`` beyond float64."""
+        return _ldexp(self.m, self.e)
+
+
+# --- sums, products and norms, for the spring, damping and frame kernels ---------------------
 
 def ldexp_array(m, e):
     """``m * 2**e`` elementwise as ``math.ldexp`` gives it (``inf`` where that raises
@@ -36,19 +226,10 @@ def two_sum_array(a, b):
     return s, (a - (s - back)) + (b - back)
 
 
-def _split(a):
-    c = 134217729.0 * a
-    hi = c - (c - a)
-    return hi, a - hi
-
-
 def two_product_array(a, b):
     """``(p, e)``, ``p = fl(a b)``, ``a b = p + e`` exactly: the twin of
     :func:`dyncalc.physics.numerics.two_product` (Dekker; the same range caveats)."""
-    p = a * b
-    ah, al = _split(a)
-    bh, bl = _split(b)
-    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+    return _two_product(a, b)
 
 
 def fsum_rows(terms):
@@ -108,44 +289,6 @@ def fsum_rows(terms):
         x = hi + y
         hi = np.where(same & (y == x - hi), x, hi)
     return hi + 0.0, ok
-
-
-class WideArray:
-    """Arrays of numbers ``m * 2**e`` with unbounded exponents: the twin of
-    :class:`dyncalc.physics.numerics.Wide` (products, quotients and square roots round the
-    mantissa exactly as it does; ``float(Wide)`` is :meth:`value`).
-
-    >>> a = WideArray(np.array([1e300, 2.0]))
-    >>> (a * a / WideArray(np.array([1e300, 4.0]))).value().tolist()
-    [1e+300, 1.0]
-    """
-
-    __slots__ = ("m", "e")
-
-    def __init__(self, value, exponent=0):
-        m, e = np.frexp(np.asarray(value, dtype=float))
-        self.m = m
-        self.e = np.where(m != 0.0, e.astype(np.int64) + exponent, 0)
-
-    def __mul__(self, other):
-        other = other if isinstance(other, WideArray) else WideArray(other)
-        return WideArray(self.m * other.m, self.e + other.e)
-
-    def __truediv__(self, other):
-        other = other if isinstance(other, WideArray) else WideArray(other)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return WideArray(self.m / other.m, self.e - other.e)
-
-    def sqrt(self):
-        odd = (self.e % 2) != 0
-        m = np.where(odd, 2.0 * self.m, self.m)
-        e = np.where(odd, self.e - 1, self.e)
-        with np.errstate(invalid="ignore"):
-            return WideArray(np.sqrt(m), e // 2)
-
-    def value(self):
-        """The floats (``inf`` beyond float64, as ``float(Wide)``)."""
-        return ldexp_array(self.m, self.e)
 
 
 def _dl_split(x):

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
+from ..lazy import numpy as np
 from ..units import (ACCELERATION, ANGLE, INERTIA, LENGTH, MASS, STIFFNESS,
                      TORSIONAL_STIFFNESS)
 from .face import check_units, magnitude
@@ -20,6 +21,7 @@ from .numerics import (HALF_TURN, PI_HI, PI_LO, SERIES_MAX_TERMS, UNIT_ROUNDOFF,
                        root_monomial, sqrt_ratio)
 from .columns import Columns, column_kernel
 from .numerics import finite_nonzero, sqrt_ratio_array
+from .numerics_arrays import monomial_array, root_monomial_array
 from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["mass_spring", "torsional", "pendulum", "physical_pendulum", "large_amplitude",
@@ -425,3 +427,39 @@ def physical_pendulum(m, a, g, J=None, J_A=None, amplitude=None, method: str = "
 
     out.values["J_A"] = Q_(ja, "kg*m**2")
     return out
+
+
+@column_kernel(physical_pendulum)
+def _physical_pendulum_columns(m, a, g, J=None, J_A=None, amplitude=None, method: str = "auto",
+                               rtol: float = 1e-9):
+    """:func:`physical_pendulum` on columns, small swings only: ``m`` in kg, ``a`` in m, ``g``
+    in m/s^2, ``J`` or ``J_A`` in kg*m^2 (``J_A`` wins where both are given, as in the
+    one-off); ``amplitude`` None and method ``auto`` or ``small-angle``.
+
+    ``m a^2`` and ``omega_0`` are the one-off's :func:`~dyncalc.physics.numerics.monomial`
+    and :func:`~dyncalc.physics.numerics.root_monomial` on arrays
+    (:func:`~dyncalc.physics.numerics_arrays.monomial_array`, bit for bit). Rows the one-off
+    refuses (``J_A < m a^2``, ``J + m a^2`` beyond float64) and rows with a zero or infinite
+    result are not exact.
+
+    With an amplitude the kernel returns ``None`` (every row to the one-off): the one-off
+    forms ``cos(theta0/2)`` in the unit the amplitude was typed in
+    (:func:`~dyncalc.physics.numerics.half_complement_sin`: ``180 - theta`` in degrees), so
+    from the radians a kernel receives its bits (and the ``auto`` choice between small-angle
+    and elliptic that they decide) differ for rows typed in degrees.
+    """
+    if amplitude is not None or method not in ("auto", "small-angle"):
+        return None
+    if J is None and J_A is None:
+        return None
+    steiner = monomial_array(1.0, [(m, 1), (a, 2)])
+    if J_A is not None:
+        ja = np.asarray(J_A, dtype=float)
+        possible = ~(ja < steiner * (1 - 1e-12))
+    else:
+        ja = np.asarray(J, dtype=float) + steiner
+        possible = True
+    omega0 = root_monomial_array(1.0, [(m, 1), (g, 1), (a, 1), (ja, -1)])
+    values = periodic_arrays(omega0)
+    values["J_A"] = ja
+    return Columns(values, exact=possible & finite_nonzero(values))

@@ -22,9 +22,12 @@ import math
 
 from ..errors import PhysicsError
 from ..units import ACCELERATION, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
+from ..lazy import numpy as np
+from .columns import Columns, column_kernel
 from .face import check_units, magnitude
-from .numerics import Wide
-from .outcome import Outcome, periodic
+from .numerics import Wide, finite_nonzero
+from .numerics_arrays import WideArray
+from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["rolling_disk_spring", "rolling_in_track", "drum_block_spring", "board_on_drums",
            "clock_pendulum", "pulley_block_spring", "disk_torsion_offset_mass",
@@ -55,6 +58,22 @@ def _outcome(omega_squared: Wide, **extra) -> Outcome:
         for name, (value, unit) in extra.items():
             values[name] = Q_(float(value), unit)
     return Outcome(values)
+
+
+def _kappa_allowed(kappa):
+    """The rows whose ``kappa`` :func:`_check_kappa` accepts (finite, >= 0)."""
+    kappa = np.asarray(kappa, dtype=float)
+    return (kappa >= 0.0) & ~np.isinf(kappa)
+
+
+def _columns(omega_squared: WideArray, allowed=True, **extra) -> Columns:
+    """:func:`_outcome` on columns: ``omega = sqrt(omega^2)`` as :class:`Wide` takes it, the
+    extra values (WideArray) as floats; rows the one-off refuses (``allowed`` False) or with a
+    zero or infinite value (the one-off warns) are not exact."""
+    values = periodic_arrays(omega_squared.sqrt().to_float())
+    for name, value in extra.items():
+        values[name] = value.to_float()
+    return Columns(values, exact=allowed & finite_nonzero(values))
 
 
 @check_units(k=STIFFNESS, m=MASS)
@@ -94,6 +113,14 @@ def rolling_disk_spring(k, m, kappa: float = 0.5) -> Outcome:
     kappa = _check_kappa(kappa)
     mass = _si(m, "kg")
     return _outcome(_si(k, "N/m") / (mass + kappa * mass))
+
+
+@column_kernel(rolling_disk_spring)
+def _rolling_disk_spring_columns(k, m, kappa=0.5) -> Columns:
+    """:func:`rolling_disk_spring` on columns: ``k`` in N/m, ``m`` in kg, ``kappa`` an array;
+    the one-off's :class:`Wide` steps on :class:`WideArray` (bit for bit)."""
+    mass = WideArray(m)
+    return _columns(WideArray(k) / (mass + kappa * mass), _kappa_allowed(kappa))
 
 
 @check_units(R=LENGTH, r=LENGTH, g=ACCELERATION)
@@ -147,6 +174,25 @@ def rolling_in_track(R, r, g, kappa: float = 0.5) -> Outcome:
     return _outcome(_si(g, "m/s**2") / (length + kappa * length))
 
 
+@column_kernel(rolling_in_track)
+def _rolling_in_track_columns(R, r, g, kappa=0.5, *, R_in_metres: bool = False):
+    """:func:`rolling_in_track` on columns: ``R``, ``r`` in m, ``g`` in m/s^2, ``kappa`` an
+    array.
+
+    The one-off forms the gap ``R - r`` in the unit ``R`` was typed in (then converts it to
+    metres), which from the metres a kernel receives gives other bits for ``R`` typed in mm,
+    cm, ft, ... (tests/test_columns_rigid.py shows such rows). So the kernel computes only when
+    the caller says that every row's ``R`` was typed in metres (``R_in_metres=True``; ``r`` may
+    be in any unit: the one-off converts it to R's unit, metres, as the caller did), and
+    otherwise returns ``None`` (every row to the one-off). Rows with ``R <= r`` are not exact.
+    """
+    if not R_in_metres:
+        return None
+    gap = np.asarray(R, dtype=float) - np.asarray(r, dtype=float)
+    length = WideArray(gap)
+    return _columns(WideArray(g) / (length + kappa * length), _kappa_allowed(kappa) & (gap > 0.0))
+
+
 @check_units(k=STIFFNESS, m=MASS, M=MASS)
 def drum_block_spring(k, m, M) -> Outcome:
     """A block on a rope wound on a drum (a homogeneous disk), held by a spring.
@@ -179,6 +225,12 @@ def drum_block_spring(k, m, M) -> Outcome:
     14.907119849999
     """
     return _outcome(2.0 * _si(k, "N/m") / (_si(M, "kg") + 2.0 * _si(m, "kg")))
+
+
+@column_kernel(drum_block_spring)
+def _drum_block_spring_columns(k, m, M) -> Columns:
+    """:func:`drum_block_spring` on columns: ``k`` in N/m, ``m``, ``M`` in kg (bit for bit)."""
+    return _columns(2.0 * WideArray(k) / (WideArray(M) + 2.0 * WideArray(m)))
 
 
 @check_units(a=LENGTH, g=ACCELERATION)
@@ -239,6 +291,17 @@ def board_on_drums(mu: float, a, g, sense: str = "inward") -> Outcome:
     return _outcome(rate_squared)
 
 
+@column_kernel(board_on_drums)
+def _board_on_drums_columns(mu, a, g, sense: str = "inward"):
+    """:func:`board_on_drums` on columns: ``mu`` an array, ``a`` in m, ``g`` in m/s^2, one
+    ``sense`` for the call; ``None`` for any sense but ``inward`` (the one-off refuses every
+    row). Rows with ``mu <= 0`` (refused) are not exact."""
+    if sense != "inward":
+        return None
+    mu = np.asarray(mu, dtype=float)
+    return _columns(2.0 * WideArray(mu) * WideArray(g) / WideArray(a), mu > 0.0)
+
+
 @check_units(m=MASS, l=LENGTH, M=MASS, r=LENGTH, a=LENGTH, g=ACCELERATION)
 def clock_pendulum(m, l, M, r, a, g) -> Outcome:
     """A clock pendulum: a uniform rod pivoted at one end carrying a disk on it.
@@ -285,6 +348,16 @@ def clock_pendulum(m, l, M, r, a, g) -> Outcome:
     return _outcome(moment / (2.0 * inertia), J_A=(inertia, "kg*m**2"))
 
 
+@column_kernel(clock_pendulum)
+def _clock_pendulum_columns(m, l, M, r, a, g) -> Columns:
+    """:func:`clock_pendulum` on columns (SI: kg, m, m/s^2), with ``J_A`` (bit for bit)."""
+    m_, l_, M_ = WideArray(m), WideArray(l), WideArray(M)
+    r_, a_ = WideArray(r), WideArray(a)
+    inertia = m_ * l_ * l_ / 3.0 + M_ * (r_ * r_ + 2.0 * a_ * a_) / 2.0
+    moment = (m_ * l_ + 2.0 * M_ * a_) * WideArray(g)
+    return _columns(moment / (2.0 * inertia), J_A=inertia)
+
+
 @check_units(k=STIFFNESS, m=MASS, M=MASS)
 def pulley_block_spring(k, m, M) -> Outcome:
     """A loose pulley (a homogeneous disk) held by a spring, with a block moving twice as far.
@@ -318,6 +391,12 @@ def pulley_block_spring(k, m, M) -> Outcome:
     7.453559924999
     """
     return _outcome(_si(k, "N/m") / (4.0 * _si(m, "kg") + 1.5 * _si(M, "kg")))
+
+
+@column_kernel(pulley_block_spring)
+def _pulley_block_spring_columns(k, m, M) -> Columns:
+    """:func:`pulley_block_spring` on columns: ``k`` in N/m, ``m``, ``M`` in kg."""
+    return _columns(WideArray(k) / (4.0 * WideArray(m) + 1.5 * WideArray(M)))
 
 
 @check_units(M=MASS, R=LENGTH, m=MASS, r=LENGTH, a=LENGTH, kt=TORSIONAL_STIFFNESS, g=ACCELERATION)
@@ -378,6 +457,17 @@ def disk_torsion_offset_mass(M, R, m, r, a, kt, g) -> Outcome:
     return _outcome(stiffness / inertia, J_A=(inertia, "kg*m**2"))
 
 
+@column_kernel(disk_torsion_offset_mass)
+def _disk_torsion_offset_mass_columns(M, R, m, r, a, kt, g) -> Columns:
+    """:func:`disk_torsion_offset_mass` on columns (SI: kg, m, N*m/rad, m/s^2), with ``J_A``;
+    rows with ``kt = 0`` and ``a = 0`` (refused) are not exact."""
+    M_, R_, m_ = WideArray(M), WideArray(R), WideArray(m)
+    r_, a_, kt_ = WideArray(r), WideArray(a), WideArray(kt)
+    stiffness = kt_ + m_ * WideArray(g) * a_
+    inertia = M_ * R_ * R_ / 2.0 + m_ * (r_ * r_ / 2.0 + a_ * a_)
+    return _columns(stiffness / inertia, stiffness.m != 0.0, J_A=inertia)
+
+
 @check_units(k=STIFFNESS, m=MASS, M=MASS)
 def wheel_on_moving_beam(k, m, M, kappa: float = 0.5) -> Outcome:
     """A wheel held by a spring, rolling on a beam that runs freely on rollers.
@@ -429,6 +519,16 @@ def wheel_on_moving_beam(k, m, M, kappa: float = 0.5) -> Outcome:
     return out
 
 
+@column_kernel(wheel_on_moving_beam)
+def _wheel_on_moving_beam_columns(k, m, M, kappa=0.5) -> Columns:
+    """:func:`wheel_on_moving_beam` on columns: ``k`` in N/m, ``m``, ``M`` in kg, ``kappa`` an
+    array (bit for bit)."""
+    m_, M_ = WideArray(m), WideArray(M)
+    coupled = kappa * m_ + M_
+    return _columns(WideArray(k) * coupled / (m_ * (coupled + kappa * M_)),
+                    _kappa_allowed(kappa))
+
+
 @check_units(l=LENGTH, g=ACCELERATION)
 def angled_member(l, g) -> Outcome:
     """An L-shaped uniform bar swinging in its plane about the free end of its long arm.
@@ -463,3 +563,11 @@ def angled_member(l, g) -> Outcome:
     """
     ratio = (_si(g, "m/s**2") / _si(l, "m")).sqrt()
     return Outcome(periodic(float(ANGLED_MEMBER_FACTOR * ratio)))
+
+
+@column_kernel(angled_member)
+def _angled_member_columns(l, g) -> Columns:
+    """:func:`angled_member` on columns: ``l`` in m, ``g`` in m/s^2 (bit for bit)."""
+    ratio = (WideArray(g) / WideArray(l)).sqrt()
+    values = periodic_arrays((ANGLED_MEMBER_FACTOR * ratio).to_float())
+    return Columns(values, exact=finite_nonzero(values))

@@ -1,0 +1,220 @@
+"""The vectorised path of the commands other than ``natural-frequency``: whole chunks of rows
+through the command's column adapter (``Command.columns``: SI arrays in, a
+:class:`~dyncalc.physics.columns.Columns` out).
+
+The first row of each block is also computed by the one-off (a *probe*): it gives the order
+and the text of the inputs the JSON lines show (defaults such as ``g`` included) and the
+dimensions of the results, and the block is left to the generic path unless the probe's
+results, model and method are the adapter's own, bit for bit.
+"""
+from __future__ import annotations
+
+import json
+import re
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+from .columns import _LITERAL_CELL, _plain_floats, _read_column, _unit_info
+from .fast import FastBlock, _input_texts
+from .header import Column, with_header_unit
+
+#: A vector cell the vectorised path reads: three plain numbers, comma-separated, no unit.
+_VECTOR_RE = re.compile(rf"[ \t]*({_LITERAL_CELL})[ \t]*,[ \t]*({_LITERAL_CELL})[ \t]*,"
+                        rf"[ \t]*({_LITERAL_CELL})[ \t]*")
+
+
+class _Param:
+    """What :func:`~dyncalc.batch.columns._read_column` needs of a parameter: its dimension
+    (the command checks signs and ranges itself: its adapter marks such rows not exact)."""
+
+    __slots__ = ("name", "dim", "constraint")
+
+    def __init__(self, name: str, dim):
+        self.name, self.dim, self.constraint = name, dim, None
+
+
+def _command_fast(spec, columns: list[Column], table, want_json: bool,
+                  cache: dict) -> list[FastBlock]:
+    """The rows of this chunk the command's adapter computes, as blocks (one per set of
+    columns given); every other row is left to the generic path."""
+    if not table or len(columns) > 62:
+        return []
+    n = len(table[0])
+    cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+    signature = np.zeros(n, dtype=np.int64)
+    for bit, col in enumerate(columns):
+        present = np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
+        signature |= present.astype(np.int64) << bit
+    blocks = []
+    for sig in sorted(set(signature.tolist())):
+        given = [col for bit, col in enumerate(columns) if (sig >> bit) & 1]
+        if not given:
+            continue
+        rows = np.flatnonzero(signature == sig)
+        block = _block(spec, given, rows, cells, want_json, cache)
+        if block is not None:
+            blocks.append(block)
+    return blocks
+
+
+def _read(spec, col: Column, column: list[str], cache: dict):
+    """``(ok, SI values, shown values, unit JSON, kind)`` of one column of a block, or
+    ``None`` where the column cannot be read here (the generic path reads it)."""
+    param = spec.parameter(col.key)
+    if param is None:
+        return None
+    if param.kind == "choice":
+        if col.unit:
+            return None
+        words = np.array(column, dtype=object)
+        ok = np.fromiter((w in param.choices for w in column), dtype=bool, count=len(column))
+        return ok, words, None, None, "word"
+    if param.dim is None:
+        return None
+    if param.kind == "quantity" and not any("," in cell for cell in column):
+        read = _read_column(column, col.unit, _Param(param.name, param.dim), spec.strict,
+                            cache, _plain_floats(column))
+        return read.ok, read.si, read, None, "number"
+    info = _unit_info(col.unit, param.dim, spec.strict, cache)
+    if info is None:
+        return None
+    typed = np.zeros((len(column), 3))
+    ok = np.zeros(len(column), dtype=bool)
+    for i, cell in enumerate(column):
+        m = _VECTOR_RE.fullmatch(cell)
+        if m is not None:
+            typed[i] = [float(x) for x in m.groups()]
+            ok[i] = True
+    from ..units import registry
+
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        si = np.asarray(registry().Quantity(typed, info.units).to(info.target).magnitude,
+                        dtype=float)
+    ok &= np.isfinite(typed).all(axis=1) & np.isfinite(si).all(axis=1)
+    return ok, si, (typed if info.typed else si), info, "vector"
+
+
+def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
+           cache: dict) -> FastBlock | None:
+    good = np.ones(len(rows), dtype=bool)
+    arrays: dict[str, Any] = {}
+    reads = {}
+    row_list = rows.tolist()
+    for col in given:
+        column = [cells[col.key][i] for i in row_list]
+        read = _read(spec, col, column, cache)
+        if read is None:
+            return None
+        good &= read[0]
+        arrays[col.key] = read[1]
+        reads[col.key] = (read, column)
+    if not good.any():
+        return None
+    with np.errstate(all="ignore"):
+        out = spec.adapter(arrays, spec.settings)
+    if out is None:
+        return None
+    good &= np.asarray(out.exact, dtype=bool)
+    if not good.any():
+        return None
+    probe = _probe(spec, given, cells, int(rows[np.argmax(good)]), out,
+                   {name: array[int(np.argmax(good))] for name, array in out.values.items()})
+    if probe is None:
+        return None
+    keep = np.flatnonzero(good)
+    values = {name: array[keep] for name, array in out.values.items()}
+    dims = {name: entry.dim for name, entry in probe.results.items()}
+    head = texts = None
+    if want_json:
+        head = (f'"schema": "dyncalc/2", "command": {json.dumps(spec.command)}, '
+                f'"scene": null, "model": {json.dumps(out.model)}, '
+                f'"method": {json.dumps(out.method)}')
+        texts = _input_texts(_inputs(spec, given, reads, probe), keep, {})
+    extra = "{}" if out.error_estimate is None else json.dumps(
+        {"error_estimate": out.error_estimate})
+    return FastBlock(rows[keep], values, dims, head, texts, extra)
+
+
+def _probe(spec, given, cells, row: int, out, values: dict):
+    """The one-off Result of ``row``, or ``None`` where it is not the adapter's to the bit
+    (then the whole block takes the generic path)."""
+    texts = {col.key: with_header_unit(cells[col.key][row], col.unit) for col in given}
+    try:
+        result = spec.compute(texts, {col.key: col.name for col in given})
+    except InputError:
+        return None
+    if (result.warnings or result.model != out.model or result.method != out.method
+            or list(result.results) != list(values)
+            or result.extra.get("error_estimate") != out.error_estimate
+            or set(result.extra) - {"error_estimate"}):
+        return None
+    for name, entry in result.results.items():
+        mine = values[name]
+        if entry.uncertainty is not None or not _same(entry.si, mine):
+            return None
+    return result
+
+
+def _same(theirs, mine) -> bool:
+    """Equal to the bit (a word, a number or a vector)."""
+    if isinstance(theirs, str) or isinstance(mine, str):
+        return theirs == mine
+    a = np.asarray(theirs, dtype=float)
+    b = np.asarray(mine, dtype=float)
+    return a.shape == b.shape and bool((a.view(np.int64) == b.view(np.int64)).all())
+
+
+def _inputs(spec, given, reads, probe) -> list[tuple]:
+    """The inputs of the JSON lines in the one-off's order: a column given (templated per row)
+    or an input the one-off adds (a default such as ``g``: the same text on every row)."""
+    from ..result.encode import _json_inputs
+
+    by_name = spec.input_names([col.key for col in given])
+    columns = {by_name[col.key]: col for col in given}
+    items = []
+    for name, entry in probe.inputs.items():
+        col = columns.get(name)
+        if col is None:
+            items.append((name, json.dumps(_json_inputs({name: entry}))[1:-1], None, None,
+                          False, None))
+            continue
+        (ok, _si, shown, info, kind), column = reads[col.key]
+        if kind == "number":
+            items.append((name, shown, column, col.unit, False, None))
+        elif kind == "word":
+            items.append((name, _Words(column), None, None, False, None))
+        else:
+            items.append((name, _Vectors(shown, info, column, col.unit), None, None, False,
+                          None))
+    return items
+
+
+class _Words:
+    """A column of words as JSON input entries (``{"value": "hoop", "unit": "", ...}``)."""
+
+    def __init__(self, column):
+        self.column = column
+
+    def texts(self, name: str, keep) -> list[str]:
+        key = json.dumps(name)
+        return [f'{key}: {{"value": {json.dumps(w)}, "unit": "", "text": {json.dumps(w)}}}'
+                for w in (self.column[i] for i in keep.tolist())]
+
+
+class _Vectors:
+    """A column of vectors as JSON input entries, each shown in the unit typed."""
+
+    def __init__(self, shown, info, column, header_unit):
+        self.shown, self.info, self.column, self.header_unit = shown, info, column, header_unit
+
+    def texts(self, name: str, keep) -> list[str]:
+        key = json.dumps(name)
+        unit, assumed = self.info.unit_json
+        out = []
+        for i in keep.tolist():
+            typed = json.dumps(with_header_unit(self.column[i], self.header_unit))
+            out.append(f'{key}: {{"value": {json.dumps(self.shown[i].tolist())}, "unit": '
+                       f'{unit}, "text": {typed}{assumed}}}')
+        return out

@@ -1,0 +1,176 @@
+"""Batch through the column kernels equals batch through the one-off, scene by scene.
+
+For every scene of the catalog a file of random rows (ordinary and extreme magnitudes, units
+typed in the cells or in the header, parameters left to their defaults, words for the
+choices, refused values) runs twice: on the vectorised path and on the generic (one-off) path.
+CSV and JSON lines must be identical byte for byte, and so must stderr and the exit status. A
+scene whose physics has a column kernel must also have most ordinary rows on the vectorised
+path, so a kernel that marks nothing exact fails here.
+"""
+from __future__ import annotations
+
+import io
+import random
+
+import pytest
+
+from dyncalc import batch
+from dyncalc.batch import fast as fast_path
+from dyncalc.batch.fast_commands import _command_fast
+from dyncalc.commands.natural_frequency import STANDARD
+from dyncalc.physics.columns import Columns, kernel_of
+from dyncalc.scenes import catalog, get_scene
+
+SCENES = list(catalog())
+
+
+def _cell(rng: random.Random, param, ordinary: bool) -> str:
+    """A random cell for ``param``: a word for a choice, else a number, perhaps with its SI
+    unit written in the cell (the header carries none)."""
+    if param.choices is not None:
+        return rng.choice(list(param.choices))
+    if param.name == "zeta":
+        return rng.choice(["", repr(rng.uniform(0, 0.99)), "0", "1.5"])
+    if param.name == "amplitude":
+        return rng.choice(["", f"{rng.uniform(0, 170):.6g} deg", repr(rng.uniform(0, 3.0))])
+    if param.name in ("mu", "kappa"):
+        return repr(rng.uniform(0.05, 0.9))
+    if ordinary:
+        number = rng.uniform(0.2, 5.0) * 10.0 ** rng.randint(-2, 2)
+    else:
+        number = rng.choice([1e-300, 1e300, 0.0, -1.0, 5e-324, 1e-30, 1e30,
+                             rng.uniform(1, 9) * 10.0 ** rng.randint(-200, 200)])
+    text = repr(number)
+    unit = param.dim.si if param.dim is not None else ""
+    if unit and rng.random() < 0.5:
+        text += " " + unit
+    return text
+
+
+def _table(scene, rng: random.Random, n: int, ordinary: bool) -> str:
+    params = [p for p in scene.params if p.default is None or rng.random() < 0.5]
+    lines = [",".join(p.name for p in params)]
+    for _ in range(n):
+        cells = []
+        for p in params:
+            cell = _cell(rng, p, ordinary)
+            if p.default is not None and rng.random() < 0.3:
+                cell = ""  # left to its default on this row
+            cells.append(f'"{cell}"' if "," in cell else cell)
+        lines.append(",".join(cells))
+    return "\n".join(lines) + "\n"
+
+
+def _run(scene: str, path, fast: bool, as_json: bool):
+    out, err = io.StringIO(), io.StringIO()
+    code = batch.run_batch(batch.NaturalFrequencyRows(STANDARD, scene=scene), str(path),
+                           as_json=as_json, on_error="skip", out=out, err=err, fast=fast)
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("name", SCENES)
+@pytest.mark.parametrize("ordinary", [True, False], ids=["ordinary", "extreme"])
+def test_vectorised_rows_equal_the_one_off_rows(tmp_path, name, ordinary):
+    rng = random.Random(f"{name}-{ordinary}")
+    path = tmp_path / "rows.csv"
+    path.write_text(_table(get_scene(name), rng, 60, ordinary))
+    for as_json in (False, True):
+        fast, slow = _run(name, path, True, as_json), _run(name, path, False, as_json)
+        assert fast[0] == slow[0]
+        assert fast[2] == slow[2]
+        assert fast[1].splitlines() == slow[1].splitlines()
+
+
+#: Scenes with a kernel that leaves ordinary rows to the one-off path, and why.
+ONE_OFF_ONLY = {
+    # the one-off subtracts r from R in the unit R was typed in; the kernel takes metres
+    "rolling-in-track": "R - r in the unit typed",
+}
+
+
+@pytest.mark.parametrize("name", [n for n in SCENES if kernel_of(get_scene(n).compute)
+                                  and n not in ONE_OFF_ONLY])
+def test_ordinary_rows_take_the_vectorised_path(name):
+    """Rows giving every parameter at ordinary magnitudes (no amplitude, no zeta; a choice at
+    its default word) are mostly computed by the scene's kernel."""
+    scene = get_scene(name)
+    rng = random.Random(name)
+    params = [p for p in scene.params if p.name not in ("zeta", "amplitude")
+              and not (p.choices is None and p.name == "kappa")
+              and not any(p.name in group[1:] for group in scene.one_of)]
+    rows = [[p.default if p.choices is not None and p.default else _cell(rng, p, True)
+             for p in params] for _ in range(200)]
+    table = [list(column) for column in zip(*rows)]
+    columns = [batch.Column(i, p.name, p.name, "", p.name) for i, p in enumerate(params)]
+    spec = batch.NaturalFrequencyRows(STANDARD, scene=name)
+    blocks = fast_path._natural_frequency_fast(spec, columns, table, True, {})
+    covered = sum(len(block.rows) for block in blocks)
+    assert covered >= 0.5 * len(rows), f"{name}: {covered} of {len(rows)} rows vectorised"
+
+
+def _coriolis_spec(adapter):
+    spec = batch.CoriolisRows()
+    spec.adapter, spec.fast = adapter, _command_fast
+    return spec
+
+
+def _fake_coriolis(given, settings):
+    """a_c = 2 omega x v_r for small whole-number vectors, where every product is exact."""
+    import numpy as np
+
+    if set(given) != {"omega", "vr"}:
+        return None
+    a_c = 2.0 * np.cross(given["omega"], given["vr"])
+    size = np.sqrt((a_c * a_c).sum(axis=1))
+    exact = (np.abs(given["omega"]) < 10).all(axis=1) & (np.abs(given["vr"]) < 10).all(axis=1)
+    exact &= (size == np.round(size)) & (size > 0)
+    return Columns({"a_c": a_c, "a_c_mag": size}, exact, model="vectors")
+
+
+def _command_run(spec, path, fast, as_json):
+    out, err = io.StringIO(), io.StringIO()
+    code = batch.run_batch(spec, str(path), as_json=as_json, on_error="skip", out=out,
+                           err=err, fast=fast)
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("header", ["omega,vr", "omega [rpm],vr", "omega,vr [km/h]"])
+@pytest.mark.parametrize("adapter", [_fake_coriolis, lambda given, settings: None])
+def test_command_blocks_equal_the_one_off_rows(tmp_path, adapter, header):
+    """The vectorised path of a record command (vectors read from cells, a header unit, cells
+    refused, rows the adapter does not mark exact) writes what the one-off path writes."""
+    rows = ['"0,0,2","1,0,0"', '"0,0,1","0,3,0"', '"0,0,2","4,0,0"', '"0,0,x","1,0,0"',
+            '"0,0,2",', '"0,0,3","1 m/s,0,0"', '"0,0,50","1,0,0"', '"0,0,2","0,0,1"',
+            '"0,0,1e400","1,0,0"', '" 0 , 0 , 2 ","-1,0,0"']
+    path = tmp_path / "rows.csv"
+    path.write_text(header + "\n" + "\n".join(rows) + "\n")
+    spec = _coriolis_spec(adapter)
+    for as_json in (False, True):
+        fast = _command_run(spec, path, True, as_json)
+        slow = _command_run(spec, path, False, as_json)
+        assert fast == slow
+    if adapter is _fake_coriolis and header == "omega,vr":
+        table = [[r[1:r.index('",')] for r in rows],
+                 [r[r.index('",') + 2:].strip('"') for r in rows]]
+        columns = [batch.Column(0, "omega", "omega", "", "omega"),
+                   batch.Column(1, "vr", "vr", "", "vr")]
+        blocks = _command_fast(spec, columns, table, True, {})
+        assert [b.rows.tolist() for b in blocks] == [[0, 1, 2, 9]]  # the others: generic
+
+
+def test_a_wrong_adapter_is_caught_by_the_probe(tmp_path):
+    """An adapter whose numbers are not the one-off's sends its block to the generic path."""
+    def wrong(given, settings):
+        out = _fake_coriolis(given, settings)
+        out.values["a_c_mag"] = out.values["a_c_mag"] * 2.0
+        return out
+
+    path = tmp_path / "rows.csv"
+    path.write_text('omega,vr\n"0,0,2","1,0,0"\n')
+    spec = _coriolis_spec(wrong)
+    table = [["0,0,2"], ["1,0,0"]]
+    columns = [batch.Column(0, "omega", "omega", "", "omega"),
+               batch.Column(1, "vr", "vr", "", "vr")]
+    assert _command_fast(spec, columns, table, True, {}) == []
+    assert len(_command_fast(_coriolis_spec(_fake_coriolis), columns, table, True, {})) == 1
+    assert _command_run(spec, path, True, True) == _command_run(spec, path, False, True)
