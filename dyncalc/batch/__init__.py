@@ -32,7 +32,12 @@ Two paths give the same numbers:
   is not a plain number with a plain unit, a value out of range, a constraint broken, a
   result that is zero, infinite or needs a warning: every row the kernel does not mark exact)
   goes to the generic path, so refusals and warnings are the one-off's own
-  (tests/test_batch_kernels.py holds the two paths byte-identical for every scene).
+  (tests/test_batch_kernels.py holds the two paths byte-identical for every scene and
+  command). The other commands take the same path through their record's column adapter
+  (:attr:`dyncalc.commands.record.Command.columns`, :mod:`.fast_commands`), block by block
+  of rows that give the same columns, words and typed units; the first row of each block is
+  also computed by the one-off, whose inputs the JSON lines show and whose results must be
+  the adapter's to the bit, or the block takes the generic path.
 
 Rows are read, computed and written in chunks of :data:`CHUNK_ROWS`, so memory stays flat
 however long the file. A bad row is reported on stderr as ``Error: line N: ...`` (its line in
@@ -49,7 +54,7 @@ the run at their line, after the rows before it are written.
 The modules, in the order the data flows: :mod:`.source` opens the file and hands out its
 records a chunk at a time; :mod:`.header` reads the header and a cell's text under its header
 unit; :mod:`.rows` says what each command reads from a row (the generic path); :mod:`.fast`
-computes whole chunks, reading their columns with :mod:`.columns`; :mod:`.write` writes CSV
+and :mod:`.fast_commands` compute whole chunks, reading their columns with :mod:`.columns`; :mod:`.write` writes CSV
 rows (:mod:`.csvlines`) or JSON lines; this module's :func:`run_batch` runs them in turn.
 """
 from __future__ import annotations

@@ -53,10 +53,34 @@ def _command_fast(spec, columns: list[Column], table, want_json: bool,
         if not given:
             continue
         rows = np.flatnonzero(signature == sig)
-        block = _block(spec, given, rows, cells, want_json, cache)
-        if block is not None:
-            blocks.append(block)
+        for subset in _by_words(spec, given, rows, cells):
+            blocks += _blocks(spec, given, subset, cells, want_json, cache)
     return blocks
+
+
+#: The most distinct word combinations (``body``, ``cycles``) a block is split into; beyond,
+#: its rows take the generic path.
+MAX_WORD_GROUPS = 32
+
+
+def _is_word(param) -> bool:
+    return param is not None and (param.kind == "choice"
+                                  or (param.kind == "text" and param.dim is None))
+
+
+def _by_words(spec, given: list[Column], rows: np.ndarray, cells):
+    """The rows split by the texts of their word columns (the one-off reads a word its own
+    way, ``cycles`` 4 as 4.0: each group's probe shows how, for every row of the group)."""
+    keys = [col.key for col in given if _is_word(spec.parameter(col.key))]
+    if not keys:
+        yield rows
+        return
+    groups: dict[tuple, list[int]] = {}
+    for i in rows.tolist():
+        groups.setdefault(tuple(cells[key][i] for key in keys), []).append(i)
+    if len(groups) <= MAX_WORD_GROUPS:
+        for members in groups.values():
+            yield np.asarray(members, dtype=np.intp)
 
 
 def _read(spec, col: Column, column: list[str], cache: dict):
@@ -65,15 +89,22 @@ def _read(spec, col: Column, column: list[str], cache: dict):
     param = spec.parameter(col.key)
     if param is None:
         return None
-    if param.kind == "choice":
+    # a vector is read for a parameter whose record says it takes one (metavar VEC); any
+    # other cell with a comma is not a plain number, so _read_column leaves it alone
+    if _is_word(param):
         if col.unit:
             return None
         words = np.array(column, dtype=object)
-        ok = np.fromiter((w in param.choices for w in column), dtype=bool, count=len(column))
+        if param.kind == "choice":  # (free text is the adapter's to check, as the one-off's)
+            ok = np.fromiter((w in param.choices for w in column), dtype=bool,
+                             count=len(column))
+        else:
+            ok = np.ones(len(column), dtype=bool)
         return ok, words, None, None, "word"
     if param.dim is None:
         return None
-    if param.kind == "quantity" and not any("," in cell for cell in column):
+    if param.kind == "quantity" and (param.metavar != "VEC"
+                                     or not any("," in cell for cell in column)):
         read = _read_column(column, col.unit, _Param(param.name, param.dim), spec.strict,
                             cache, _plain_floats(column))
         return read.ok, read.si, read, None, "number"
@@ -96,6 +127,33 @@ def _read(spec, col: Column, column: list[str], cache: dict):
     return ok, si, (typed if info.typed else si), info, "vector"
 
 
+def _blocks(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
+            cache: dict) -> list[FastBlock]:
+    """The blocks of these rows: one, or one per combination of the units their number
+    cells were typed in (an adapter may compute in the unit typed; it is told one per
+    column)."""
+    good = np.ones(len(rows), dtype=bool)
+    typed = []
+    for col in given:
+        read = _read(spec, col, [cells[col.key][i] for i in rows.tolist()], cache)
+        if read is None:
+            return []
+        good &= read[0]
+        if read[4] == "number":
+            typed.append(read[2].unit_json)
+    groups: dict[tuple, list[int]] = {}
+    for i in np.flatnonzero(good).tolist():
+        groups.setdefault(tuple(units[i] for units in typed), []).append(int(rows[i]))
+    if len(groups) > MAX_WORD_GROUPS:
+        return []
+    if len(groups) == 1:
+        block = _block(spec, given, rows, cells, want_json, cache)
+        return [] if block is None else [block]
+    found = (_block(spec, given, np.asarray(members, dtype=np.intp), cells, want_json, cache)
+             for members in groups.values())
+    return [block for block in found if block is not None]
+
+
 def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
            cache: dict) -> FastBlock | None:
     good = np.ones(len(rows), dtype=bool)
@@ -112,8 +170,12 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
         reads[col.key] = (read, column)
     if not good.any():
         return None
-    with np.errstate(all="ignore"):
-        out = spec.adapter(arrays, spec.settings)
+    settings = {**spec.settings, "units": _typed_units(reads, good)}
+    try:
+        with np.errstate(all="ignore"):
+            out = spec.adapter(arrays, settings)
+    except (ArithmeticError, ValueError, TypeError, IndexError, KeyError):
+        out = None  # an adapter that cannot take these columns: the generic path answers
     if out is None:
         return None
     good &= np.asarray(out.exact, dtype=bool)
@@ -135,6 +197,25 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
     extra = "{}" if out.error_estimate is None else json.dumps(
         {"error_estimate": out.error_estimate})
     return FastBlock(rows[keep], values, dims, head, texts, extra)
+
+
+def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
+    """The unit each number or vector column of a block was typed in (``""``: bare numbers,
+    read as SI), for the adapters whose one-off computes in the unit typed (a spring network
+    adds in its first element's unit); a column whose good cells mix units is left out (the
+    adapter then leaves the block to the generic path)."""
+    units = {}
+    for key, ((_ok, _si, shown, info, kind), _column) in reads.items():
+        if kind == "number":
+            pairs = {shown.unit_json[i] for i in np.flatnonzero(good).tolist()}
+        elif kind == "vector":
+            pairs = {info.unit_json}
+        else:
+            continue
+        if len(pairs) == 1:
+            unit, assumed = pairs.pop()
+            units[key] = "" if assumed else json.loads(unit)
+    return units
 
 
 def _probe(spec, given, cells, row: int, out, values: dict):
@@ -183,24 +264,13 @@ def _inputs(spec, given, reads, probe) -> list[tuple]:
         (ok, _si, shown, info, kind), column = reads[col.key]
         if kind == "number":
             items.append((name, shown, column, col.unit, False, None))
-        elif kind == "word":
-            items.append((name, _Words(column), None, None, False, None))
+        elif kind == "word":  # the same word on every row of the block: the probe's entry
+            items.append((name, json.dumps(_json_inputs({name: entry}))[1:-1], None, None,
+                          False, None))
         else:
             items.append((name, _Vectors(shown, info, column, col.unit), None, None, False,
                           None))
     return items
-
-
-class _Words:
-    """A column of words as JSON input entries (``{"value": "hoop", "unit": "", ...}``)."""
-
-    def __init__(self, column):
-        self.column = column
-
-    def texts(self, name: str, keep) -> list[str]:
-        key = json.dumps(name)
-        return [f'{key}: {{"value": {json.dumps(w)}, "unit": "", "text": {json.dumps(w)}}}'
-                for w in (self.column[i] for i in keep.tolist())]
 
 
 class _Vectors:

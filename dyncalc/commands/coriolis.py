@@ -723,6 +723,88 @@ def _earth(inputs: CoriolisInputs) -> Result:
 
 
 # --------------------------------------------------------------------------------------------
+# Whole columns at once (batch)
+
+
+def columns(given: dict, settings: dict):
+    """The results of a block of batch rows at once, or ``None`` when not vectorised here.
+
+    ``given`` maps the columns the block gives (the record's input names: ``omega``, ``vr``,
+    ``r``, ``alpha``, ``a0``, ``ar``, ``mass``) to SI arrays, ``(n, 3)`` for vectors and
+    ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector form and the
+    magnitudes form are vectorised through the kernel of
+    :func:`~dyncalc.physics.frames.relative_acceleration`, magnitudes by the twin of
+    ``math.hypot`` (:func:`~dyncalc.physics.numerics_arrays.hypot_rows`); the Earth form
+    (``latitude``, ``speed``, ...) and mixed or missing inputs give ``None``. Exact where the
+    one-off gives these values with no warning and no refusal (a term or magnitude beyond
+    float64, an underflow to zero, a negative magnitude).
+    """
+    from ..physics.columns import Columns
+    from ..physics.frames import relative_acceleration
+    from ..physics.numerics_arrays import hypot_rows
+
+    keys = set(given)
+    if ("omega" not in keys or "vr" not in keys
+            or keys - {"omega", "vr", "r", "alpha", "a0", "ar", "mass"}):
+        return None
+    arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
+    vectors = arrays["omega"].ndim == 2
+    shapes = {name: value.ndim for name, value in arrays.items() if name != "mass"}
+    if set(shapes.values()) != {2 if vectors else 1} or arrays.get("mass", np.ones(1)).ndim != 1:
+        return None
+    mass = arrays.get("mass")
+    ok = np.ones(len(arrays["omega"]), dtype=bool)
+    for value in arrays.values():
+        ok &= np.isfinite(value) if value.ndim == 1 else np.all(np.isfinite(value), axis=1)
+    if mass is not None:
+        ok &= mass > 0.0
+
+    def magnitude(vector):
+        value, fine = hypot_rows(vector[:, 0], vector[:, 1], vector[:, 2])
+        nonlocal ok
+        ok &= fine & np.isfinite(value)
+        return value + 0.0
+
+    if vectors:
+        out = relative_acceleration.columns(arrays["omega"], arrays["vr"], r=arrays.get("r"),
+                                            alpha=arrays.get("alpha"), a0=arrays.get("a0"),
+                                            a_r=arrays.get("ar"), m=mass)
+        terms = out.values
+        values = {"a_c": terms["a_c"], "a_c_mag": magnitude(terms["a_c"])}
+        if mass is not None:
+            values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
+        if keys & {"r", "alpha", "a0", "ar"}:
+            for name in ("a_euler", "a_centripetal", "a_transport", "a"):
+                values[name] = terms[name]
+            values["a_mag"] = magnitude(terms["a"])
+        return Columns(values, exact=out.exact & ok, model="vectors")
+    if keys & {"a0", "ar"}:
+        return None
+    for value in arrays.values():
+        ok &= value >= 0.0
+    zero = np.zeros(len(ok))
+
+    def along(axis: int, value):
+        vector = np.zeros((len(ok), 3))
+        vector[:, axis] = value
+        return vector
+
+    r, alpha = arrays.get("r"), arrays.get("alpha")
+    out = relative_acceleration.columns(
+        np.stack([zero, zero, arrays["omega"]], axis=1), along(1, arrays["vr"]),
+        r=None if r is None else along(0, r), alpha=None if alpha is None else along(2, alpha),
+        m=mass)
+    terms = out.values
+    values = {"a_c": magnitude(terms["a_c"])}
+    if mass is not None:
+        values["F_c"] = magnitude(terms["F_c"])
+    if r is not None or alpha is not None:
+        for name in ("a_euler", "a_centripetal", "a_transport"):
+            values[name] = magnitude(terms[name])
+    return Columns(values, exact=out.exact & ok, model="magnitudes (perpendicular vectors)")
+
+
+# --------------------------------------------------------------------------------------------
 # Derivatives for the propagation of uncertainties (exact: the formulas are closed)
 #
 # Only scalars carry an uncertainty (a vector cannot: parse_vector reads none), so the
@@ -907,4 +989,5 @@ COMMAND = Command(
           for name, (dim, _words) in OPTIONS.items()),
     tuple(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
     _run,
+    columns=columns,
 )

@@ -797,6 +797,75 @@ def _from_scene(read_in: SceneTexts) -> Result:
     return result
 
 
+_CYCLES_RE = re.compile(r"\s*[1-9][0-9]{0,14}\s*")
+
+
+def _cycles_column(cycles, n: int):
+    """Whole cycles of each row as floats (NaN where the text is no plain whole number: the
+    one-off reads those, or refuses them)."""
+    if cycles is None:
+        return np.ones(n)
+    cycles = np.asarray(cycles)
+    if cycles.dtype.kind in "fiu":
+        out = cycles.astype(float)
+        return np.where((out >= 1.0) & (out == np.floor(out)) & (out < 2.0 ** 53), out, np.nan)
+    return np.array([float(t) if _CYCLES_RE.fullmatch(str(t)) else np.nan for t in cycles],
+                    dtype=float)
+
+
+def columns(given: dict, settings: dict):
+    """The results of a block of batch rows at once, or ``None`` when not vectorised here.
+
+    ``given`` maps the columns the block gives (``c``, ``k``, ``m``, ``omega``,
+    ``decrement``, ``ratio``, ``cycles``: the record's input names) to float64 SI arrays
+    (``cycles`` may be the cell texts); ``settings`` holds ``scene`` and ``method``. The
+    forms ``c, k, m`` and ``decrement`` or ``ratio`` (with ``cycles``; with ``omega`` or
+    ``k`` and ``m``) are vectorised through the kernels of :mod:`dyncalc.physics.damping`;
+    ``--amplitudes``, a scene, a fit method and any combination the one-off refuses give
+    ``None``. ``ln(ratio)`` is taken with ``math.log`` per row (numpy's log may round
+    otherwise). Exact on rows whose one-off result is underdamped with every value finite and
+    non-zero (no note, no overflow or underflow warning).
+    """
+    from ..physics.columns import Columns
+    from ..physics.damping import damping_from_coefficients, damping_from_decrement
+
+    keys = set(given)
+    if (settings.get("scene") is not None or settings.get("method") not in (None, "auto",
+                                                                              "closed-form")
+            or not keys or keys - {"c", "k", "m", "omega", "decrement", "ratio", "cycles"}
+            or ("k" in keys) != ("m" in keys) or ("omega" in keys and "k" in keys)):
+        return None
+    arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()
+              if name != "cycles"}
+    forms = [f for f in ("c", "decrement", "ratio") if f in keys]
+    if len(forms) != 1 or ("cycles" in keys and forms != ["ratio"]):
+        return None
+    ok = np.ones(len(next(iter(given.values()))), dtype=bool)
+    for value in arrays.values():
+        ok &= np.isfinite(value)
+    if forms == ["c"]:
+        if "k" not in keys or "omega" in keys:
+            return None
+        out = damping_from_coefficients.columns(arrays["c"], arrays["k"], arrays["m"])
+    else:
+        if forms == ["decrement"]:
+            delta = arrays["decrement"]
+        else:
+            ratio = arrays["ratio"]
+            cycles = _cycles_column(given.get("cycles"), len(ratio))
+            ok &= (ratio > 1.0) & np.isfinite(cycles)
+            logs = np.array([math.log(r) if r > 0.0 and math.isfinite(r) else math.nan
+                             for r in ratio.tolist()])
+            with np.errstate(invalid="ignore"):
+                delta = logs / cycles
+        out = damping_from_decrement.columns(delta, omega=arrays.get("omega"),
+                                             k=arrays.get("k"), m=arrays.get("m"))
+    numbers = [v for v in out.values.values() if v.dtype.kind == "f"]
+    for value in numbers:
+        ok &= np.isfinite(value) & (value != 0.0)
+    return Columns(out.values, exact=out.exact & ok, model="linear", method="closed-form")
+
+
 # --- the command record ----------------------------------------------------------------------
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
@@ -858,4 +927,5 @@ COMMAND = Command(
     results_from_kinds(_KINDS),
     _run,
     words="[NAME=QUANTITY]...",
+    columns=columns,
 )

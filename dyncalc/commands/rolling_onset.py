@@ -582,6 +582,67 @@ def _explain(onset, kappa, body_name, mu, g, v0, radius, omega0, incline, sin_b,
                        reference=_REFERENCE, latex=latex, latex_substituted=latex_substituted)
 
 
+# --- whole columns at once (batch) -------------------------------------------------------------
+
+def columns(given: dict, settings: dict):
+    """The results of a block of batch rows at once, or ``None`` when not vectorised here.
+
+    ``given`` maps the columns the block gives (``v0``, ``mu``, ``body`` or ``kappa``,
+    ``radius``, ``omega0``, ``g``, ``incline``: the record's input names) to SI arrays
+    (``body`` a str array); ``settings`` holds ``method`` and, with an ``incline`` column,
+    ``units["incline"]`` (the unit it was typed in; ``""`` for a bare number). The closed form runs through the kernel of
+    :func:`~dyncalc.physics.rolling.rolling_onset` (row by row: its arithmetic is exact
+    rational, see there); ``--method ode``, an incline typed in another unit than radians
+    (its sine is taken in the unit typed) and ``body`` with ``kappa`` give ``None``. Exact
+    where the one-off gives these values with no warning (set down rolling, ``kappa = 0``,
+    ``mu < mu_min``, an underflow or overflow, a reversal) and no refusal.
+    """
+    from ..physics.bodies import KAPPA
+    from ..physics.columns import Columns
+    from ..physics.rolling import rolling_onset
+    from .columns import typed_in_si
+
+    keys = set(given)
+    if (settings.get("method") not in (None, "auto", "closed-form")
+            or not {"v0", "mu"} <= keys or {"body", "kappa"} <= keys
+            or keys - {"v0", "mu", "body", "kappa", "radius", "omega0", "g", "incline"}
+            or ("incline" in keys and not typed_in_si(settings, "incline", "rad"))):
+        return None
+    arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()
+              if name != "body"}
+    n = len(arrays["v0"])
+    ok = np.ones(n, dtype=bool)
+    for value in arrays.values():
+        ok &= np.isfinite(value)
+    if "kappa" in keys:
+        kappa = arrays["kappa"]
+    else:
+        words = np.asarray(given.get("body", np.full(n, DEFAULT_BODY)), dtype=str)
+        kappa = np.array([KAPPA.get(word.strip(), math.nan) for word in words.tolist()])
+        ok &= np.isfinite(kappa)
+    omega0 = arrays.get("omega0")
+    if omega0 is not None and "radius" not in keys:
+        ok &= omega0 == 0.0
+        omega0 = None
+    for name in ("mu", "g", "radius"):
+        if name in arrays:
+            ok &= arrays[name] > 0.0
+    ok &= (arrays["v0"] >= 0.0) & (kappa >= 0.0)
+    v0 = np.where(ok, arrays["v0"], 1.0)
+    out = rolling_onset.columns(v0 + 0.0, arrays["mu"], np.where(ok, kappa, 0.4),
+                                g=arrays.get("g"), r=arrays.get("radius"), omega0=omega0,
+                                incline=arrays.get("incline"))
+    values = out.values
+    for value in values.values():
+        ok &= np.isfinite(value)
+    ok &= values["t_roll"] != 0.0          # set down rolling, or kappa = 0: a note
+    if "mu_min" in values:
+        with np.errstate(invalid="ignore"):
+            ok &= ~(arrays["mu"] < values["mu_min"])
+    return Columns(values, exact=out.exact & ok, model="coulomb-friction",
+                   method="closed-form")
+
+
 # --- the command record ----------------------------------------------------------------------
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
@@ -633,4 +694,5 @@ COMMAND = Command(
     ),
     results_from_kinds(_KINDS),
     _run,
+    columns=columns,
 )

@@ -583,6 +583,40 @@ def _explain(root, stiffness, dim: Dim, k_eq: Entry | None = None) -> Explanatio
 
 
 
+_ELEMENT_KEY = re.compile(r"^k[0-9]+$")
+
+
+def columns(given: dict, settings: dict):
+    """``k_eq`` of a block of batch rows at once, or ``None`` when not vectorised here.
+
+    ``given`` maps the element columns ``k1``, ``k2``, ... (in column order) to float64
+    arrays: plain stiffnesses in SI (N/m, or N*m/rad for torsional elements); ``settings``
+    holds ``how`` (``series`` or ``parallel``) and ``units`` (key -> the unit the elements were
+    typed in, ``""`` for a bare number: without it, ``None``). Element functions (``cantilever(...)``) and shared values are not
+    vectorised; nor are elements typed in a unit other than SI (the one-off adds them in
+    their own unit, :func:`dyncalc.physics.springs._common_unit`). Returns
+    :class:`~dyncalc.physics.columns.Columns` with ``k_eq`` (the one-off's ``results``), exact
+    where the one-off gives the same ``k_eq`` with no warning (no underflow to zero, no
+    overflow, no rigid element) and no refusal.
+    """
+    from ..lazy import numpy as np
+    from ..physics.columns import Columns
+    from ..physics.springs import parallel_stiffness, series_stiffness
+    from .columns import typed_in_si
+
+    how = settings.get("how")
+    if how not in GROUPS or not given or not all(_ELEMENT_KEY.match(key) for key in given):
+        return None
+    first = next(iter(given))
+    if not typed_in_si(settings, first, "N/m", "N*m/rad"):
+        return None
+    k = np.column_stack([np.asarray(v, dtype=float) for v in given.values()])
+    out = (series_stiffness if how == "series" else parallel_stiffness).columns(k)
+    k_eq = out.values["k_eq"]
+    exact = (out.exact & np.all(np.isfinite(k), axis=1) & np.isfinite(k_eq) & (k_eq != 0.0))
+    return Columns({"k_eq": k_eq}, exact=exact, model=how)
+
+
 # --- the command records ---------------------------------------------------------------------
 
 NETWORK_HELP = """
@@ -612,9 +646,12 @@ def _record(how: str, summary: str, examples: str) -> Command:
                           "torsional elements"),
                ResultName("k<i>", "k<i>", "N/m", "the stiffness of element i, when it is a "
                           "standard element (cantilever(), coil(), ...)"))
+    def adapter(given, settings):
+        return columns(given, {**settings, "how": how})
+
     return Command(f"spring-{how}", summary.split("\n")[0],
                    f"{summary}\n{NETWORK_HELP}\n{examples}", (), results, run,
-                   words="ELEMENT...")
+                   words="ELEMENT...", columns=adapter)
 
 
 SPRING_SERIES = _record(

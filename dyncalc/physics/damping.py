@@ -19,9 +19,9 @@ from ..lazy import numpy as np
 from ..units import Q_
 from ..units import ACCELERATION, ANGULAR_RATE, DAMPING, LENGTH, LINEAR_DRAG, MASS, STIFFNESS
 from .face import check_units, magnitude
-from .numerics import Wide, monomial, root_monomial, sqrt_ratio, two_product
 from .columns import Columns, column_kernel
-from .numerics import finite_nonzero
+from .numerics import (Wide, finite_nonzero, monomial, root_monomial, sqrt_ratio,
+                       sqrt_ratio_array, two_product)
 from .numerics_arrays import hypot_array, monomial_array, root_monomial_array
 from .outcome import Outcome, damped, damped_arrays, periodic, periodic_arrays
 
@@ -559,6 +559,62 @@ def damping_from_coefficients(c, k, m) -> Outcome:
     return _ordered(values, notes)
 
 
+def _excess_array(c, k, m):
+    """The twin of :func:`_excess` on arrays (``numerics_arrays``): ``(mantissas, exponents)``
+    of ``4 k m - c^2``, correctly rounded, bit for bit."""
+    from ..lazy import numpy as np
+    from .numerics_arrays import fsum_rows, ldexp_array, two_product_array
+
+    mk, ek = np.frexp(k)
+    mm, em = np.frexp(m)
+    mc, ec = np.frexp(c)
+    p1, e1 = two_product_array(mk, mm)
+    p2, e2 = two_product_array(mc, mc)
+    a = ek.astype(np.int64) + em + 2
+    b = 2 * ec.astype(np.int64)
+    top = np.maximum(a, b)
+    parts = np.column_stack([ldexp_array(p1, a - top), ldexp_array(e1, a - top),
+                             -ldexp_array(p2, b - top), -ldexp_array(e2, b - top)])
+    total, _ok = fsum_rows(parts)  # the parts are finite: below 1 in magnitude
+    return total, top
+
+
+@column_kernel(damping_from_coefficients)
+def _coefficients_columns(c, k, m) -> Columns:
+    """:func:`damping_from_coefficients` on columns (N s/m, N/m, kg): the same
+    :class:`~dyncalc.physics.numerics_arrays.WideArray` steps and the exact excess
+    ``4 k m - c^2`` (:func:`_excess_array`), bit for bit. The values (names and order of the
+    underdamped one-off) are exact on the underdamped rows; the undamped, critically damped
+    and overdamped ones carry a note (and other values) and are left to the one-off."""
+    from ..lazy import numpy as np
+    from .numerics_arrays import WideArray as W
+
+    c, k, m = (np.asarray(x, dtype=float) for x in (c, k, m))
+    with np.errstate(all="ignore"):
+        four_km = W(4.0) * W(k) * W(m)
+        critical = four_km.sqrt()
+        excess, exponent = _excess_array(c, k, m)
+        fraction = (W(np.abs(excess), exponent) / four_km).to_float()
+        root = W(np.abs(excess), exponent).sqrt()
+        omega_d = root / W(m) * W(0.5)
+        underdamped = (c > 0.0) & (excess > 0.0) & (fraction > CRITICAL_BAND)
+        regime = np.where(c == 0.0, "undamped", np.where(
+            fraction <= CRITICAL_BAND, "critically damped",
+            np.where(excess < 0.0, "overdamped", "underdamped")))
+        values = {"zeta": (W(c) / critical).to_float(),
+                  "delta": (W(TWO_PI) * W(c) / root).to_float(),
+                  "regime": regime,
+                  "Q": (critical / W(c) * W(0.5)).to_float(),
+                  "c_c": critical.to_float(), "c": c.copy(),
+                  "omega": sqrt_ratio_array(k, m),
+                  "xi": (W(c) / W(m) * W(0.5)).to_float(),
+                  "omega_d": omega_d.to_float(),
+                  "f_d": (omega_d / W(TWO_PI)).to_float(),
+                  "T_d": (W(TWO_PI) / omega_d).to_float()}
+    ordinary = np.isfinite(c) & np.isfinite(k) & np.isfinite(m) & (k > 0.0) & (m > 0.0)
+    return Columns(values, exact=underdamped & ordinary)
+
+
 @check_units(omega=ANGULAR_RATE, k=STIFFNESS, m=MASS)
 def damping_from_decrement(delta: float, omega=None, k=None, m=None) -> Outcome:
     """Damping ratio and damped motion from a logarithmic decrement per cycle.
@@ -624,6 +680,41 @@ def damping_from_decrement(delta: float, omega=None, k=None, m=None) -> Outcome:
     return _ordered(values, notes)
 
 
+@column_kernel(damping_from_decrement)
+def _decrement_columns(delta, omega=None, k=None, m=None) -> Columns:
+    """:func:`damping_from_decrement` on columns: ``h = hypot(2 pi, delta)`` as
+    ``math.hypot`` computes it (:func:`~dyncalc.physics.numerics_arrays.hypot_rows`) and the
+    same :class:`~dyncalc.physics.numerics_arrays.WideArray` steps, bit for bit. Exact on
+    rows with ``delta > 0`` (``delta = 0`` carries a note and no ``Q``)."""
+    from ..lazy import numpy as np
+    from .numerics_arrays import WideArray as W, hypot_rows
+
+    delta = np.asarray(delta, dtype=float)
+    with np.errstate(all="ignore"):
+        h, ok = hypot_rows(np.full(delta.shape, TWO_PI), delta)
+        values = {"zeta": delta / h, "delta": delta.copy(),
+                  "regime": np.where(delta == 0.0, "undamped", "underdamped"),
+                  "Q": (W(h) / W(delta) * W(0.5)).to_float()}
+        omega_si = None
+        if omega is not None:
+            omega_si = np.asarray(omega, dtype=float)
+        elif k is not None and m is not None:
+            k, m = np.asarray(k, dtype=float), np.asarray(m, dtype=float)
+            omega_si = sqrt_ratio_array(k, m)
+            critical = (W(4.0) * W(k) * W(m)).sqrt()
+            values["c_c"] = critical.to_float()
+            values["c"] = (critical * W(delta) / W(h)).to_float()
+            values["omega"] = omega_si
+            ok &= np.isfinite(k) & np.isfinite(m) & (k > 0.0) & (m > 0.0)
+        if omega_si is not None:
+            values["xi"] = (W(omega_si) * W(delta) / W(h)).to_float()
+            values["omega_d"] = (W(omega_si) * W(TWO_PI) / W(h)).to_float()
+            values["f_d"] = (W(omega_si) / W(h)).to_float()
+            values["T_d"] = (W(h) / W(omega_si)).to_float()
+            ok &= np.isfinite(omega_si) & (omega_si > 0.0)
+    return Columns(values, exact=ok & (delta > 0.0) & np.isfinite(delta))
+
+
 def damping_from_zeta(zeta: float) -> Outcome:
     """Decrement, quality factor and regime of an oscillator of damping ratio ``zeta >= 0``.
 
@@ -657,6 +748,27 @@ def damping_from_zeta(zeta: float) -> Outcome:
         values["regime"] = "overdamped"
     values["Q"] = 0.5 / zeta
     return Outcome(values, warnings=notes)
+
+
+@column_kernel(damping_from_zeta)
+def _zeta_columns(zeta) -> Columns:
+    """:func:`damping_from_zeta` on columns: ``zeta``, ``delta``
+    (:func:`decrement_from_zeta`, the same float steps), ``regime`` and ``Q``, the names of
+    the underdamped one-off; exact on its rows (``0 < zeta < 1`` outside the critical band).
+    Undamped, critical and overdamped rows give other names (or a note): not exact."""
+    from ..lazy import numpy as np
+
+    zeta = np.asarray(zeta, dtype=float)
+    with np.errstate(all="ignore"):
+        fraction = np.abs((1.0 - zeta) * (1.0 + zeta))
+        values = {"zeta": zeta.copy(),
+                  "delta": TWO_PI * zeta / np.sqrt((1.0 - zeta) * (1.0 + zeta)),
+                  "regime": np.where(zeta == 0.0, "undamped", np.where(
+                      fraction <= CRITICAL_BAND, "critically damped",
+                      np.where(zeta < 1.0, "underdamped", "overdamped"))),
+                  "Q": 0.5 / zeta}
+    exact = (zeta > 0.0) & (zeta < 1.0) & (fraction > CRITICAL_BAND)
+    return Columns(values, exact=exact)
 
 
 _ORDER = ("zeta", "delta", "regime", "Q", "c_c", "c", "omega", "xi", "omega_d", "f_d", "T_d")

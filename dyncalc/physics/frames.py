@@ -34,6 +34,7 @@ from ..lazy import numpy as np
 
 from ..constants import EARTH_RATE
 from ..errors import InputError, PhysicsError
+from .columns import Columns, column_kernel
 from .numerics import two_product
 
 __all__ = ["EARTH_RATE", "coriolis_acceleration", "euler_acceleration",
@@ -317,6 +318,84 @@ def relative_acceleration(Omega, v_r, r=None, alpha=None, a0=None, a_r=None,
                              a_c=a_c, a_euler=a_euler, a_centripetal=a_centripetal,
                              a_transport=a_transport, a=a, F_c=F_c, given=given,
                              parallel=parallel, warnings=warnings)
+
+
+class _ScaledRows:
+    """The twin of :class:`_Scaled` for ``n`` vectors at once: mantissas ``m`` (n x 3) and
+    exponents ``e`` (n), each row scaled as :class:`_Scaled` scales its vector."""
+
+    __slots__ = ("m", "e")
+
+    def __init__(self, v, e=0):
+        from .numerics_arrays import ldexp_array
+
+        v = np.asarray(v, dtype=float)
+        top = np.max(np.abs(v), axis=1)
+        _, shift = np.frexp(top)
+        shift = shift.astype(np.int64)
+        zero = top == 0.0
+        with np.errstate(under="ignore"):
+            self.m = np.where(zero[:, None], 0.0, ldexp_array(v, -shift[:, None]))
+        self.e = np.where(zero, 0, e + shift)
+
+    def cross(self, other: "_ScaledRows") -> "_ScaledRows":
+        with np.errstate(under="ignore"):
+            return _ScaledRows(np.cross(self.m, other.m), self.e + other.e)
+
+    def times(self, factor) -> "_ScaledRows":
+        factor = np.broadcast_to(np.asarray(factor, dtype=float), self.e.shape)
+        mant, shift = np.frexp(factor)
+        with np.errstate(under="ignore"):
+            out = _ScaledRows(self.m * mant[:, None], self.e + shift.astype(np.int64))
+        still = (factor == 0.0) | ~self.nonzero
+        out.m = np.where(still[:, None], 0.0, out.m)
+        out.e = np.where(still, 0, out.e)
+        return out
+
+    @property
+    def nonzero(self):
+        return np.any(self.m != 0.0, axis=1)
+
+    def value(self):
+        from .numerics_arrays import ldexp_array
+
+        return ldexp_array(self.m, self.e[:, None]) + 0.0
+
+
+@column_kernel(relative_acceleration)
+def _relative_acceleration_columns(Omega, v_r, r=None, alpha=None, a0=None, a_r=None,
+                                   m=None) -> Columns:
+    """:func:`relative_acceleration` on columns: every vector an ``(n, 3)`` SI array, ``m``
+    an ``(n,)`` array. The same power-of-two scaling (:class:`_ScaledRows`), ``numpy.cross``
+    and sums in the same order, bit for bit; ``values`` are the FrameAcceleration's terms
+    ``a_c``, ``a_euler``, ``a_centripetal``, ``a_transport``, ``a`` (and ``F_c`` with ``m``).
+    Exact where no term overflows (the one-off refuses) or underflows to zero from non-zero
+    factors (it warns)."""
+    Om_v = np.asarray(Omega, dtype=float) + 0.0
+    v_v = np.asarray(v_r, dtype=float) + 0.0
+    zero = np.zeros_like(Om_v)
+    r_v, al_v, a0_v, ar_v = (zero if x is None else np.asarray(x, dtype=float) + 0.0
+                             for x in (r, alpha, a0, a_r))
+    Om, v, rr, al = (_ScaledRows(x) for x in (Om_v, v_v, r_v, al_v))
+    coriolis = Om.cross(v).times(2.0)
+    euler = al.cross(rr)
+    centripetal = Om.cross(Om.cross(rr))
+    exact = np.ones(len(Om_v), dtype=bool)
+    terms = {}
+    for name, scaled in (("a_c", coriolis), ("a_euler", euler),
+                         ("a_centripetal", centripetal)):
+        terms[name] = scaled.value()
+        exact &= ~(scaled.nonzero & ~np.any(terms[name] != 0.0, axis=1))
+    with np.errstate(over="ignore", invalid="ignore"):
+        terms["a_transport"] = (a0_v + terms["a_euler"]) + terms["a_centripetal"] + 0.0
+        terms["a"] = (terms["a_transport"] + terms["a_c"]) + ar_v + 0.0
+    if m is not None:
+        force = coriolis.times(-np.asarray(m, dtype=float))
+        terms["F_c"] = force.value()
+        exact &= ~(force.nonzero & ~np.any(terms["F_c"] != 0.0, axis=1))
+    for value in terms.values():
+        exact &= np.all(np.isfinite(value), axis=1)
+    return Columns(terms, exact=exact, model="vectors")
 
 
 # --------------------------------------------------------------------------------------------

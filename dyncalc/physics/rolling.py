@@ -50,6 +50,7 @@ from fractions import Fraction
 from ..constants import STANDARD_GRAVITY
 from ..errors import PhysicsError
 from ..units import ACCELERATION, ANGLE, ANGULAR_RATE, LENGTH, VELOCITY
+from .columns import Columns, column_kernel
 from .face import check_units, magnitude
 from .numerics import HALF_TURN, PI_HI, PI_LO, Wide
 from .outcome import Outcome
@@ -448,3 +449,58 @@ def rolling_onset(v0, mu: float, kappa: float = 0.4, g=None, r=None, omega0=None
         values["mu_min"] = onset.mu_min
     return Outcome(values, model="coulomb-friction", warnings=list(onset.warnings),
                    exact_zeros=onset.exact_zeros())
+
+
+def _radian_sin_cos(beta: float) -> tuple[float, float]:
+    """:func:`slope_sin_cos` of an angle typed in radians (the steps of its radian branch)."""
+    quarter = 0.5 * PI_HI
+    complement = (quarter - abs(beta)) + 0.5 * PI_LO
+    cos_b = math.cos(beta) if abs(beta) <= 0.5 * quarter else math.sin(complement)
+    return math.sin(beta), cos_b
+
+
+@column_kernel(rolling_onset)
+def _rolling_onset_columns(v0, mu, kappa=0.4, g=None, r=None, omega0=None,
+                           incline=None) -> Columns:
+    """:func:`rolling_onset` on columns (v0 m/s, g m/s^2, r m, omega0 rad/s, incline rad;
+    ``kappa`` an array or one float for every row).
+
+    The closed form is exact rational arithmetic (:class:`fractions.Fraction` on the inputs'
+    shortest decimals): no float array operation reproduces its correctly rounded results,
+    so each row runs :func:`onset_closed_form` itself (bit for bit by construction; without
+    the pint and Result layers around it, which cost far more). ``incline`` is taken as typed
+    in radians (a slope typed in degrees takes its cosine in degrees: the caller leaves those
+    rows to the one-off). Values: ``t_roll``, ``x_roll``, ``v_roll``, ``omega_roll`` (with
+    ``r``), ``mu_min`` (with ``incline``); exact on rows with no refusal, no underflow
+    warning and no reversal (which adds ``path_roll``).
+    """
+    from ..lazy import numpy as np
+
+    v0 = np.asarray(v0, dtype=float)
+    n = len(v0)
+
+    def column(value, default):
+        if value is None:
+            return [default] * n
+        return np.broadcast_to(np.asarray(value, dtype=float), (n,)).tolist()
+
+    mus, kappas = column(mu, None), column(kappa, None)
+    gs = column(g, STANDARD_GRAVITY)
+    rs, spins, slopes = column(r, None), column(omega0, 0.0), column(incline, None)
+    names = ["t_roll", "x_roll", "v_roll"] + (["omega_roll"] if r is not None else []) + (
+        ["mu_min"] if incline is not None else [])
+    values = {name: np.full(n, np.nan) for name in names}
+    exact = np.zeros(n, dtype=bool)
+    for i, speed in enumerate(v0.tolist()):
+        sin_b, cos_b = (0.0, 1.0) if slopes[i] is None else _radian_sin_cos(slopes[i])
+        try:
+            onset = onset_closed_form(speed, mus[i], kappas[i], gs[i], rs[i], spins[i],
+                                      sin_b, cos_b)
+        except (PhysicsError, ArithmeticError, ValueError, TypeError):
+            continue
+        row = onset.values()
+        row["mu_min"] = onset.mu_min
+        for name in names:
+            values[name][i] = row[name]
+        exact[i] = not onset.warnings and not onset.reverses
+    return Columns(values, exact=exact, model="coulomb-friction")

@@ -15,6 +15,7 @@ import math
 from ..units import Q_
 from ..units import AREA, FORCE, LENGTH, MODULUS, RIGIDITY, SECOND_MOMENT, TORSIONAL_RIGIDITY
 from .face import check_units, magnitude
+from .columns import Columns, column_kernel
 from .numerics import monomial, parallel_sum, series_sum
 
 __all__ = [
@@ -85,6 +86,43 @@ def parallel_stiffness(stiffnesses):
     """
     unit, magnitudes = _common_unit(stiffnesses)
     return Q_(parallel_sum(magnitudes), unit)
+
+
+def _stiffness_rows(stiffnesses):
+    from ..lazy import numpy as np
+
+    k = np.asarray(stiffnesses, dtype=float)
+    if k.ndim != 2 or k.shape[1] == 0:
+        raise ValueError(f"the columns of stiffnesses are a 2-D array (rows x elements); got "
+                         f"shape {k.shape}")
+    return k, np.all(k > 0.0, axis=1)
+
+
+@column_kernel(series_stiffness)
+def _series_columns(stiffnesses) -> Columns:
+    """:func:`series_stiffness` on columns: ``stiffnesses`` is a float array (rows x elements)
+    in one SI unit (N/m, or N*m/rad for torsional elements); ``k_eq`` in it, bit for bit
+    :func:`~dyncalc.physics.numerics.series_sum`
+    (:func:`~dyncalc.physics.numerics_arrays.series_sum_rows`). Exact on rows of positive
+    elements (``inf``, a rigid link, included), as the one-off computes in SI when the
+    elements were given in it."""
+    from .numerics_arrays import series_sum_rows
+
+    k, positive = _stiffness_rows(stiffnesses)
+    k_eq, ok = series_sum_rows(k)
+    return Columns({"k_eq": k_eq}, exact=positive & ok, model="series")
+
+
+@column_kernel(parallel_stiffness)
+def _parallel_columns(stiffnesses) -> Columns:
+    """:func:`parallel_stiffness` on columns, as :func:`_series_columns`: ``k_eq`` is the
+    row's fsum (:func:`~dyncalc.physics.numerics_arrays.parallel_sum_rows`), ``inf`` where an
+    element is rigid or the sum overflows, as the one-off gives it."""
+    from .numerics_arrays import parallel_sum_rows
+
+    k, positive = _stiffness_rows(stiffnesses)
+    k_eq, ok = parallel_sum_rows(k)
+    return Columns({"k_eq": k_eq}, exact=positive & ok, model="parallel")
 
 
 def _rigidity(name: str, unit: str, product, factors) -> list[tuple[float, int]]:
