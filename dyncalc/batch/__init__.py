@@ -54,8 +54,9 @@ the run at their line, after the rows before it are written.
 The modules, in the order the data flows: :mod:`.source` opens the file and hands out its
 records a chunk at a time; :mod:`.header` reads the header and a cell's text under its header
 unit; :mod:`.rows` says what each command reads from a row (the generic path); :mod:`.fast`
-and :mod:`.fast_commands` compute whole chunks, reading their columns with :mod:`.columns`; :mod:`.write` writes CSV
-rows (:mod:`.csvlines`) or JSON lines; this module's :func:`run_batch` runs them in turn.
+and :mod:`.fast_commands` compute whole chunks, reading their columns with :mod:`.columns`;
+:mod:`.write` writes CSV rows (:mod:`.csvlines`) or JSON lines; this module's
+:func:`run_batch` runs them in turn.
 """
 from __future__ import annotations
 
