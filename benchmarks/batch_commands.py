@@ -1,0 +1,117 @@
+"""Batch throughput of every command: the vectorised path against the generic (one-off, row by
+row) path, side by side in one run.
+
+For each command (and a few scenes) a CSV of random ordinary rows is generated into a
+temporary file; dyncalc runs as a child process writing to /dev/null, once on the vectorised
+path and once with ``DYNCALC_BATCH_GENERIC=1`` (on fewer rows: the generic path is slow), and
+the table gives rows per second of each and their ratio. Wall time is end to end, start-up
+included; each figure is the median of ``--repeat`` runs.
+
+    python benchmarks/batch_commands.py [--rows 100000] [--generic-rows 2000] [--repeat 3]
+                                        [--out benchmarks/results/batch_commands.md]
+
+Run it with the project's virtual environment's python (dyncalc installed in it).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import random
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+BIN = Path(sys.executable).parent
+
+#: (label, argv after ``dyncalc``, header, a function of a Random giving one row's cells)
+CASES = [
+    ("natural-frequency mass-spring", ["natural-frequency"], "k [N/m],m [kg]",
+     lambda r: [f"{r.uniform(10, 1e4):.6g}", f"{r.uniform(0.1, 50):.6g}"]),
+    ("natural-frequency clock-pendulum", ["natural-frequency", "--scene", "clock-pendulum"],
+     "m [kg],l [m],M [kg],r [m],a [m]",
+     lambda r: [f"{r.uniform(0.1, 2):.6g}", f"{r.uniform(0.5, 2):.6g}",
+                f"{r.uniform(0.1, 5):.6g}", f"{r.uniform(0.05, 0.2):.6g}",
+                f"{r.uniform(0.2, 0.5):.6g}"]),
+    ("natural-frequency bead-on-rotating-ring",
+     ["natural-frequency", "--scene", "bead-on-rotating-ring"], "r [m],Omega [rad/s]",
+     lambda r: [f"{r.uniform(0.1, 1):.6g}", f"{r.uniform(0.5, 20):.6g}"]),
+    ("spring-series", ["spring-series"], "k1 [N/m],k2 [N/m],k3 [N/m]",
+     lambda r: [f"{r.uniform(10, 1e4):.6g}" for _ in range(3)]),
+    ("damping-ratio", ["damping-ratio"], "c [N*s/m],k [N/m],m [kg]",
+     lambda r: [f"{r.uniform(0.1, 10):.6g}", f"{r.uniform(100, 1e4):.6g}",
+                f"{r.uniform(0.5, 20):.6g}"]),
+    ("rolling-onset", ["rolling-onset"], "v0 [m/s],mu",
+     lambda r: [f"{r.uniform(0.5, 10):.6g}", f"{r.uniform(0.05, 0.8):.6g}"]),
+    ("coriolis", ["coriolis"], "omega [rad/s],vr [m/s]",
+     lambda r: ['"0,0,%.6g"' % r.uniform(0.1, 5), '"%.6g,%.6g,0"' % (r.uniform(-3, 3),
+                                                                   r.uniform(-3, 3))]),
+]
+
+
+def dyncalc() -> list[str]:
+    script = BIN / "dyncalc"
+    return [str(script)] if script.exists() else [sys.executable, "-m", "dyncalc"]
+
+
+def write_file(folder: Path, label: str, header: str, make, rows: int) -> Path:
+    rng = random.Random(label)
+    path = folder / f"{label.replace(' ', '_')}-{rows}.csv"
+    with path.open("w") as out:
+        out.write(header + "\n")
+        for _ in range(rows):
+            out.write(",".join(make(rng)) + "\n")
+    return path
+
+
+def timed(argv: list[str], path: Path, generic: bool) -> float:
+    env = dict(os.environ)
+    env["DYNCALC_BATCH_GENERIC"] = "1" if generic else "0"
+    start = time.perf_counter()
+    done = subprocess.run([*dyncalc(), *argv, "--batch", str(path)], env=env,
+                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd="/")
+    seconds = time.perf_counter() - start
+    if done.returncode != 0:
+        raise SystemExit(f"{argv} failed: {done.stderr.decode()[:300]}")
+    return seconds
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--rows", type=int, default=100_000)
+    parser.add_argument("--generic-rows", type=int, default=2_000)
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--out", type=Path)
+    args = parser.parse_args()
+    lines = ["| command | vectorised rows/s | generic rows/s | ratio |",
+             "| --- | ---: | ---: | ---: |"]
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        for label, argv, header, make in CASES:
+            many = write_file(folder, label, header, make, args.rows)
+            few = write_file(folder, label, header, make, args.generic_rows)
+            fast, slow = [], []
+            for _ in range(args.repeat):  # interleaved, so load drifts hit both alike
+                fast.append(args.rows / timed(argv, many, False))
+                slow.append(args.generic_rows / timed(argv, few, True))
+            f, s = statistics.median(fast), statistics.median(slow)
+            lines.append(f"| {label} | {f:,.0f} | {s:,.0f} | {f / s:,.0f}x |")
+            print(lines[-1], flush=True)
+    load = os.getloadavg()[0]
+    footer = (f"\nPython {platform.python_version()}, {os.cpu_count()} CPUs, "
+              f"{platform.machine()}; {time.strftime('%Y-%m-%d %H:%M')}; load average "
+              f"{load:.2f} at the end; {args.rows:,} rows vectorised, {args.generic_rows:,} "
+              f"generic; wall time end to end (start-up included), median of {args.repeat}.")
+    text = "\n".join(lines) + "\n" + footer + "\n"
+    print(footer)
+    if args.out:
+        args.out.write_text("# Batch throughput of every command\n\nCommand: `python "
+                            "benchmarks/batch_commands.py " + " ".join(sys.argv[1:])
+                            + "`\n\n" + text)
+
+
+if __name__ == "__main__":
+    main()
