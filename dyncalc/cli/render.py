@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 from ..errors import one_line
 from ..result.encode import explain_format, shown
 from ..result.entries import Entry, Result, format_number
+from .streams import fit
 
 if TYPE_CHECKING:
     from ..result.checks import Check
@@ -45,8 +46,8 @@ def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str,
     rows = []
     for entry in result.results.values():
         value, unit = shown(entry, units)
-        rows.append((entry.name, entry.symbol or entry.name,
-                     _with_uncertainty(entry, value, unit, digits), unit))
+        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name,
+                                    _with_uncertainty(entry, value, unit, digits), unit))))
     return rows
 
 
