@@ -19,7 +19,7 @@ from ..units import Q_
 from ..units import ACCELERATION, ANGULAR_RATE, DAMPING, LENGTH, LINEAR_DRAG, MASS, STIFFNESS
 from .face import check_units, magnitude
 from .numerics import Wide, monomial, root_monomial, sqrt_ratio, two_product
-from .outcome import Outcome, damped, periodic
+from .outcome import CRITICAL_BAND, Outcome, damped, periodic
 
 __all__ = ["pendulum_spring_dashpot", "rod_in_fluid", "frame_brace_damper",
            "small_damping_error", "FRAME_METHODS", "TWO_PI", "CRITICAL_BAND", "REGIMES",
@@ -299,11 +299,9 @@ def frame_brace_damper(m, k, d, b0, method: str = "auto", rtol: float = 1e-9) ->
 #: ``2 pi`` (the float nearest it; its relative error is 3.9e-17).
 TWO_PI = 2.0 * math.pi
 
-#: ``|1 - zeta^2|`` at or below this (``2**-50``, about 8.9e-16) counts as critical damping.
-#: The inputs themselves carry a relative rounding of ``2**-53`` each (more after a unit
-#: conversion), so ``c^2 / (4 k m)`` is only known to about four roundings: a system closer
-#: than that to critical damping cannot be told from critical with float64 inputs.
-CRITICAL_BAND = 2.0 ** -50
+#: ``|1 - zeta^2|`` at or below ``CRITICAL_BAND`` counts as critical damping: defined with
+#: :func:`dyncalc.physics.outcome.damped`, so that every command and scene names the regime
+#: alike (issue 15: a scene called zeta = 1 "overdamped").
 
 #: The regimes, in order of growing damping.
 REGIMES = ("undamped", "underdamped", "critically damped", "overdamped")
