@@ -98,11 +98,9 @@ class Output:
         elif self.as_json:
             click.echo(encode.to_json(result, units, checks, self.explain))
         elif _is_terminal():
-            from rich.console import Console
-
             from . import render
 
-            render.rich_text(result, units, self.digits, checks, self.explain, Console())
+            render.rich_text(result, units, self.digits, checks, self.explain, _console())
         else:
             from . import render  # human text only: not for --json or --value (start-up)
 
@@ -145,6 +143,17 @@ _BATCH_REFUSALS = {
     "--explain": "run one row on its own with --explain",
     "--plot": "draw one row's decay on its own with --plot",
 }
+
+
+def _console():
+    """A rich console as wide as the terminal; ``COLUMNS=0`` or a nonsense width (which rich
+    would take as zero columns, printing nothing) falls back to the terminal's own width."""
+    import shutil
+
+    from rich.console import Console
+
+    width = shutil.get_terminal_size((80, 24)).columns
+    return Console(width=width if width > 0 else 80)
 
 
 def _is_terminal() -> bool:
