@@ -6,11 +6,15 @@ and the CLI reports it as one (also exit 2, with the traceback only under ``--de
 """
 
 __all__ = ["InputError", "PhysicsError", "EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT",
-           "escape", "one_line"]
+           "EXIT_OUTPUT_FAILED", "EXIT_INTERRUPTED", "EXIT_BROKEN_PIPE", "escape", "one_line"]
 
+# The exit statuses of SPEC's table ("Exit status, errors and I/O").
 EXIT_OK = 0
-EXIT_CHECK_FAILED = 1
+EXIT_CHECK_FAILED = 1     #: a --check failed, and nothing else
 EXIT_BAD_INPUT = 2
+EXIT_OUTPUT_FAILED = 3    #: the output could not be written (disk full, stdout closed)
+EXIT_INTERRUPTED = 130    #: Ctrl-C
+EXIT_BROKEN_PIPE = 141    #: the reader went away (128 + SIGPIPE), quietly
 
 
 class InputError(ValueError):

@@ -642,6 +642,15 @@ DAMPED = "pendulum-spring-dashpot, rod-in-fluid, frame-brace-damper"
      "--k needs --m: together they give the natural frequency sqrt(k/m) and c_c = 2 sqrt(k m)"),
     (["--decrement", "0.1", "--omega", "3", "--k", "1", "--m", "1"],
      "give the natural frequency as --omega or as --k and --m, not both"),
+    # issue 15: no --k was given, yet the message said "not both"
+    (["--c", "1", "--omega", "3", "--m", "1"],
+     "--c goes with --k and --m (zeta = c / (2 sqrt(k m))), not with --omega: give --k "
+     "instead of --omega"),
+    (["--c", "1", "--omega", "3"],
+     "--c goes with --k and --m (zeta = c / (2 sqrt(k m))), not with --omega: give --k and "
+     "--m instead of --omega"),
+    (["--decrement", "0.1", "--omega", "3", "--m", "1"],
+     "--m does not go with --omega: give the natural frequency as --omega, or as --k and --m"),
     (["--scene", "mass-spring", "k=1", "m=1"],
      f"damping-ratio --scene takes a scene with a damper: {DAMPED}; mass-spring has none "
      "(natural-frequency computes it)"),

@@ -139,6 +139,19 @@ def test_missing_parameters_listed():
                               "k [force]/[length], m [mass], zeta dimensionless?")
 
 
+@pytest.mark.parametrize("typed, close", [
+    ("mas-spring", "'mass-spring'"),
+    ("pendulm", "'pendulum' or 'clock-pendulum'"),
+    ("quartercar", "'quarter-car'"),
+])
+def test_a_misspelt_scene_gets_did_you_mean(typed, close):
+    """Issue 15: a misspelt scene name gets the closest names (difflib), not the whole list."""
+    with pytest.raises(InputError) as err:
+        get_scene(typed)
+    assert str(err.value) == (f"there is no scene {typed!r} (did you mean {close}?); "
+                              "'dyncalc scenes' lists them all")
+
+
 def test_unknown_scene():
     with pytest.raises(InputError) as err:
         get_scene("spring-mass")

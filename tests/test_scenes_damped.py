@@ -149,6 +149,23 @@ def test_e5_18_underdamped_iff_d_below_the_critical_value():
         "damped frequency; it oscillates only for d < 8 sqrt(k m + g m^2/(2a)) = 167.662 N*s/m"]
 
 
+def test_e5_18_at_the_critical_dashpot_the_scene_says_critically_damped_as_damping_ratio():
+    """Issue 15: at d = 8 sqrt(k m + g m^2/(2a)) (mpmath, 40 digits, rounded to the nearest
+    float) zeta rounds to 1 + 2^-52; the scene called that "overdamped" while damping-ratio
+    called the same zeta "critically damped". Both now say critically damped."""
+    from dyncalc.physics.damping import damping_from_zeta
+
+    with mpmath.workdps(40):
+        critical = float(8 * mpmath.sqrt(15 * 1 + mpmath.mpf("9.80665") / (2 * mpmath.mpf("0.3"))))
+    out = run_scene(PSD, {"m": "1 kg", "a": "0.3 m", "k": "15 N/m", "d": f"{critical!r} N*s/m"})
+    zeta = si(out, "zeta")
+    assert zeta != 1.0 and abs(zeta - 1.0) <= 2.0 ** -51   # the rounding, not the physics
+    assert "omega_d" not in out.results
+    assert out.warnings[0].startswith("zeta = 1: the system is critically damped; it does not "
+                                      "oscillate")
+    assert damping_from_zeta(zeta).values["regime"] == "critically damped"
+
+
 def test_e5_14_critical_drag():
     """E5.14: the rod stops oscillating at beta_crit = (m/l) sqrt(6 g/l) (mpmath, 40 digits)."""
     with mpmath.workdps(40):

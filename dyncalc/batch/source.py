@@ -40,15 +40,33 @@ _TOO_LONG = "\udc00"
 MAX_LINE = 100_000
 
 
-def _bounded_lines(stream, limit: int = MAX_LINE):
+#: Characters of one over-long line skipped at most, looking for its end; a source with a
+#: longer line is not CSV text (``/dev/zero``, a binary file) and its reading ends there.
+MAX_SKIP = 1 << 24
+
+
+class NotText(Exception):
+    """The source is not CSV text: an endless line, or a long line of NUL bytes."""
+
+
+def _bounded_lines(stream, limit: int = MAX_LINE, skip: int = MAX_SKIP):
     """The lines of ``stream``, each read ``limit + 1`` characters at most: a longer line is
-    skipped to its end and yields ``_TOO_LONG`` in its place (so the line numbers hold)."""
+    skipped to its end and yields ``_TOO_LONG`` in its place (so the line numbers hold). A
+    long line that holds a NUL, or has no end within ``skip`` characters, raises
+    :class:`NotText`: a binary source is refused at once, never read to its end."""
     while line := stream.readline(limit + 1):
         if len(line) <= limit or line.endswith(("\n", "\r")):
             yield line
             continue
+        if "\0" in line:
+            raise NotText(f"the line is longer than {limit} characters and holds NUL bytes: "
+                          "this is not a CSV text file")
+        skipped = len(line)
         while (rest := stream.readline(limit)) and not rest.endswith(("\n", "\r")):
-            pass
+            skipped += len(rest)
+            if skipped > skip:
+                raise NotText(f"the line is longer than {skip} characters: this is not a "
+                              "CSV text file")
         yield _TOO_LONG + "\n"
 
 
@@ -122,6 +140,8 @@ class _Reader:
             raw.extend(itertools.islice(self.stream, size))  # keeps the lines read before
         except OSError as exc:  # a disk or pipe error: the lines before it are computed
             self._failed(self.last + len(raw) + 1, exc)
+        except NotText as exc:
+            self._not_text(self.last + len(raw) + 1, exc)
         if len(raw) < size:
             self.done = True
         if not raw:
@@ -151,6 +171,8 @@ class _Reader:
             self.done = True
         except OSError as exc:
             self._failed(self.last + reader.line_num + 1, exc)
+        except NotText as exc:
+            self._not_text(self.last + reader.line_num + 1, exc)
         if reader.line_num > len(raw) and not self.fatal:
             self.done = False  # a quoted cell ran on past the chunk's lines: more may follow
         self.last += reader.line_num
@@ -158,4 +180,8 @@ class _Reader:
 
     def _failed(self, line: int, exc: OSError) -> None:
         self.fatal = f"line {line}: reading the file failed: {exc.strerror or exc}"
+        self.done = True
+
+    def _not_text(self, line: int, exc: NotText) -> None:
+        self.fatal = f"line {line}: {exc}"
         self.done = True

@@ -8,6 +8,7 @@ for its own command alone.
 """
 from __future__ import annotations
 
+import errno
 import gc
 import importlib
 import sys
@@ -15,7 +16,9 @@ import sys
 import click
 
 from .._version import __version__
-from ..errors import EXIT_BAD_INPUT, InputError, one_line as _one_line
+from ..errors import (EXIT_BAD_INPUT, EXIT_BROKEN_PIPE, EXIT_INTERRUPTED, InputError,
+                      one_line as _one_line)
+from . import streams
 
 __all__ = ["cli", "main"]
 
@@ -90,36 +93,81 @@ class DyncalcGroup(click.Group):
              **extra):
         args = list(sys.argv[1:] if args is None else args)
         debug = "--debug" in args
+        streams.prepare()
+        try:
+            code = self._run(args, prog_name, complete_var, extra, debug)
+            streams.flush()  # a failed write shows here, while its status can be given
+        except OSError as exc:  # stdout full, closed, or its reader gone
+            code = streams.exit_status_of(exc)
+            streams.discard_stdout()
+            if code != EXIT_BROKEN_PIPE:
+                streams.say(f"Error: cannot write the output: "
+                            f"{_one_line(exc.strerror or exc)}")
+        except KeyboardInterrupt:
+            streams.say("Error: interrupted")
+            code = EXIT_INTERRUPTED
+        if standalone_mode:
+            sys.exit(code)
+        return code
+
+    def _run(self, args, prog_name, complete_var, extra, debug) -> int:
+        """Run the command; its exit status, every error but a failed write (an OSError)
+        and Ctrl-C turned into one ``Error:`` line."""
+        stdout, stderr = sys.stdout, sys.stderr
         try:
             args = _explain_equals(args)
             rv = super().main(args=args, prog_name=prog_name or "dyncalc",
                               complete_var=complete_var, standalone_mode=False, **extra)
-            code = rv if isinstance(rv, int) else 0
+            return rv if isinstance(rv, int) else 0
         except click.exceptions.Exit as exc:
-            code = exc.exit_code
+            return exc.exit_code
+        except SystemExit:
+            if sys.stdout is not stdout:  # click's end of a broken pipe (it swaps the streams
+                sys.stdout, sys.stderr = stdout, stderr  # and exits 1): the contract's 141
+                raise BrokenPipeError(errno.EPIPE, "Broken pipe") from None
+            raise
+        except click.exceptions.NoArgsIsHelpError as exc:  # bare ``dyncalc``: its help
+            click.echo(exc.ctx.get_help())
+            return 0
         except click.ClickException as exc:
             command = _command_name(args)
             hint = f"; see 'dyncalc {command} --help'" if command else "; see 'dyncalc --help'"
             shown = _one_line(_usage_message(exc)).rstrip(".")
-            click.echo(f"Error: {shown}{_one_line(hint)}", err=True)
-            code = EXIT_BAD_INPUT
+            streams.say(f"Error: {shown}{_one_line(hint)}")
+            return EXIT_BAD_INPUT
         except InputError as exc:
-            click.echo(f"Error: {_one_line(exc)}", err=True)
-            code = EXIT_BAD_INPUT
-        except click.Abort:
-            click.echo("Error: interrupted", err=True)
-            code = 130
-        except BrokenPipeError:
-            code = 0
+            streams.say(f"Error: {_one_line(exc)}")
+            return EXIT_BAD_INPUT
+        except click.Abort:  # click's form of Ctrl-C
+            streams.say("Error: interrupted")
+            return EXIT_INTERRUPTED
+        except (OSError, KeyboardInterrupt):
+            raise
         except Exception as exc:  # a bug: never a traceback unless asked for
             if debug:
                 raise
-            click.echo(f"Error: internal error ({type(exc).__name__}: {_one_line(exc)[:200]}); "
-                       "please report it, with --debug for the traceback", err=True)
-            code = EXIT_BAD_INPUT
-        if standalone_mode:
-            sys.exit(code)
-        return code
+            streams.say(f"Error: internal error ({type(exc).__name__}: "
+                        f"{_one_line(exc)[:200]}); please report it, with --debug for the "
+                        "traceback")
+            return EXIT_BAD_INPUT
+
+    def resolve_command(self, ctx, args):
+        """The command named by ``args[0]``; a misspelt one is refused with the closest names
+        (``No such command 'natral-frequency' (did you mean 'natural-frequency'?)``)."""
+        name = args[0] if args else ""
+        if name and not name.startswith("-") and name not in self.commands:
+            raise click.UsageError(_no_such("command", name, list(COMMAND_MODULES)), ctx)
+        return super().resolve_command(ctx, args)
+
+
+def _no_such(kind: str, name: str, possibilities) -> str:
+    from difflib import get_close_matches
+
+    message = f"No such {kind} {name!r}"
+    close = get_close_matches(name, possibilities)
+    if close:
+        message += f" (did you mean {' or '.join(repr(c) for c in close)}?)"
+    return message
 
 
 def _explain_equals(args: list[str]) -> list[str]:
@@ -148,13 +196,7 @@ def _usage_message(exc: click.ClickException) -> str:
     own suggestion): ``No such option '--jsn' (did you mean '--json'?)``."""
     if not isinstance(exc, click.NoSuchOption):
         return exc.format_message()
-    from difflib import get_close_matches
-
-    message = f"No such option {exc.option_name!r}"
-    close = get_close_matches(exc.option_name, exc.possibilities or [])
-    if close:
-        message += f" (did you mean {' or '.join(repr(c) for c in close)}?)"
-    return message
+    return _no_such("option", exc.option_name, exc.possibilities or [])
 
 
 def _command_name(args: list[str]) -> str | None:
@@ -173,7 +215,8 @@ def cli():
 
     Quantities take any units pint knows ("2 kN/m", 4kg, "30 deg", "1500 rpm"); a bare number
     is read in SI. Every command prints a table, or --json, or --value NAME for scripts;
-    exit status 0 ok, 1 a --check failed, 2 bad input.
+    exit status 0 ok, 1 a --check failed, 2 bad input, 3 the output could not be written,
+    130 interrupted, 141 the reader went away.
 
     \b
     Examples:

@@ -15,8 +15,9 @@ import sys
 import click
 
 from ..errors import EXIT_CHECK_FAILED, EXIT_OK, InputError, one_line
+from .command import Command
 
-__all__ = ["Output", "output_options", "complete_scene", "build_command"]
+__all__ = ["Output", "output_options", "complete_scene", "build_command", "Command"]
 
 MAX_DIGITS = 17
 
@@ -33,12 +34,14 @@ class Output:
     __slots__ = ("as_json", "value", "units", "digits", "checks", "rtol", "explain", "strict",
                  "batch", "on_error", "debug")
 
-    def __init__(self, as_json: bool = False, value: str | None = None,
+    def __init__(self, as_json: bool = False, value: str | list[str] | None = None,
                  units: list[str] | None = None, digits: int = 6,
                  checks: list[str] | None = None, rtol: float | None = None,
                  explain: bool | str = False, strict: bool = False, batch: str | None = None,
                  on_error: str = "stop", debug: bool = False):
-        self.as_json, self.value, self.digits = as_json, value, digits
+        self.as_json, self.digits = as_json, digits
+        #: the results of ``--value`` (repeatable), in the order given; empty without it
+        self.value = [value] if isinstance(value, str) else list(value or [])
         self.units = list(units or [])
         self.checks = list(checks or [])
         self.rtol, self.explain, self.strict = rtol, explain, strict
@@ -58,6 +61,8 @@ class Output:
             if entry is None:
                 raise InputError(f"--unit {name}: there is no result named {name!r}; the "
                                  f"results are {', '.join(result.results)}")
+            if name in units:
+                raise InputError(f"--unit {name}= given twice: give it once")
             unit = unit.strip()
             entry.value_in(unit)  # refuses a unit of the wrong dimension or rate kind now
             units[name] = unit
@@ -80,8 +85,8 @@ class Output:
             from ..result.checks import run_checks
 
             checks = run_checks(result, self.checks, self.rtol)
-        if self.value is not None:
-            text = encode.bare_value(result, self.value, units)
+        if self.value:
+            text = "\n".join(encode.bare_value(result, name, units) for name in self.value)
             for w in result.warnings:
                 click.echo(f"warning: {one_line(w)}", err=True)
             for c in checks:
@@ -93,11 +98,9 @@ class Output:
         elif self.as_json:
             click.echo(encode.to_json(result, units, checks, self.explain))
         elif _is_terminal():
-            from rich.console import Console
-
             from . import render
 
-            render.rich_text(result, units, self.digits, checks, self.explain, Console())
+            render.rich_text(result, units, self.digits, checks, self.explain, _console())
         else:
             from . import render  # human text only: not for --json or --value (start-up)
 
@@ -110,7 +113,7 @@ class Output:
         words to what was typed, all of which must be empty: the file gives the parameters."""
         from ..batch import run_batch
 
-        for option, used in (("--value", self.value is not None), ("--check", self.checks),
+        for option, used in (("--value", self.value), ("--check", self.checks),
                              ("--explain", self.explain)):
             if used:
                 raise InputError(f"{option} does not go with --batch: {_BATCH_REFUSALS[option]}")
@@ -127,6 +130,8 @@ class Output:
             from ..result.checks import split_assignment  # only with --unit (batch start-up)
 
             name, unit = split_assignment(spec_text, "--unit")
+            if name in units:
+                raise InputError(f"--unit {name}= given twice: give it once")
             units[name] = unit.strip()
         return run_batch(spec, self.batch, as_json=self.as_json, units=units,
                          on_error=self.on_error, debug=self.debug)
@@ -138,6 +143,17 @@ _BATCH_REFUSALS = {
     "--explain": "run one row on its own with --explain",
     "--plot": "draw one row's decay on its own with --plot",
 }
+
+
+def _console():
+    """A rich console as wide as the terminal; ``COLUMNS=0`` or a nonsense width (which rich
+    would take as zero columns, printing nothing) falls back to the terminal's own width."""
+    import shutil
+
+    from rich.console import Console
+
+    width = shutil.get_terminal_size((80, 24)).columns
+    return Console(width=width if width > 0 else 80)
 
 
 def _is_terminal() -> bool:
@@ -216,7 +232,8 @@ def build_command(record, *, rows=None, after=None):
                                  help=parameter.help, **extra)(decorated)
     if record.words is not None:
         decorated = click.argument("words", nargs=-1, metavar=record.words)(decorated)
-    command = click.command(record.name, help=record.help, short_help=record.summary)(decorated)
+    command = click.command(record.name, cls=Command, help=record.help,
+                            short_help=record.summary)(decorated)
     command.record = record
     return command
 
@@ -233,7 +250,7 @@ def output_options(command):
     @functools.wraps(command)
     def wrapper(*args, as_json, value, units, digits, checks, rtol, explain, explain_format,
                 strict_units, batch, on_error, debug, **kwargs):
-        out = Output(as_json=as_json, value=value, units=list(units), digits=digits,
+        out = Output(as_json=as_json, value=list(value), units=list(units), digits=digits,
                      checks=list(checks), rtol=rtol,
                      explain=(explain_format or "text") if explain else False,
                      strict=strict_units,
@@ -244,9 +261,9 @@ def output_options(command):
         click.option("--json", "as_json", is_flag=True,
                      help="Print one JSON object (schema dyncalc/2, full precision; results "
                           "in their canonical SI unit)."),
-        click.option("--value", metavar="NAME", shell_complete=_complete_result,
+        click.option("--value", metavar="NAME", multiple=True, shell_complete=_complete_result,
                      help="Print only the number of result NAME (full precision, in its "
-                          "canonical SI unit)."),
+                          "canonical SI unit); repeatable, one number a line."),
         click.option("--unit", "units", multiple=True, metavar="NAME=UNIT",
                      shell_complete=_complete_result,
                      help="Show result NAME in UNIT, in every form (repeatable), e.g. "

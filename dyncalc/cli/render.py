@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 from ..errors import one_line
 from ..result.encode import explain_format, shown
 from ..result.entries import Entry, Result, format_number
+from .streams import fit
 
 if TYPE_CHECKING:
     from ..result.checks import Check
@@ -45,8 +46,8 @@ def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str,
     rows = []
     for entry in result.results.values():
         value, unit = shown(entry, units)
-        rows.append((entry.name, entry.symbol or entry.name,
-                     _with_uncertainty(entry, value, unit, digits), unit))
+        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name,
+                                    _with_uncertainty(entry, value, unit, digits), unit))))
     return rows
 
 
@@ -100,15 +101,23 @@ def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[
 def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[Check],
               explain: bool | str, console) -> None:
     """Human output on a terminal: a rich table; user text is never read as markup."""
+    from rich.measure import Measurement
     from rich.table import Table
     from rich.text import Text
 
     table = Table(title=Text(_header(result)), title_justify="left")
     for column, justify in (("result", "left"), ("symbol", "left"), ("value", "right"),
                             ("unit", "left")):
-        table.add_column(column, justify=justify)
+        table.add_column(column, justify=justify, no_wrap=True)
     for row in _rows(result, units, digits):
         table.add_row(*(Text(cell) for cell in row))
+    natural = Measurement.get(console, console.options.update_width(1 << 20), table).maximum
+    if natural > console.width:
+        # a terminal narrower than the table: rich would cut the numbers ("5.7006…"); the
+        # plain table instead, its lines left whole for the terminal to wrap
+        console.print(Text(plain_text(result, units, digits, checks, explain)),
+                      soft_wrap=True)
+        return
     console.print(table)
     if (inputs := _inputs_line(result, digits)):
         console.print(Text(inputs, style="dim"))

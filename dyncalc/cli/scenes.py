@@ -5,6 +5,8 @@ import json
 
 import click
 
+from .command import Command
+
 
 def _complete_scene(ctx, param, incomplete):
     from ..scenes import scene_names
@@ -37,7 +39,7 @@ def _describe_param(p) -> dict:
             "default": p.default, "required": required, "description": p.description}
 
 
-@click.command("scenes")
+@click.command("scenes", cls=Command)
 @click.argument("name", required=False, shell_complete=_complete_scene)
 @click.option("--json", "as_json", is_flag=True, help="Print the catalog as JSON.")
 @click.option("--debug", is_flag=True, help="Show a traceback on internal errors.")

@@ -265,8 +265,16 @@ def read(*, c: str | None = None, k: str | None = None, m: str | None = None,
     if form == "--cycles":
         raise InputError("--cycles goes with --ratio R (the ratio x_i / x_(i+N) of two peaks "
                          "N cycles apart)")
-    if omega is not None and (k is not None or m is not None):
+    if form == "--c" and omega is not None:
+        need = " and ".join(f"--{n}" for n, v in (("k", k), ("m", m)) if v is None)
+        raise InputError("--c goes with --k and --m (zeta = c / (2 sqrt(k m))), not with "
+                         f"--omega: give {need or '--k and --m'} instead of --omega")
+    if omega is not None and k is not None and m is not None:
         raise InputError("give the natural frequency as --omega or as --k and --m, not both")
+    if omega is not None and (k is not None or m is not None):
+        given = "--k" if k is not None else "--m"
+        raise InputError(f"{given} does not go with --omega: give the natural frequency as "
+                         "--omega, or as --k and --m")
     if form == "--c":
         if k is None or m is None:
             need = " and ".join(f"--{n}" for n, v in (("k", k), ("m", m)) if v is None)

@@ -23,7 +23,8 @@ from .columns import Columns, column_kernel
 from .numerics import (Wide, finite_nonzero, monomial, root_monomial, sqrt_ratio,
                        sqrt_ratio_array, two_product)
 from .numerics_arrays import hypot_array, monomial_array, root_monomial_array
-from .outcome import Outcome, damped, damped_arrays, periodic, periodic_arrays
+from .outcome import (CRITICAL_BAND, Outcome, damped, damped_arrays, periodic,
+                      periodic_arrays)
 
 __all__ = ["pendulum_spring_dashpot", "rod_in_fluid", "frame_brace_damper",
            "small_damping_error", "FRAME_METHODS", "TWO_PI", "CRITICAL_BAND", "REGIMES",
@@ -389,11 +390,9 @@ def _frame_brace_damper_columns(m, k, d, b0, method: str = "auto", rtol: float =
 #: ``2 pi`` (the float nearest it; its relative error is 3.9e-17).
 TWO_PI = 2.0 * math.pi
 
-#: ``|1 - zeta^2|`` at or below this (``2**-50``, about 8.9e-16) counts as critical damping.
-#: The inputs themselves carry a relative rounding of ``2**-53`` each (more after a unit
-#: conversion), so ``c^2 / (4 k m)`` is only known to about four roundings: a system closer
-#: than that to critical damping cannot be told from critical with float64 inputs.
-CRITICAL_BAND = 2.0 ** -50
+#: ``|1 - zeta^2|`` at or below ``CRITICAL_BAND`` counts as critical damping: defined with
+#: :func:`dyncalc.physics.outcome.damped`, so that every command and scene names the regime
+#: alike (issue 15: a scene called zeta = 1 "overdamped").
 
 #: The regimes, in order of growing damping.
 REGIMES = ("undamped", "underdamped", "critically damped", "overdamped")

@@ -14,7 +14,7 @@ from ..lazy import numpy as np
 from ..units import Q_
 from ..records import Record
 
-__all__ = ["Outcome", "periodic", "damped", "periodic_arrays", "damped_arrays"]
+__all__ = ["Outcome", "periodic", "damped", "periodic_arrays", "damped_arrays", "CRITICAL_BAND"]
 
 
 class Outcome(Record):
@@ -62,13 +62,21 @@ def periodic(omega_si: float, suffix: str = "") -> dict[str, Any]:
             f"T{suffix}": Q_(period, "s")}
 
 
+#: ``|1 - zeta^2|`` at or below this (``2**-50``, about 8.9e-16) counts as critical damping.
+#: The inputs themselves carry a relative rounding of ``2**-53`` each (more after a unit
+#: conversion), so ``c^2 / (4 k m)`` is only known to about four roundings: a system closer
+#: than that to critical damping cannot be told from critical with float64 inputs.
+CRITICAL_BAND = 2.0 ** -50
+
+
 def damped(omega_si: float, zeta: float) -> tuple[dict[str, Any], list[str]]:
     """Damped quantities of an oscillator of natural frequency ``omega_si`` and damping ratio
     ``zeta``: ``zeta``, and for ``zeta < 1`` ``omega_d = omega sqrt((1 - zeta)(1 + zeta))``
     with ``f_d`` and ``T_d`` (the product form keeps its digits for zeta a hair below 1).
 
     Returns ``(values, warnings)``; at or above critical damping there is no damped frequency
-    and a warning says so instead.
+    and a warning says so instead; within :data:`CRITICAL_BAND` of 1 it is critical damping,
+    as ``damping-ratio`` says.
 
     >>> values, warnings = damped(10.0, 0.6)
     >>> values["omega_d"]
@@ -78,7 +86,8 @@ def damped(omega_si: float, zeta: float) -> tuple[dict[str, Any], list[str]]:
     if zeta < 1.0:
         values.update(periodic(omega_si * math.sqrt((1.0 - zeta) * (1.0 + zeta)), "_d"))
         return values, []
-    regime = "critically damped" if zeta == 1.0 else "overdamped"
+    regime = ("critically damped" if abs((1.0 - zeta) * (1.0 + zeta)) <= CRITICAL_BAND
+              else "overdamped")
     return values, [f"zeta = {zeta:.6g}: the system is {regime}; it does not oscillate, so "
                     "there is no damped frequency"]
 

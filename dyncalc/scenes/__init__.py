@@ -165,6 +165,13 @@ def get_scene(name: str) -> Scene:
     _load(until=name)
     scenes = _SCENES if name in _SCENES else catalog()
     if name not in scenes:
+        from difflib import get_close_matches
+
+        close = get_close_matches(name, list(scenes))
+        if close:
+            raise InputError(f"there is no scene {name!r} (did you mean "
+                             f"{' or '.join(repr(c) for c in close)}?); 'dyncalc scenes' "
+                             "lists them all")
         known = ", ".join(scenes) if scenes else "none yet: the catalog is empty"
         raise InputError(f"there is no scene {name!r}; the scenes are: {known}")
     return scenes[name]

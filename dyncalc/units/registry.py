@@ -1,4 +1,4 @@
-"""The one pint registry of the program (built on first use, from pint's cache) and ``Q_``."""
+"""The one pint registry of the program (built on first use, from its disk cache) and ``Q_``."""
 from __future__ import annotations
 
 from typing import Any
@@ -13,15 +13,13 @@ _REGISTRY = None
 
 
 def registry():
-    """The one :class:`pint.UnitRegistry` of the program, built on first use from pint's cache."""
+    """The one :class:`pint.UnitRegistry` of the program, built on first use from the disk
+    cache (:mod:`dyncalc.units.cache`: a bad or unwritable cache never fails a run)."""
     global _REGISTRY
     if _REGISTRY is None:
-        import pint
+        from .cache import build_registry
 
-        try:
-            ureg = pint.UnitRegistry(cache_folder=":auto:")
-        except OSError:  # an unwritable cache folder: build it the slow way
-            ureg = pint.UnitRegistry()
+        ureg = build_registry()
         ureg.define("@alias turn = rev")  # rev/s, rev/min, as engineers write them
         _REGISTRY = ureg
     return _REGISTRY
