@@ -43,7 +43,7 @@ from ..result.entries import Entry, entry_from_parsed
 from ..units import ANGLE, DIMENSIONLESS, parse_quantity, registry
 from . import Scene
 from ..result.kinds import result_kind
-from .runner import (Prepared, check_constraints, compute_values, is_result_name,
+from .runner import (DEFAULT_RTOL, Prepared, check_constraints, compute_values, is_result_name,
                      make_result, read_inputs, set_parameter, _entry, _parameter_list)
 
 __all__ = ["solve"]
@@ -286,6 +286,8 @@ class _Problem:
         self.unit = param.dim.si.replace("^", "**") if param.dim.si else ""
         self.kind_unit = result_kind(target).dim.si
         self.seen: set[str] = set()  # every result name the scene gave at some x
+        # changes of y below this (relative) are rounding or model error, not a turning point
+        self.noise = 8 * max(rtol if rtol else DEFAULT_RTOL, 2.0 ** -52)
         self.samples: list[float] = []
 
     def evaluate(self, x: float):
@@ -515,7 +517,7 @@ class _Problem:
 
         added: dict[float, float] = {}
         touching = []
-        for lo, mid, hi in _turning_points(xs, ys):
+        for lo, mid, hi in _turning_points(xs, ys, self.noise):
             sense = -1.0 if ys[mid] > ys[lo] else 1.0   # a maximum is the minimum of -y
             a, b, c = xs[lo], xs[mid], xs[hi]
             if a > 0 or c < 0:
@@ -552,10 +554,10 @@ class _Problem:
             a, b = gs[i], gs[i + 1]
             if math.isfinite(a) != math.isfinite(b) or (math.isfinite(a) and a * b <= 0):
                 marked.add(i)
-        for i in range(1, len(xs) - 1):
-            a, b, c = gs[i - 1], gs[i], gs[i + 1]
-            if all(math.isfinite(v) for v in (a, b, c)) and (b - a) * (c - b) < 0:
-                marked.update((i - 1, i))
+        for lo, mid, hi in _turning_points(xs, ys, self.noise):
+            # the steps into and out of it and the extreme sample's neighbours (not a long
+            # flat stretch between them: an even function's trough at 0 is flat for decades)
+            marked.update(i for i in (lo, mid - 1, mid, hi - 1) if 0 <= i < len(xs) - 1)
         out_x, out_y = [], []
         for i, x in enumerate(xs):
             out_x.append(x)
@@ -590,20 +592,27 @@ def _merged(xs: list[float], ys: list[float], added: dict[float, float]):
     return order, [points[x] for x in order]
 
 
-def _turning_points(xs: list[float], ys: list[float]):
-    """``(lo, mid, hi)`` indices around every turning point of the finite samples: the slope's
-    sign (steps with equal values skipped) changes between ``lo -> mid`` and ``... -> hi``,
-    and ``ys[mid]`` is beyond both ends (the largest of a peak, the smallest of a trough)."""
+def _turning_points(xs: list[float], ys: list[float], noise: float):
+    """``(lo, mid, hi)`` indices around every turning point of the finite samples: the
+    direction of the steps changes between ``lo -> ...`` and ``... -> hi``, counting only
+    steps larger than ``noise`` relative (the rounding or model error of a result that is flat
+    to it, an asymptote, is no extremum), and ``ys[mid]`` is the largest (smallest) sample
+    between them, beyond both ends."""
     out = []
     run: list[int] = []
     for i in range(len(xs) + 1):
         if i < len(xs) and math.isfinite(ys[i]):
             run.append(i)
             continue
-        steps = [(run[k], run[k + 1]) for k in range(len(run) - 1) if ys[run[k]] != ys[run[k + 1]]]
+        steps = [(a, b) for a, b in zip(run, run[1:])
+                 if abs(ys[b] - ys[a]) > noise * max(abs(ys[a]), abs(ys[b]))]
         for (a, b), (c, d) in zip(steps, steps[1:]):
-            if (ys[b] > ys[a]) != (ys[d] > ys[c]):
-                out.append((a, b, d))
+            rising = ys[b] > ys[a]
+            if rising != (ys[d] > ys[c]):
+                inner = range(b, c + 1)
+                mid = max(inner, key=ys.__getitem__) if rising else \
+                    min(inner, key=ys.__getitem__)
+                out.append((a, mid, d))
         run = []
     return out
 
