@@ -501,10 +501,15 @@ class _Problem:
 
             edge, _tried = float_boundary(answers, good, bad)
             added.update(known)
-            if edge not in known:
-                added[edge] = self.y(edge)
-            for x in float_approach(edge, good):
-                added[x] = self.y(x)
+            at_edge = known[edge] if edge in known else self.y(edge)
+            added[edge] = at_edge
+            # from afar inward, until the values are those of the edge itself (a result that
+            # is smooth up to the edge: the edge brackets the rest; one that diverges or
+            # ends there: down to the last float)
+            for x in reversed(float_approach(edge, good)):
+                added[x] = y = self.y(x)
+                if math.isfinite(y) and abs(y - at_edge) <= self.noise * abs(at_edge):
+                    break
         return _merged(xs, ys, added)
 
     def _extrema(self, xs: list[float], ys: list[float], goal: float):
@@ -524,7 +529,7 @@ class _Problem:
                 sign = 1.0 if a > 0 else -1.0
                 to_x = (lambda u, sign=sign: sign * math.exp(u))
                 bracket = [math.log(abs(v)) for v in (a, b, c)]
-                xtol, rtol = 1e-15, 0.0
+                xtol, rtol = 1.5e-8, 0.0   # sqrt(eps) relative in x: y to rounding
             else:
                 to_x = (lambda u: u)
                 bracket, xtol, rtol = [a, b, c], 1e-300, 1.5e-8
