@@ -9,9 +9,15 @@ conditioning is good (the known value is met to a few ulp); near an extremum a t
 its rounding error into the root divided by the slope there, hence ROOT_TOL.
 """
 import math
+import re
+import shlex
+from pathlib import Path
 
 import mpmath
 import pytest
+from click.testing import CliRunner
+
+from dyncalc.cli import cli
 
 from dyncalc.commands.natural_frequency import compute_scene
 from dyncalc.errors import InputError
@@ -265,3 +271,26 @@ def test_a_solve_stays_cheap(scene_name, texts):
     except InputError:
         pass
     assert 0 < len(calls) <= SOLVE_CALLS, len(calls)
+
+
+# -- docs/inverse.md: its examples are real --------------------------------------------------
+
+DOC = Path(__file__).resolve().parents[1] / "docs" / "inverse.md"
+
+
+def doc_examples():
+    examples = []
+    for block in re.findall(r"```console\n(.*?)```", DOC.read_text(encoding="utf-8"), re.S):
+        for chunk in block.split("$ ")[1:]:
+            command, *output = chunk.rstrip("\n").split("\n")
+            examples.append(pytest.param(command, output, id=command[:60]))
+    return examples
+
+
+@pytest.mark.parametrize("command, expected", doc_examples())
+def test_docs_inverse_examples(command, expected):
+    words = shlex.split(command)
+    assert words[0] == "dyncalc"
+    result = CliRunner().invoke(cli, words[1:])
+    assert result.output.splitlines() == expected
+    assert result.exit_code == (2 if expected[-1].startswith("Error: ") else 0)

@@ -11,21 +11,26 @@ How (decided here; README.md, "Homework and design helpers"):
    the scene itself (log-slopes at three points six decades apart must agree to 1e-9 and ``a``
    must be a simple fraction p/q, q <= 4), then ``x = x1 (y / y1)^(1/a)``, the exact inversion
    of the monomial, checked by computing the scene at ``x``.
-2. Otherwise a **bracketed root find**: the scene is computed on a grid of the unknown's range
-   (every fifth decade from 1e-300 to 1e300 for a positive parameter, both signs and zero for
-   a signed one, 2 degree steps for an angle below 180 degrees), refined to 10 points a
-   decade (1/4 degree) next to every sign change, turning point and edge of the range where
-   the scene answers; each sign change of ``y(x) - target`` is a
-   guaranteed bracket, refined by Brent's method (scipy) to full precision. Every root found is
-   reported (``k_1``, ``k_2``, ... ascending) with a warning that there are several; none is
-   refused with the range the result takes; a result that does not depend on the unknown (or
-   more than :data:`MAX_ROOTS` roots) is refused, and so is a result the scene never gives.
-   With an expensive ``--method`` (an ODE), the scan uses the cheapest model good to 1e-6
-   and each root is then bracketed anew, close by, with the method asked for.
+2. Otherwise a **bracketed root find** (docs/inverse.md): the scene is computed on a coarse
+   grid of the unknown's whole domain (every fifth decade from 5e-324 to 1.8e308 for a positive
+   parameter, both signs and zero for a signed one, 2 degree steps from 0 to 180 degrees for
+   an angle); a result that takes one value there does not depend on the unknown and is
+   refused at once. The grid is refined (10 points a decade, 1/4 degree) next to every sign
+   change of ``y(x) - target``, turning point and edge; every **edge** of where the scene
+   answers is located to adjacent floats and approached 1, 2, 4, ... floats away
+   (:func:`~dyncalc.physics.numerics.float_boundary`, ``float_approach``), and every
+   **extremum** is located by Brent's minimisation (``bracketed_minimum``) and added, so the
+   two roots beside a peak are split. Each sign change between neighbouring samples is a
+   guaranteed bracket, refined by Brent's method (scipy) to full precision; an extremum
+   within :data:`TOUCH` of the target is one double root. Every root is reported (``k_1``,
+   ``k_2``, ... ascending) with a warning that there are several; none is refused with the
+   range the result takes; more than :data:`MAX_ROOTS` roots are refused, and so is a result
+   the scene never gives. With an expensive ``--method`` (an ODE), the scan uses the cheapest
+   model good to 1e-6 and each root is then bracketed anew, close by, with the method asked
+   for.
 
-Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
-catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
-spring), far enough apart.
+Two roots inside one refined interval with no sampled turning point between them can be
+missed; the scenes of the catalog have at most two, split by a sampled extremum.
 
 Uncertainties: the Result's ``sensitivity`` (:func:`_sensitivity`) applies the implicit
 function theorem at the roots found, with the scene's partial derivatives by central
@@ -48,7 +53,8 @@ from .runner import (DEFAULT_RTOL, Prepared, check_constraints, compute_values, 
 
 __all__ = ["solve"]
 
-#: Positive parameters are searched from 10^LOW to 10^HIGH (in SI), every STEP decades.
+#: Positive parameters are searched from 10^LOW to 10^HIGH (in SI), every STEP decades, and at
+#: the ends of the float range (TINY, HUGE below).
 LOW, HIGH, STEP = -300, 300, 5
 #: The ends of a positive parameter's grid: the smallest and the largest positive floats.
 TINY, HUGE = 5e-324, 1.7976931348623157e308
