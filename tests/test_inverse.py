@@ -428,12 +428,13 @@ def test_no_solution():
 
 
 def test_no_solution_range_is_the_range_tried():
-    """k runs over 1e-300 ... 1e300 N/m: f from sqrt(1e-300/2)/2pi = 1.1254e-151 Hz to
-    1.1254e+149 Hz. f never reaches 0 for a positive k, so the message must not say it does
-    (the range is of the values computed, not of y - goal + goal)."""
+    """k runs over the whole positive float range, 5e-324 ... 1.8e308 N/m (issue 15: the
+    domain's edges are searched too): f from sqrt(5e-324/2)/2pi = 2.50148e-163 Hz to
+    sqrt(1.8e308/2)/2pi = 1.50891e+153 Hz. f never reaches 0 for a positive k, so the message
+    must not say it does (the range is of the values computed, not of y - goal + goal)."""
     line = refusal("f=-5Hz", "m=2kg")
-    low = math.sqrt(1e-300 / 2) / TWO_PI
-    high = math.sqrt(1e300 / 2) / TWO_PI
+    low = math.sqrt(5e-324) / math.sqrt(2) / TWO_PI   # 5e-324 / 2 itself underflows
+    high = math.sqrt(1.7976931348623157e308 / 2) / TWO_PI
     assert line == ("Error: no value of k gives f = -5 Hz in mass-spring with the other "
                     f"parameters given; over the values of k tried it ranges from {low:.6g} "
                     f"to {high:.6g} Hz")
@@ -441,11 +442,13 @@ def test_no_solution_range_is_the_range_tried():
 
 def test_no_solution_for_an_angle_names_the_range():
     """A pendulum is never faster than its small-angle period 2 pi sqrt(l/g) = 2.00641 s; the
-    amplitude grid ends at 180 - 1e-7 deg, where T = 4 K(sin^2(theta0/2))/omega_0."""
+    amplitude search ends at the edge of the domain (issue 15), the last float below pi
+    (3.1415926535897927: pi itself is refused), where T = 4 K(sin^2(theta0/2))/omega_0."""
     omega0 = mpmath.sqrt(mpmath.mpf(G0))
     t_min = float(2 * mpmath.pi / omega0)
-    last = mpmath.radians(180 - mpmath.mpf(10) ** -7)
-    t_max = float(4 * mpmath.ellipk(mpmath.sin(last / 2) ** 2) / omega0)
+    with mpmath.workdps(60):  # 1 - sin^2(last/2) is about 8e-32
+        last = mpmath.mpf(math.nextafter(math.pi, 0.0))
+        t_max = float(4 * mpmath.ellipk(mpmath.sin(last / 2) ** 2) / mpmath.sqrt(G0))
     line = refusal("--scene", "pendulum", "l=1m", "amplitude=?", "T=1s")
     assert line == ("Error: no value of amplitude gives T = 1 s in pendulum with the other "
                     "parameters given; over the values of amplitude tried it ranges from "

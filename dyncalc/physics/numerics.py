@@ -15,7 +15,8 @@ __all__ = ["series_sum", "parallel_sum", "monomial", "two_product", "agm",
            "half_complement_sin", "pendulum_period_factor", "sqrt_ratio", "sqrt_ratio_array",
            "root_monomial", "Wide", "agm_array",
            "agm_compensated", "pendulum_series", "one_minus_square", "guarded_acos",
-           "bracketed_root", "Root", "cross_product"]
+           "bracketed_root", "Root", "cross_product", "float_boundary", "float_approach",
+           "bracketed_minimum", "Minimum"]
 
 
 def two_product(a: float, b: float) -> tuple[float, float]:
@@ -751,6 +752,146 @@ def bracketed_root(f, a: float, b: float, *, xtol: float = 0.0, rtol: float = 0.
         bisect = 2 * (_ordinal(b) - _ordinal(a)) > counts[0]
     x = a if abs(fa) <= abs(fb) else b
     return Root(x, a, b, iterations, reason)
+
+
+def float_boundary(inside, good: float, bad: float, *, max_iter: int = 80):
+    """The float next to ``bad`` where a two-valued property changes: ``(edge, tried)`` with
+    ``inside(edge)`` true, ``inside`` false at the float after ``edge`` toward ``bad``, and
+    ``tried`` every ``(x, inside(x))`` evaluated.
+
+    Bisection *in the order of the floats* (:func:`_ordinal`): each step halves the number of
+    floats between the two ends, so at most 64 steps reach adjacent floats whatever the span
+    (``[1e-300, 1e300]`` as ``[1, 2]``). ``inside(good)`` is assumed true and ``inside(bad)``
+    false; if the property changes more than once in between, one of the changes is found.
+
+    >>> edge, tried = float_boundary(lambda x: x < 0.3, 0.0, 1.0)
+    >>> edge == math.nextafter(0.3, 0.0), len(tried) <= 64
+    (True, True)
+    """
+    lo, hi = _ordinal(float(good)), _ordinal(float(bad))
+    tried = []
+    for _ in range(max_iter):
+        if abs(hi - lo) <= 1:
+            break
+        mid = lo + (hi - lo) // 2
+        x = _from_ordinal(mid)
+        ok = bool(inside(x))
+        tried.append((x, ok))
+        if ok:
+            lo = mid
+        else:
+            hi = mid
+    return _from_ordinal(lo), tried
+
+
+def float_approach(edge: float, toward: float) -> list[float]:
+    """Floats approaching ``edge`` geometrically from the side of ``toward``: those 1, 2, 4,
+    ..., 2^k floats away from it (in the order of the floats, :func:`_ordinal`), strictly
+    between the two, nearest first.
+
+    Next to an edge where a result diverges or ends (a track radius R just above the body's r,
+    an amplitude just below 90 degrees) the points lie at relative distances 2^-52, 2^-51, ...
+    from it, so a result that varies like a power or a logarithm of the distance is sampled
+    evenly in its own scale; at most 63 points.
+
+    >>> float_approach(1.0, 1.0 + 2.0 ** -50)
+    [1.0000000000000002, 1.0000000000000004]
+    >>> float_approach(0.0, 1.0)[:2], len(float_approach(0.0, 1.0))
+    ([5e-324, 1e-323], 62)
+    """
+    start, stop = _ordinal(float(edge)), _ordinal(float(toward))
+    step = 1 if stop > start else -1
+    points, k = [], 0
+    while k < 64 and (1 << k) < abs(stop - start):
+        points.append(_from_ordinal(start + step * (1 << k)))
+        k += 1
+    return points
+
+
+class Minimum(NamedTuple):
+    """What :func:`bracketed_minimum` found: ``x``, ``fx = f(x)`` and the evaluations made."""
+
+    x: float
+    fx: float
+    evaluations: int
+
+
+#: The golden section's smaller part, (3 - sqrt 5)/2.
+_GOLDEN = 0.5 * (3.0 - math.sqrt(5.0))
+
+
+def bracketed_minimum(f, a: float, b: float, c: float, *, xtol: float = 1e-300,
+                      rtol: float = 1.5e-8, max_iter: int = 100) -> Minimum:
+    """A local minimum of ``f`` inside a bracket ``a < b < c`` (either order) with
+    ``f(b) <= f(a)`` and ``f(b) <= f(c)``: Brent's method.
+
+    Parabolic interpolation through the three best points so far, safeguarded by golden-section
+    steps (taken whenever the parabola's step falls outside the bracket or is not smaller than
+    half the step before last), so the bracket shrinks at least geometrically and the
+    convergence is superlinear where ``f`` is smooth. Stops when the bracket is within
+    ``2 (rtol |x| + xtol)`` of ``x`` (the default ``rtol`` is ``sqrt(eps)``: the values of a
+    smooth ``f`` cannot place its minimum closer) or after ``max_iter`` evaluations. A NaN of ``f`` counts as
+    ``+inf`` (a point outside where ``f`` answers is never the minimum). A maximum is the
+    minimum of ``-f``. Since ``f`` is flat at its minimum, ``x`` is determined only to about
+    ``sqrt(eps) |x|`` by the values, ``fx`` to about ``eps |fx|``.
+
+    Reference: R. P. Brent, *Algorithms for Minimization without Derivatives* (1973), ch. 5.
+
+    >>> m = bracketed_minimum(lambda x: (x - 2.0) ** 2 + 1.0, 0.0, 1.0, 5.0)
+    >>> abs(m.x - 2.0) < 1e-7, m.fx, m.evaluations < 20
+    (True, 1.0, True)
+    """
+    def value(x: float) -> float:
+        y = float(f(x))
+        return math.inf if math.isnan(y) else y
+
+    lo, hi = (a, c) if a < c else (c, a)
+    x = w = v = float(b)
+    fx = fw = fv = value(x)
+    step = before = 0.0        # the last step and the one before it
+    evaluations = 1
+    while evaluations < max_iter:
+        mid = 0.5 * (lo + hi)
+        tol = rtol * abs(x) + xtol
+        if abs(x - mid) <= 2.0 * tol - 0.5 * (hi - lo):
+            break
+        golden = True
+        if abs(before) > tol:  # try the parabola through x, w, v
+            r = (x - w) * (fx - fv)
+            q = (x - v) * (fx - fw)
+            p = (x - v) * q - (x - w) * r
+            q = 2.0 * (q - r)
+            if q > 0.0:
+                p = -p
+            q = abs(q)
+            if abs(p) < abs(0.5 * q * before) and q * (lo - x) < p < q * (hi - x):
+                before, step = step, p / q
+                u = x + step
+                if u - lo < 2.0 * tol or hi - u < 2.0 * tol:
+                    step = tol if x < mid else -tol
+                golden = False
+        if golden:
+            before = (lo - x) if x >= mid else (hi - x)
+            step = _GOLDEN * before
+        u = x + (step if abs(step) >= tol else math.copysign(tol, step))
+        fu = value(u)
+        evaluations += 1
+        if fu <= fx:
+            if u >= x:
+                lo = x
+            else:
+                hi = x
+            v, fv, w, fw, x, fx = w, fw, x, fx, u, fu
+        else:
+            if u < x:
+                lo = u
+            else:
+                hi = u
+            if fu <= fw or w == x:
+                v, fv, w, fw = w, fw, u, fu
+            elif fu <= fv or v == x or v == w:
+                v, fv = u, fu
+    return Minimum(x, fx, evaluations)
 
 
 def cross_product(a, b) -> np.ndarray:

@@ -11,21 +11,26 @@ How (decided here; README.md, "Homework and design helpers"):
    the scene itself (log-slopes at three points six decades apart must agree to 1e-9 and ``a``
    must be a simple fraction p/q, q <= 4), then ``x = x1 (y / y1)^(1/a)``, the exact inversion
    of the monomial, checked by computing the scene at ``x``.
-2. Otherwise a **bracketed root find**: the scene is computed on a grid of the unknown's range
-   (every fifth decade from 1e-300 to 1e300 for a positive parameter, both signs and zero for
-   a signed one, 2 degree steps for an angle below 180 degrees), refined to 10 points a
-   decade (1/4 degree) next to every sign change, turning point and edge of the range where
-   the scene answers; each sign change of ``y(x) - target`` is a
-   guaranteed bracket, refined by Brent's method (scipy) to full precision. Every root found is
-   reported (``k_1``, ``k_2``, ... ascending) with a warning that there are several; none is
-   refused with the range the result takes; a result that does not depend on the unknown (or
-   more than :data:`MAX_ROOTS` roots) is refused, and so is a result the scene never gives.
-   With an expensive ``--method`` (an ODE), the scan uses the cheapest model good to 1e-6
-   and each root is then bracketed anew, close by, with the method asked for.
+2. Otherwise a **bracketed root find** (docs/inverse.md): the scene is computed on a coarse
+   grid of the unknown's whole domain (every fifth decade from 5e-324 to 1.8e308 for a positive
+   parameter, both signs and zero for a signed one, 2 degree steps from 0 to 180 degrees for
+   an angle); a result that takes one value there does not depend on the unknown and is
+   refused at once. The grid is refined (10 points a decade, 1/4 degree) next to every sign
+   change of ``y(x) - target``, turning point and edge; every **edge** of where the scene
+   answers is located to adjacent floats and approached 1, 2, 4, ... floats away
+   (:func:`~dyncalc.physics.numerics.float_boundary`, ``float_approach``), and every
+   **extremum** is located by Brent's minimisation (``bracketed_minimum``) and added, so the
+   two roots beside a peak are split. Each sign change between neighbouring samples is a
+   guaranteed bracket, refined by Brent's method (scipy) to full precision; an extremum
+   within :data:`TOUCH` of the target is one double root. Every root is reported (``k_1``,
+   ``k_2``, ... ascending) with a warning that there are several; none is refused with the
+   range the result takes; more than :data:`MAX_ROOTS` roots are refused, and so is a result
+   the scene never gives. With an expensive ``--method`` (an ODE), the scan uses the cheapest
+   model good to 1e-6 and each root is then bracketed anew, close by, with the method asked
+   for.
 
-Roots closer together than the fine grid's spacing (1/10 decade) can be missed; the scenes of the
-catalog have at most two solutions (the bead on a rotating ring, the rod with a torsion
-spring), far enough apart.
+Two roots inside one refined interval with no sampled turning point between them can be
+missed; the scenes of the catalog have at most two, split by a sampled extremum.
 
 Uncertainties: the Result's ``sensitivity`` (:func:`_sensitivity`) applies the implicit
 function theorem at the roots found, with the scene's partial derivatives by central
@@ -43,19 +48,29 @@ from ..result.entries import Entry, entry_from_parsed
 from ..units import ANGLE, DIMENSIONLESS, parse_quantity, registry
 from . import Scene
 from ..result.kinds import result_kind
-from .runner import (Prepared, check_constraints, compute_values, is_result_name,
+from .runner import (DEFAULT_RTOL, Prepared, check_constraints, compute_values, is_result_name,
                      make_result, read_inputs, set_parameter, _entry, _parameter_list)
 
 __all__ = ["solve"]
 
-#: Positive parameters are searched from 10^LOW to 10^HIGH (in SI), every STEP decades.
+#: Positive parameters are searched from 10^LOW to 10^HIGH (in SI), every STEP decades, and at
+#: the ends of the float range (TINY, HUGE below).
 LOW, HIGH, STEP = -300, 300, 5
+#: The ends of a positive parameter's grid: the smallest and the largest positive floats.
+TINY, HUGE = 5e-324, 1.7976931348623157e308
 #: Points in each coarse interval next to a sign change or a turning point (10 a decade).
 FINE = 50
 #: An angle's coarse grid step (degrees) and its refinement (to 1/4 degree).
 ANGLE_STEP, FINE_ANGLE = 2, 8
 #: More roots than this: the result hardly depends on the unknown; refused.
 MAX_ROOTS = 8
+#: An extremum of the result within this relative distance of the goal is a (double) root:
+#: the goal and the extremum's value are each a rounding or two from the exact ones.
+TOUCH = 4 * 2.0 ** -52
+
+
+class _Independent(InputError):
+    """The result does not depend on the unknown: final, whichever model scans."""
 
 
 def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method, rtol,
@@ -277,6 +292,8 @@ class _Problem:
         self.unit = param.dim.si.replace("^", "**") if param.dim.si else ""
         self.kind_unit = result_kind(target).dim.si
         self.seen: set[str] = set()  # every result name the scene gave at some x
+        # changes of y below this (relative) are rounding or model error, not a turning point
+        self.noise = 8 * max(rtol if rtol else DEFAULT_RTOL, 2.0 ** -52)
         self.samples: list[float] = []
 
     def evaluate(self, x: float):
@@ -321,8 +338,9 @@ class _Problem:
         ANGLE_STEP degrees of an angle up to 180."""
         if self.param.dim is ANGLE:  # and a tail toward 180 degrees, where periods diverge
             tail = [180 - 10.0 ** -k for k in range(0, 8)]
-            return [math.radians(d) for d in [*range(0, 180, ANGLE_STEP), *tail]]
-        decades = [10.0 ** e for e in range(LOW, HIGH + 1, STEP)]
+            return [math.radians(d) for d in [*range(0, 180, ANGLE_STEP), *tail]] + [math.pi]
+        # the domain's own ends: the smallest subnormal and the largest float
+        decades = [TINY, *(10.0 ** e for e in range(LOW, HIGH + 1, STEP)), HUGE]
         if self.param.constraint == "positive":
             return decades
         if self.param.constraint == "nonnegative":
@@ -378,6 +396,8 @@ class _Problem:
         scout = _Problem(self.scene, self.prepared, self.param, self.target, None, 1e-6)
         try:
             near = scout._bracketed(goal)
+        except _Independent:
+            raise  # whatever the model: no need to scan again with the expensive one
         except InputError:
             return None
         roots = []
@@ -416,28 +436,31 @@ class _Problem:
         return xs[1], ys[1], a
 
     def _bracketed(self, goal: float) -> list[float]:
+        """Every root of ``y - goal``: the coarse grid, refined next to sign changes, turning
+        points and edges (:meth:`_refine`), every edge of where the scene answers approached
+        to the last float (:meth:`_edges`), every extremum located (:meth:`_extrema`); then
+        each sign change between neighbours is a bracket, and an extremum that reaches the
+        goal to rounding is a (double) root."""
         xs = self.grid()
         ys = [self.y(x) for x in xs]
-        xs, ys = self._refine(xs, ys, goal)
         self.samples = [y for y in ys if math.isfinite(y)]
         if self.target not in self.seen:
             return []
-        if len(self.samples) > 1 and max(self.samples) - min(self.samples) <= \
-                1e-12 * max(abs(v) for v in self.samples):
-            raise InputError(f"{self.target} does not depend on {self.param.name} in "
-                             f"{self.scene.name} (it is {self.samples[0]:.6g} whatever "
-                             f"{self.param.name} is): {self.param.name} cannot be solved for "
-                             f"from {self.target}")
+        self._refuse_flat()  # on the coarse grid: every interval would be refined otherwise
+        xs, ys = self._refine(xs, ys, goal)
+        xs, ys = self._edges(xs, ys)
+        xs, ys, touching = self._extrema(xs, ys, goal)
+        self.samples = [y for y in ys if math.isfinite(y)]
         from scipy.optimize import brentq
 
         gs = [y - goal for y in ys]
-        roots = []
+        roots = list(touching)
         for (x0, g0), (x1, g1) in zip(zip(xs, gs), zip(xs[1:], gs[1:])):
             if not (math.isfinite(g0) and math.isfinite(g1)):
                 continue
             if g0 == 0:
                 roots.append(x0)
-            elif g0 * g1 < 0:
+            elif (g0 > 0) != (g1 > 0) and g1 != 0:  # signs, not a product that underflows
                 try:
                     roots.append(brentq(lambda x: self.y(x) - goal, x0, x1, xtol=1e-300,
                                         rtol=4 * np.finfo(float).eps, maxiter=200))
@@ -445,13 +468,92 @@ class _Problem:
                     continue
         if gs and math.isfinite(gs[-1]) and gs[-1] == 0:
             roots.append(xs[-1])
-        roots = _distinct(roots)
+        roots = _distinct(_touched(roots, touching, xs, gs, TOUCH * abs(goal)))
         if len(roots) > MAX_ROOTS:
             raise InputError(f"{len(roots)} values of {self.param.name} give {self.target} = "
                              f"{goal:.6g} {self.kind_unit} in {self.scene.name}; give "
                              f"{self.param.name} and solve for another parameter")
         return roots
 
+    def _refuse_flat(self) -> None:
+        """Refuse a target that takes one value on the whole grid: it does not depend on the
+        unknown."""
+        if len(self.samples) > 1 and max(self.samples) - min(self.samples) <= \
+                1e-12 * max(abs(v) for v in self.samples):
+            raise _Independent(f"{self.target} does not depend on {self.param.name} in "
+                               f"{self.scene.name} (it is {self.samples[0]:.6g} whatever "
+                               f"{self.param.name} is): {self.param.name} cannot be solved "
+                               f"for from {self.target}")
+
+    def _edges(self, xs: list[float], ys: list[float]):
+        """The samples with every edge of where the scene answers (a finite result next to a
+        refused or infinite one) located to adjacent floats (:func:`float_boundary`) and
+        approached from the answering side 1, 2, 4, ... floats away (:func:`float_approach`):
+        a result that diverges or ends there (``R -> r``, an amplitude -> 90 degrees) is then
+        sampled evenly in its own scale, down to the last float."""
+        from ..physics.numerics import float_approach, float_boundary
+
+        added: dict[float, float] = {}
+        for i in range(len(xs) - 1):
+            fine = [math.isfinite(ys[i]), math.isfinite(ys[i + 1])]
+            if fine[0] == fine[1]:
+                continue
+            good, bad = (xs[i], xs[i + 1]) if fine[0] else (xs[i + 1], xs[i])
+            known: dict[float, float] = {}
+
+            def answers(x: float, known=known) -> bool:
+                known[x] = self.y(x)
+                return math.isfinite(known[x])
+
+            edge, _tried = float_boundary(answers, good, bad)
+            added.update(known)
+            at_edge = known[edge] if edge in known else self.y(edge)
+            added[edge] = at_edge
+            # from afar inward, until the values are those of the edge itself (a result that
+            # is smooth up to the edge: the edge brackets the rest; one that diverges or
+            # ends there: down to the last float)
+            for x in reversed(float_approach(edge, good)):
+                added[x] = y = self.y(x)
+                if math.isfinite(y) and abs(y - at_edge) <= self.noise * abs(at_edge):
+                    break
+        return _merged(xs, ys, added)
+
+    def _extrema(self, xs: list[float], ys: list[float], goal: float):
+        """The samples with the extremum inside every turning point of the samples (where the
+        sign of the slope changes, flat steps skipped) located by a bracketed minimisation
+        (:func:`bracketed_minimum`, in ``log |x|`` where the bracket keeps one sign): two roots
+        on either side of a peak are then split by it. Also the extrema that meet the goal to
+        rounding (a double root at the peak itself)."""
+        from ..physics.numerics import bracketed_minimum
+
+        added: dict[float, float] = {}
+        touching = []
+        for lo, mid, hi in _turning_points(xs, ys, self.noise):
+            sense = -1.0 if ys[mid] > ys[lo] else 1.0   # a maximum is the minimum of -y
+            a, b, c = xs[lo], xs[mid], xs[hi]
+            if a > 0 or c < 0:
+                sign = 1.0 if a > 0 else -1.0
+                to_x = (lambda u, sign=sign: sign * math.exp(u))
+                bracket = [math.log(abs(v)) for v in (a, b, c)]
+                xtol, rtol = 1.5e-8, 0.0   # sqrt(eps) relative in x: y to rounding
+            else:
+                to_x = (lambda u: u)
+                bracket, xtol, rtol = [a, b, c], 1e-300, 1.5e-8
+            seen: dict[float, float] = {}
+
+            def objective(u: float, to_x=to_x, seen=seen, sense=sense) -> float:
+                x = to_x(u)
+                seen[x] = self.y(x)
+                return sense * seen[x]
+
+            best = bracketed_minimum(objective, *bracket, xtol=xtol, rtol=rtol, max_iter=60)
+            added.update(seen)
+            x_best = to_x(best.x)
+            y_best = seen.get(x_best, math.nan)
+            if math.isfinite(y_best) and abs(y_best - goal) <= TOUCH * abs(goal):
+                touching.append(x_best)
+        xs, ys = _merged(xs, ys, added)
+        return xs, ys, touching
     def _refine(self, xs: list[float], ys: list[float], goal: float):
         """Add FINE points to every coarse interval next to a sign change of ``y - goal``,
         a turning point or the edge of where the scene answers, so that two roots close
@@ -463,10 +565,10 @@ class _Problem:
             a, b = gs[i], gs[i + 1]
             if math.isfinite(a) != math.isfinite(b) or (math.isfinite(a) and a * b <= 0):
                 marked.add(i)
-        for i in range(1, len(xs) - 1):
-            a, b, c = gs[i - 1], gs[i], gs[i + 1]
-            if all(math.isfinite(v) for v in (a, b, c)) and (b - a) * (c - b) < 0:
-                marked.update((i - 1, i))
+        for lo, mid, hi in _turning_points(xs, ys, self.noise):
+            # the steps into and out of it and the extreme sample's neighbours (not a long
+            # flat stretch between them: an even function's trough at 0 is flat for decades)
+            marked.update(i for i in (lo, mid - 1, mid, hi - 1) if 0 <= i < len(xs) - 1)
         out_x, out_y = [], []
         for i, x in enumerate(xs):
             out_x.append(x)
@@ -489,6 +591,63 @@ class _Problem:
                     f"{self.kind_unit}".rstrip())
         return (f"no value of {self.param.name} gives {self.target} = {goal_text} in "
                 f"{self.scene.name} with the other parameters given{span}")
+
+
+def _merged(xs: list[float], ys: list[float], added: dict[float, float]):
+    """The samples ``xs, ys`` with ``added`` (x -> y) merged in, ascending in x."""
+    if not added:
+        return xs, ys
+    points = dict(zip(xs, ys))
+    points.update(added)
+    order = sorted(points)
+    return order, [points[x] for x in order]
+
+
+def _turning_points(xs: list[float], ys: list[float], noise: float):
+    """``(lo, mid, hi)`` indices around every turning point of the finite samples: the
+    direction of the steps changes between ``lo -> ...`` and ``... -> hi``, counting only
+    steps larger than ``noise`` relative (the rounding or model error of a result that is flat
+    to it, an asymptote, is no extremum), and ``ys[mid]`` is the largest (smallest) sample
+    between them, beyond both ends."""
+    out = []
+    run: list[int] = []
+    for i in range(len(xs) + 1):
+        if i < len(xs) and math.isfinite(ys[i]):
+            run.append(i)
+            continue
+        steps = [(a, b) for a, b in zip(run, run[1:])
+                 if abs(ys[b] - ys[a]) > noise * max(abs(ys[a]), abs(ys[b]))]
+        for (a, b), (c, d) in zip(steps, steps[1:]):
+            rising = ys[b] > ys[a]
+            if rising != (ys[d] > ys[c]):
+                inner = range(b, c + 1)
+                mid = max(inner, key=ys.__getitem__) if rising else \
+                    min(inner, key=ys.__getitem__)
+                out.append((a, mid, d))
+        run = []
+    return out
+
+
+def _touched(roots: list[float], touching: list[float], xs: list[float], gs: list[float],
+             band: float) -> list[float]:
+    """``roots`` with those that an extremum touching the goal absorbs: the roots from which
+    ``y - goal`` stays within rounding (``band``) of zero all the way to the extremum. They
+    are the one double root there, split by rounding noise (the values near a peak are flat to
+    about ``sqrt(eps)`` of ``x``)."""
+    if not touching:
+        return roots
+    kept = []
+    for r in roots:
+        absorbed = False
+        for t in touching:
+            lo, hi = min(r, t), max(r, t)
+            between = [g for x, g in zip(xs, gs) if lo <= x <= hi]
+            if all(math.isfinite(g) and abs(g) <= band for g in between):
+                absorbed = True
+                break
+        if not absorbed:
+            kept.append(r)
+    return kept + list(touching)
 
 
 def _distinct(roots: list[float]) -> list[float]:
