@@ -4,8 +4,8 @@ The Python API (docs/api.md) is one function per command, taking the command's p
 keywords (:mod:`dyncalc.api`)::
 
     >>> import dyncalc
-    >>> dyncalc.natural_frequency(k="2 kN/m", m=4)["omega"]
-    <Quantity(22.360679774997898, 'radian / second')>
+    >>> print(dyncalc.natural_frequency(k="2 kN/m", m=4)["omega"])
+    22.360679774997898 radian / second
 
 and the formula library the command line is built on::
 

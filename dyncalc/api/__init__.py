@@ -5,8 +5,8 @@
     >>> import pint, dyncalc
     >>> ureg = pint.UnitRegistry()
     >>> r = dyncalc.natural_frequency(k=ureg.Quantity(2, "kN/m"), m="4 kg")
-    >>> r["f"]
-    <Quantity(3.5588127170858854, 'hertz')>
+    >>> print(r["f"])
+    3.5588127170858854 hertz
 
 Parameters are keywords named as on the command line (``k=``, ``m=``, ``scene=``,
 ``method=``); a scene's parameters are further keywords (``J=``, ``a=``), a spring network's

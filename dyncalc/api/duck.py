@@ -45,8 +45,6 @@ def call_xarray(record, settings, slots, values, rtol, strict, registry) -> Arra
     adds a last dim ``component``) wrapping the Quantity."""
     import xarray as xr
 
-    from .call import call
-
     kind = xarray_type()
     positions = [i for i, v in enumerate(values) if isinstance(v, kind)]
     template = xr.broadcast(*[values[i] for i in positions])
@@ -56,19 +54,19 @@ def call_xarray(record, settings, slots, values, rtol, strict, registry) -> Arra
         unit = array.attrs.get("units")
         plain[i] = data if is_quantity(data) or not unit else Tagged(data, str(unit))
     first = template[0]
-    inner = _call_plain(call, record, settings, slots, plain, rtol, strict, registry)
+    inner = _call_plain(record, settings, slots, plain, rtol, strict, registry)
     out = {}
     for name in inner:
         value = inner[name]
         dims = first.dims + (("component",) if value.ndim > first.ndim else ())
-        out[name] = xr.DataArray(value, dims=dims, coords=first.coords)
+        out[name] = xr.DataArray(value, dims=dims, coords=first.coords, name=name)
     return ArrayResult(record.name, out, tuple(first.shape), inner.warnings,
                        inner._element)
 
 
-def _call_plain(call, record, settings, slots, values, rtol, strict, registry):
-    """``call`` with the sorted arguments put back as keywords and elements."""
-    from .call import array_result, request_of
+def _call_plain(record, settings, slots, values, rtol, strict, registry):
+    """The numpy (or Dask) computation of the sorted arguments."""
+    from .build import array_result, request_of
     from .run import evaluate as run
 
     if any(_is_dask(v) for v in values):
@@ -115,7 +113,7 @@ def call_dask(record, settings, slots, values, rtol, strict, registry) -> ArrayR
     import dask.array as da
     import numpy as np
 
-    from .call import request_of
+    from .build import request_of
 
     split = [_split(v) for v in values]
     arrays = [i for i, (m, _) in enumerate(split) if hasattr(m, "shape") and m.shape != ()]
@@ -160,7 +158,7 @@ def call_dask(record, settings, slots, values, rtol, strict, registry) -> ArrayR
         request = request_of(record, settings, slots, here, rtol, strict)
         block_shape = np.shape(blocks[0])
         origin = tuple(start for start, _ in block_info[None]["array-location"])
-        result = evaluate(request, block_shape, origin, shape)
+        result = evaluate(request, block_shape, origin)
         out = np.zeros(block_shape, dtype=dtype)
         for name in dtype.names:
             if name in result.values:

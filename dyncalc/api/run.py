@@ -140,11 +140,10 @@ def _spec(request: Request):
 
 
 def evaluate(request: Request, shape: tuple[int, ...],
-             origin: tuple[int, ...] | None = None, index_shape: tuple[int, ...] | None = None,
-             ) -> Arrays:
+             origin: tuple[int, ...] | None = None) -> Arrays:
     """The results of every element of arrays broadcast to ``shape``, flattened (C order).
     An element the one-off refuses raises its error, prefixed ``at index I:``; ``origin``
-    and ``index_shape`` place a Dask block in the whole array for that index."""
+    places a Dask block in the whole array for that index."""
     from ..batch import CHUNK_ROWS
     from ..batch.header import Column
 
@@ -156,8 +155,6 @@ def evaluate(request: Request, shape: tuple[int, ...],
     out = Arrays(n, columns)
 
     def where(i: int) -> str:
-        if origin is None:
-            return index_text(i, shape)
         return index_text(i, shape, origin)
 
     def generic(i: int, result=None) -> None:
