@@ -75,7 +75,8 @@ def _records() -> dict[str, Any]:
         module = importlib.import_module(f"{commands.__name__}.{module_info.name}")
         for value in vars(module).values():
             if isinstance(value, Command):
-                found.setdefault(value.name.replace("-", "_"), value)
+                name: str = getattr(value, "name")  # a slot, set by Command's constructor
+                found.setdefault(name.replace("-", "_"), value)
     return found
 
 
@@ -91,7 +92,7 @@ def _record(name: str):
 
     try:
         module = importlib.import_module(f"{__package__.rpartition('.')[0]}.commands.{name}")
-        record = getattr(module, "COMMAND", None)
+        record: Any = getattr(module, "COMMAND", None)
         if record is not None and record.name.replace("-", "_") == name:
             return record
     except ImportError:

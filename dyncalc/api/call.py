@@ -48,12 +48,11 @@ def _sort(record, elements: tuple, parameters: dict[str, object]):
         values.append(element)
     for p in record.parameters:
         if p.kind == "setting":
-            if settings.get(p.name) is None:
-                settings[p.name] = p.default
-            choices = p.choices
-            if isinstance(choices, tuple) and settings[p.name] is not None \
-                    and settings[p.name] not in choices:
-                raise choice_error(record, p, settings[p.name])
+            word = settings.get(p.name)
+            if word is None:
+                word = settings[p.name] = p.default
+            if isinstance(p.choices, tuple) and word is not None and word not in p.choices:
+                raise choice_error(record, p, word)
     return settings, slots, values
 
 

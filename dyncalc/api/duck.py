@@ -141,7 +141,8 @@ def call_dask(record, settings, slots, values, rtol, strict, registry) -> ArrayR
         raise
     from ..result.encode import machine
 
-    fields, units = [], {}
+    fields: list[tuple[Any, ...]] = []
+    units: dict[str, str | None] = {}
     for name, entry in probe.results.items():
         value = machine(entry, {})[0]
         if isinstance(value, str):
@@ -150,6 +151,7 @@ def call_dask(record, settings, slots, values, rtol, strict, registry) -> ArrayR
             fields.append((name, float, np.shape(value)))
         units[name] = entry.dim.si if entry.dim is not None else None
     dtype = np.dtype(fields)
+    names = dtype.names or ()
 
     def block(*blocks, block_info=None):
         here = list(values)
@@ -160,7 +162,7 @@ def call_dask(record, settings, slots, values, rtol, strict, registry) -> ArrayR
         origin = tuple(start for start, _ in block_info[None]["array-location"])
         result = evaluate(request, block_shape, origin)
         out = np.zeros(block_shape, dtype=dtype)
-        for name in dtype.names:
+        for name in names:
             if name in result.values:
                 flat = result.values[name]
                 out[name] = flat.reshape(*block_shape, *flat.shape[1:])
@@ -170,7 +172,7 @@ def call_dask(record, settings, slots, values, rtol, strict, registry) -> ArrayR
 
     lazy = da.map_blocks(block, *broadcast, dtype=dtype)
     out = {}
-    for name in dtype.names:
+    for name in names:
         field = lazy[name]
         out[name] = field if units[name] is None else registry.Quantity(field, units[name])
     return ArrayResult(record.name, out, shape, list(probe.warnings and

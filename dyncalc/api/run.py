@@ -106,7 +106,10 @@ class Arrays:
     __slots__ = ("n", "values", "dims", "warnings", "columns")
 
     def __init__(self, n: int, columns: list):
-        self.n, self.values, self.dims, self.warnings = n, {}, {}, []
+        self.n = n
+        self.values: dict[str, Any] = {}
+        self.dims: dict[str, Any] = {}
+        self.warnings: list[str] = []
         self.columns = columns  # (kind, name, cells, unit): each element's texts
 
     def put(self, name: str, rows: Any, value: Any, dim) -> None:
@@ -130,7 +133,8 @@ def _spec(request: Request):
     if record.name == "natural-frequency":
         from ..commands.natural_frequency import STANDARD
 
-        return NaturalFrequencyRows(STANDARD, scene=request.settings.get("scene"),
+        return NaturalFrequencyRows({option: str(name) for option, name in STANDARD.items()},
+                                    scene=request.settings.get("scene"),
                                     method=request.settings.get("method"), rtol=request.rtol,
                                     strict=request.strict)
     if record.words == "ELEMENT...":

@@ -80,7 +80,9 @@ def _cells(magnitude: Any, name: str, vector: bool, listed: bool) -> Any:
     if isinstance(magnitude, str) or (not hasattr(magnitude, "__len__")
                                       and not hasattr(magnitude, "shape")):
         return np.array(_cell(magnitude, name), dtype=object)
-    array = np.asarray(magnitude)
+    # a list keeps its elements' own types (an int is written as one: 10, not 10.0)
+    array = np.asarray(magnitude, dtype=object if isinstance(magnitude, (list, tuple))
+                       else None)
     if array.dtype.kind in "bcV" or (array.dtype.kind == "O" and array.ndim == 0):
         raise TypeError(f"{name}: cannot read an array of {array.dtype} as quantities")
     if array.ndim == 0:
