@@ -1,17 +1,36 @@
 """dyncalc: a units-aware calculator for vibration and dynamics.
 
-The Python API is the formula library the command line is built on::
+The Python API (docs/api.md) is one function per command, taking the command's parameters as
+keywords (:mod:`dyncalc.api`)::
+
+    >>> import dyncalc
+    >>> print(dyncalc.natural_frequency(k="2 kN/m", m=4)["omega"])
+    22.360679774997898 radian / second
+
+and the formula library the command line is built on::
 
     >>> from dyncalc import Q_, series_stiffness
     >>> series_stiffness([Q_(200, "N/m"), Q_(300, "N/m")])
     <Quantity(120.0, 'newton / meter')>
 
-Names are loaded on first use, so ``import dyncalc`` costs nothing until a formula is called.
+Names are loaded on first use, so ``import dyncalc`` costs nothing until one is used.
 """
+from typing import TYPE_CHECKING
+
 from ._version import __version__
 
+if TYPE_CHECKING:
+    from .api import (ArrayResult, Result, coriolis, damping_ratio, natural_frequency,
+                      rolling_onset, spring_parallel, spring_series)
+    from .errors import InputError, PhysicsError
+
+#: The command functions (:mod:`dyncalc.api`), one per command record.
+COMMAND_FUNCTIONS = ("spring_series", "spring_parallel", "natural_frequency", "damping_ratio",
+                     "rolling_onset", "coriolis")
+
 __all__ = [
-    "__version__", "Q_", "registry", "parse_quantity", "parse_vector", "InputError",
+    "__version__", *COMMAND_FUNCTIONS, "Result", "ArrayResult", "InputError", "PhysicsError",
+    "Q_", "registry", "parse_quantity", "parse_vector",
     "series_stiffness", "parallel_stiffness", "cantilever_stiffness", "midspan_stiffness",
     "beam_stiffness", "axial_stiffness", "torsion_bar_stiffness", "coil_spring_stiffness",
     "network_stiffness",
@@ -19,7 +38,8 @@ __all__ = [
 
 _HOME = {
     "Q_": "units", "registry": "units", "parse_quantity": "units", "parse_vector": "units",
-    "InputError": "errors", "network_stiffness": "commands.springs",
+    "InputError": "errors", "PhysicsError": "errors", "network_stiffness": "commands.springs",
+    "Result": "api", "ArrayResult": "api", **dict.fromkeys(COMMAND_FUNCTIONS, "api"),
     **{name: "physics.springs" for name in __all__ if name.endswith("_stiffness")
        and name != "network_stiffness"},
 }
