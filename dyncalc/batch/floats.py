@@ -15,7 +15,8 @@ Reading: ``orjson.loads`` reads a column of plain numbers, joined as a JSON list
 as ``float`` one cell at a time and correctly rounded like it; JSON's number grammar is part of
 ``float``'s, so a cell it refuses (``+5``, ``.5``, ``5.``, a number beyond float64) is read
 again by ``float``, which gives what the one-off gives or refuses it. Its one difference, an
-integer ``-0`` read as ``0``, is read again by ``float`` too.
+integer ``-0`` read as ``0``, is read again by ``float`` too; cells that could hold a JSON value
+other than a number (``null``, ``true``, ``"5"``, ``[1]``) are all read by ``float``.
 
 Example::
 
