@@ -9,9 +9,13 @@ natural-frequency's closed-form scenes uses), and the loop of one-off calls a sh
 would run instead (100 calls, extrapolated).
 
     python benchmarks/batch.py [--max-rows 10000000] [--repeat 3]
-                               [--out benchmarks/results/batch.md]
+                               [--out benchmarks/results/batch.md] [--baseline DIR]
 
-Run it with the project's virtual environment's python (dyncalc installed in it).
+Run it with the project's virtual environment's python (dyncalc installed in it), from a
+neutral folder such as /tmp. ``--baseline DIR`` measures another dyncalc side by side, each
+run of the two interleaved: DIR holds its ``dyncalc`` package (``git archive COMMIT dyncalc |
+tar -x -C DIR``), put first on the children's ``PYTHONPATH`` with the same environment
+otherwise; each row is then followed by the baseline's and the ratio of the wall times.
 """
 from __future__ import annotations
 
@@ -76,18 +80,39 @@ def run(argv: list[str], env: dict[str, str]) -> tuple[float, int]:
     return wall, usage.ru_maxrss // 1024  # Linux: kilobytes
 
 
-def measure(label: str, argv: list[str], env: dict[str, str], rows: int, repeat: int):
-    times, peaks = [], []
+#: ``--baseline``: (the folder holding the other dyncalc package, its name in the table)
+BASELINE: tuple[str, str] | None = None
+
+
+def measure(label: str, argv: list[str], env: dict[str, str], rows: int,
+            repeat: int) -> list[str]:
+    """The table row of ``label`` (and with ``--baseline`` the baseline's row and the ratio
+    of the medians, the runs of the two alternating)."""
+    variants = [(label, env)]
+    if BASELINE is not None:
+        folder, name = BASELINE
+        variants.append((f"{label}, {name}",
+                         {**env, "PYTHONPATH": os.pathsep.join(
+                             [folder, *filter(None, [env.get("PYTHONPATH")])])}))
+    times: list[list[float]] = [[] for _ in variants]
+    peaks: list[list[int]] = [[] for _ in variants]
     for _ in range(repeat):
-        wall, peak = run(argv, env)
-        times.append(wall)
-        peaks.append(peak)
-    wall = statistics.median(times)
-    spread = (max(times) - min(times)) if repeat > 1 else 0.0
-    row = (f"| {label} | {rows:,} | {wall:.2f} | {spread:.2f} | {rows / wall:,.0f} | "
-           f"{max(peaks)} |")
-    print(row, flush=True)
-    return row
+        for k, (_label, variant_env) in enumerate(variants):
+            wall, peak = run(argv, variant_env)
+            times[k].append(wall)
+            peaks[k].append(peak)
+    out, medians = [], []
+    for (name, _env), runs, peak in zip(variants, times, peaks):
+        wall = statistics.median(runs)
+        medians.append(wall)
+        spread = (max(runs) - min(runs)) if repeat > 1 else 0.0
+        out.append(f"| {name} | {rows:,} | {wall:.2f} | {spread:.2f} | {rows / wall:,.0f} | "
+                   f"{max(peak)} |")
+    if len(medians) == 2:
+        out.append(f"| ratio of the wall times, this / {BASELINE[1]} | | "
+                   f"{medians[0] / medians[1]:.2f} | | | |")
+    print("\n".join(out), flush=True)
+    return out
 
 
 def main() -> None:
@@ -97,13 +122,25 @@ def main() -> None:
                         help="runs per size up to 10^6 rows (the median is shown)")
     parser.add_argument("--out", default=str(ROOT / "benchmarks" / "results" / "batch.md"),
                         help="markdown file for the table ('-': do not write one)")
+    parser.add_argument("--baseline", metavar="DIR",
+                        help="a folder holding another dyncalc package, measured side by side")
+    parser.add_argument("--baseline-name", default="baseline",
+                        help="the baseline's name in the table (e.g. its commit)")
     args = parser.parse_args()
+    global BASELINE
+    if args.baseline:
+        if not (Path(args.baseline) / "dyncalc" / "__init__.py").exists():
+            raise SystemExit(f"--baseline: {args.baseline} holds no dyncalc package")
+        BASELINE = (str(Path(args.baseline).resolve()), args.baseline_name)
     exe = dyncalc()
     env = child_env()
     lines = [f"Python {platform.python_version()}, {os.cpu_count()} CPUs, "
              f"{platform.machine()}; {time.strftime('%Y-%m-%d %H:%M')}; load average "
              f"{os.getloadavg()[0]:.2f} at the start; wall time end to end (start-up "
-             "included), median of the runs, spread = max - min",
+             "included), median of the runs, spread = max - min"
+             + (f"; each row's runs alternate with those of {BASELINE[1]} (its dyncalc "
+                "package first on PYTHONPATH, the same environment otherwise)"
+                if BASELINE else ""),
              "",
              "| run | rows | wall (s) | spread (s) | rows/s | peak memory (MB) |",
              "| --- | ---: | ---: | ---: | ---: | ---: |"]
@@ -114,21 +151,21 @@ def main() -> None:
         for n in sizes:
             write_rows(path, n)
             repeat = args.repeat if n <= 10**6 else 1
-            lines.append(measure("`natural-frequency --batch` (CSV)",
+            lines.extend(measure("`natural-frequency --batch` (CSV)",
                                  [*exe, "natural-frequency", "--batch", str(path)], env, n,
                                  repeat))
             if n == 10**5:
-                lines.append(measure("`natural-frequency --batch --json` (JSON lines)",
+                lines.extend(measure("`natural-frequency --batch --json` (JSON lines)",
                                      [*exe, "natural-frequency", "--batch", str(path),
                                       "--json"], env, n, args.repeat))
         n = min(10**5, args.max_rows)
         write_rows(path, n, units=True)
-        lines.append(measure("cells with mixed units (`2 kN/m`, `12 lbf/in`, ...)",
+        lines.extend(measure("cells with mixed units (`2 kN/m`, `12 lbf/in`, ...)",
                              [*exe, "natural-frequency", "--batch", str(path)], env, n,
                              args.repeat))
         n = min(10**3, args.max_rows)
         write_rows(path, n)
-        lines.append(measure("generic path, row by row (`DYNCALC_BATCH_GENERIC=1`)",
+        lines.extend(measure("generic path, row by row (`DYNCALC_BATCH_GENERIC=1`)",
                              [*exe, "natural-frequency", "--batch", str(path)],
                              child_env(DYNCALC_BATCH_GENERIC="1"), n, args.repeat))
     # the loop a shell script would run instead: 100 one-off calls, extrapolated

@@ -7,6 +7,7 @@ import re
 import numpy as np
 
 from ..errors import InputError
+from .floats import parse_floats
 from .header import _LITERAL
 
 #: A unit the vectorised path may read once for a whole column: names, ``*``, ``/``, and
@@ -38,7 +39,7 @@ def _plain_floats(cells) -> np.ndarray | None:
             or _LEADING_ZERO_RE.search(joined):
         return None
     try:
-        return np.fromiter(map(float, cells), dtype=float, count=len(cells))
+        return parse_floats(cells)  # float of each cell, a column at a time
     except ValueError:
         return None
 
@@ -106,7 +107,7 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
         pairs = _CELL_LINE_RE.findall(joined) if n else []
         if len(pairs) == n and joined.count("\n") == n - 1:  # one pass over the column
             literals, raw_units = zip(*pairs)
-            values = np.fromiter(map(float, literals), dtype=float, count=n)
+            values = parse_floats(literals)
             # the unit each cell is in: its own (trailing blanks off), or the header's
             code_of = {raw: raw.rstrip(" \t") or header_unit for raw in set(raw_units)}
             distinct = sorted(set(code_of.values()))

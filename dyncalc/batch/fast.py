@@ -13,6 +13,7 @@ from ..physics.columns import kernel_of
 from ..physics.numerics import finite_nonzero
 from ..physics.outcome import damped_arrays
 from .columns import _plain_floats, _read_column
+from .floats import reprs
 from .header import Column, with_header_unit
 
 
@@ -250,10 +251,10 @@ def _input_texts(inputs, keep: np.ndarray, words: dict) -> list[str]:
         prefix = json.dumps(name) + ': {"value": '
         if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
             unit, assumed = (u.replace("%", "%%") for u in unit_json[0])
-            template = (prefix.replace("%", "%%") + '%r, "unit": ' + unit
+            template = (prefix.replace("%", "%%") + '%s, "unit": ' + unit
                         + ', "text": %s' + assumed + "}")
-            parts.append(list(map(template.__mod__, zip(shown.tolist(), typed))))
+            parts.append(list(map(template.__mod__, zip(reprs(shown), typed))))
         else:
-            parts.append([f'{prefix}{v!r}, "unit": {u}, "text": {t}{a}}}'
-                          for v, (u, a), t in zip(shown.tolist(), unit_json, typed)])
+            parts.append([f'{prefix}{v}, "unit": {u}, "text": {t}{a}}}'
+                          for v, (u, a), t in zip(reprs(shown), unit_json, typed)])
     return list(map(", ".join, zip(*parts)))

@@ -9,17 +9,12 @@ import numpy as np
 
 from ..errors import InputError, one_line
 from .csvlines import _csv_lines
+from .floats import reprs, reprs_rows
 from .header import _HEADER_RE
 
 #: The outcome of a row the vectorised path computed, and of a blank row.
 _FAST = ("fast", None)
 _BLANK = ("blank", None)
-
-
-def _reprs(values: list[float]) -> list[str]:
-    """``list(map(repr, values))``, a third faster: the list's repr writes every float's repr
-    in C (no float repr holds ``", "``)."""
-    return str(values)[1:-1].split(", ") if values else []
 
 
 class _Failure(Exception):
@@ -175,10 +170,9 @@ class _Writer:
                                                name=name), dtype=float)
             if array.ndim == 2:  # vectors: a JSON list, or components comma-separated
                 shown[name] = ([json.dumps(v) for v in array.tolist()] if self.as_json else
-                               [_csv_lines([[",".join(_reprs(v))]])[0] for v in array.tolist()],
-                               target)
+                               [_csv_lines([[v]])[0] for v in reprs_rows(array)], target)
                 continue
-            numbers = _reprs(array.tolist())
+            numbers = reprs(array)  # repr of each float (dyncalc.batch.floats)
             if self.as_json and not np.isfinite(array).all():  # JSON has no infinity
                 numbers = [t if math.isfinite(v) else "null"
                            for t, v in zip(numbers, array.tolist())]
