@@ -585,7 +585,7 @@ def _unknown_unit(word: str) -> str:
                  and _is_unit(word[:-1]) else []),
         lambda: (difflib.get_close_matches(word, vocabulary, n=2, cutoff=0.8)
                  + [f"{word[:cut]}*{word[cut:]}" for cut in range(len(word) - 1, 0, -1)
-                    if not word[cut:].isdigit() and _is_unit(word[:cut])
+                    if len(word) <= 5 and not word[cut:].isdigit() and _is_unit(word[:cut])
                     and _is_unit(word[cut:])][:1]),
         lambda: [word[:cut] + base for cut in range(1, min(6, len(word)))
                  if _is_unit(word[:cut] + "m") and word[:cut] != "m"
@@ -693,7 +693,7 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
             used = names if names is not None else _unit_names(quantity.units)
             if any(name != "second" for name in used):
                 raise InputError(
-                    f"{label} is an angular rate; got {format_quantity(quantity)}, a plain "
+                    f"{label} is an angular rate; got {_compact(quantity)}, a plain "
                     f"rate with no angle (only 1/s is read as rad/s): for revolutions per "
                     f"minute write rpm or rev/min, or give rad/s")
         elif power not in dim.angles:
@@ -712,6 +712,11 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
     if angle_power(quantity) not in dim.angles:
         raise _dimension_message(label, dim, quantity)
     return quantity
+
+
+def _compact(quantity) -> str:
+    """``60 1/min``: a scalar quantity with pint's short unit symbols, for messages."""
+    return f"{float(quantity.magnitude):.15g} {format(quantity.units, '~C')}"
 
 
 def _ratio_not_angle(label: str, quantity) -> InputError:
