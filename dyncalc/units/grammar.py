@@ -320,7 +320,7 @@ class _Parser:
             rhs = self.term()
             if _has_turns(q) != _has_turns(rhs):
                 self.mixed_turns = True
-            elif angle_power(q) != angle_power(rhs) and not self.angle_mismatch:
+            if angle_power(q) != angle_power(rhs) and not self.angle_mismatch:
                 verb = "add" if op == "+" else "subtract"  # refused once the dimension's
                 self.angle_mismatch = (  # own advice (Hz for omega, ...) had its say
                     f"cannot {verb} {_unit_words(rhs)} and {_unit_words(q)}: an angle and a "
@@ -348,13 +348,15 @@ class _Parser:
     def group(self):
         """A number with its unit, or juxtaposed factors: both bind tighter than an explicit
         ``/``, as in GNU units. ``1500 N / 7 mm`` is ``1500 N / (7 mm)``; a number's unit runs
-        on over ``*``, ``/`` and names (``450 N / 9.81 m/s^2`` is ``450 N / (9.81 m/s^2)``),
+        on over ``*``, ``/`` and names (``450 N / 9.81 m/s^2`` is ``450 N / (9.81 m/s^2)``;
+        a parenthesised pure number is a number: ``(2/12) kg*m^2``),
         and a divisor in a unit is its juxtaposed names (``m/s s`` is ``m/(s s)``). A number
         is juxtaposed only as ``1/unit`` (``2 1/s``); ``1 000`` and ``2 3/4`` are refused.
         Returns the value and the number of factors (to show the implied parentheses)."""
         first = self.peek()
         q = self.unary()
-        literal = first is not None and (first.kind == "NUM" or self.is_op(first, "+", "-"))
+        literal = first is not None and (first.kind == "NUM" or self.is_op(first, "+", "-")
+                                         or (self.is_op(first, "(") and q.unitless))
         factors = 1
         while True:
             tok = self.peek()
