@@ -8,6 +8,7 @@ import math
 
 import pytest
 
+from dyncalc.errors import InputError
 from dyncalc.units import (ACCELERATION, ANGLE, ANGULAR_RATE, DIMENSIONLESS, LENGTH, MASS,
                            STIFFNESS, TORSIONAL_STIFFNESS, parse_quantity)
 
@@ -216,3 +217,21 @@ def test_value_is_in_the_canonical_unit_whatever_was_typed():
     kn = value("spring-series", "2kN/m", "3kN/m", "--value", "k_eq")
     n = value("spring-series", "2kN/m", "3000N/m", "--value", "k_eq")
     assert kn == n == pytest.approx(1 / (1 / 2000 + 1 / 3000), rel=1e-15)
+
+
+# -- found by tests/test_reading_properties.py -----------------------------------------------
+
+def test_a_length_plus_a_length_times_turns_is_refused():
+    """pint counts a turn as 2 pi: "1 m + 1 m*turn" was read as (1 + 2 pi) m = 7.28 m (a sum
+    whose terms differ in revolutions skipped the angle check)."""
+    with pytest.raises(InputError) as err:
+        parse_quantity("1 m + 1 m*turn", LENGTH, label="--length")
+    assert str(err.value) == ("--length: cannot read '1 m + 1 m*turn': cannot add meter * turn "
+                              "and meter: an angle and a quantity without one do not add")
+
+
+def test_a_parenthesised_number_keeps_its_unit_after_a_slash():
+    """"(1 m)/(2) m*m" divides by (2) m*m = 2 m^2 (a parenthesised pure number is a number
+    with its unit), as "(1 m)/2 m*m" does."""
+    area = parse_quantity("(1 m^3)/(2) m*m", LENGTH).si
+    assert area == parse_quantity("(1 m^3)/2 m*m", LENGTH).si == 0.5

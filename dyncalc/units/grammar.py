@@ -25,16 +25,30 @@ and leans on ``assert`` (so ``python -O`` changes it). So dyncalc tokenises and 
 small quantity grammar itself and asks pint only for what pint does well: the meaning of each
 unit name (prefixes, plurals, aliases), unit algebra and conversion.
 
-Grammar (juxtaposition multiplies, with the precedence of ``*``, as in pint)::
+Grammar (SPEC v2: a number with its unit, and juxtaposed factors, bind tighter than ``/``,
+as in GNU units; explicit ``*`` and ``/`` go left to right)::
 
-    expr     := term (('+' | '-') term)*
-    term     := unary (('*' | '/' | juxtaposition) unary)*     # a number juxtaposed only as
-                                                             # "1/unit": "2 1/s"; "1 000" and
-                                                             # "2 3/4" are refused
+    expr     := term (('+' | '-') term)*             # terms of different [angle] refused
+    term     := group (('*' | '/') group)*
+    group    := unary (juxtaposed power)*            # "7 mm", "2 kg m", "x (3 s)"
+              | literal
+    literal  := NUMBER-ish unit (('*' | '/') unit_group)*   # "9.81 m/s^2": one quantity
+    unit_group := power NAME-power*                  # a divisor in a unit: "m/s s" = m/(s s)
     unary    := ('+' | '-') unary | power
     power    := atom (('**' | '^') exponent)?          # 2**3**2 is refused, not guessed
     exponent := ('+' | '-')? (NUMBER | '(' expr ')')    # a plain number
     atom     := NUMBER | UNIT | '(' expr ')'
+
+``NUMBER-ish`` is a signed number or a parenthesised pure number (``(2/12) kg*m^2``). A number
+is juxtaposed only as ``1/unit`` (``2 1/s``); ``1 000`` and ``2 3/4`` are refused. So
+``1500 N / 7 mm`` is ``1500 N / (7 mm)``, ``450 N / 9.81 m/s^2`` a mass, ``100 N/2 m``
+50 N/m. The reading with these parentheses made explicit is kept (:attr:`Parsed.reading`)
+and shown in the human output.
+
+Angles (SPEC v2): pint counts the radian as dimensionless; dyncalc counts the power of
+``[angle]`` (:func:`dyncalc.units.dimensions.angle_power`) and checks it against the
+parameter's :attr:`Dim.angles`: a torsional stiffness is ``N*m/angle`` or a bare ``N*m``,
+never ``N*m*deg``; an angle has exactly one; ``%`` is a ratio, never an angle.
 
 Angular rates and cycle rates: pint counts the radian as dimensionless, so it converts
 ``1 rad/s`` to ``1 Hz`` and ``1 rpm`` to ``0.105 Hz``. dyncalc never relies on that: an
