@@ -377,7 +377,7 @@ def test_physical_pendulum_pivot_distance_two_roots():
     disc = math.sqrt((m * G0) ** 2 - 4 * m * w ** 2 * J * w ** 2)
     roots = sorted(((m * G0 - disc) / (2 * m * w ** 2), (m * G0 + disc) / (2 * m * w ** 2)))
     result = compute_scene("physical-pendulum",
-                       {"m": "2 kg", "J": "2/12 kg*m^2", "omega": "3.5 rad/s"})
+                       {"m": "2 kg", "J": "(2/12) kg*m^2", "omega": "3.5 rad/s"})
     assert solutions(result, "a") == [pytest.approx(r, rel=ROOT_TOL) for r in roots]
 
 

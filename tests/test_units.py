@@ -195,7 +195,7 @@ def test_to_si():
     ("3 s", CYCLE_RATE, "f",
      "f must be a frequency [cycles]/[time]; got 3 second ([time])"),
     ("2 rad/s", ANGLE, "--incline",
-     "--incline must be an angle [angle]; got 2 radian / second (1 / [time])"),
+     "--incline must be an angle [angle]; got 2 radian / second ([angle] / [time])"),
     ("5 kg", DIMENSIONLESS, "--zeta",
      "--zeta must be a pure number; got 5 kilogram ([mass])"),
     ("0.5 m", TIME, "--t",
@@ -302,8 +302,8 @@ SIDE_BY_SIDE = "two numbers side by side; write 1000, not 1 000, and use * to mu
     ("()", LENGTH, _cannot("()", "it holds no number")),
     ("1_000", FORCE, _cannot("1_000", "digit separators ('_') are not read; write 1000, "
                                       "not 1_000")),
-    ("1 foo", LENGTH, _cannot("1 foo", "unknown unit 'foo'")),
-    ("1 km2", AREA, _cannot("1 km2", "unknown unit 'km2'")),
+    ("1 foo", LENGTH, _cannot("1 foo", "unknown unit 'foo' (did you mean 'foot'?)")),
+    ("1 km2", AREA, _cannot("1 km2", "unknown unit 'km2' (did you mean 'km^2'?)")),
     ("1 \uff4d", LENGTH, _cannot("1 \uff4d", "the character '\uff4d' is not part of a quantity")),
     ("\u00bd m", LENGTH, _cannot("\u00bd m", "the character '\u00bd' is not part of a quantity")),
     ("1 m)", LENGTH, _cannot("1 m)", "unexpected ')' at position 4")),
@@ -701,7 +701,7 @@ def test_parse_unit_quotes_what_the_user_typed():
     """SPEC: an error quotes the user's text; parse_unit prefixes "1 " internally and must not
     show that prefix."""
     assert refusal(parse_unit, "foo", label="--unit x") == (
-        "--unit x: cannot read 'foo': unknown unit 'foo'")
+        "--unit x: cannot read 'foo': unknown unit 'foo' (did you mean 'foot'?)")
     assert refusal(parse_unit, "m**100", label="--unit x") == (
         "--unit x: cannot read 'm**100': the unit meter is raised to the power 100; dyncalc "
         "reads powers up to 16")

@@ -39,7 +39,10 @@ def _with_uncertainty(entry: Entry, value, unit: str, digits: int) -> str:
     sigma = entry.uncertainty_in(unit) if entry.uncertainty is not None else None
     if sigma is None or isinstance(value, str):
         return text
-    return f"{text} ± {format_number(sigma, 2)}"
+    shown_sigma = format_number(sigma, 2)
+    if "e+" in shown_sigma and not hasattr(sigma, "__len__") and abs(float(sigma)) < 1e15:
+        shown_sigma = str(int(float(shown_sigma)))  # 100, not 1e+02
+    return f"{text} ± {shown_sigma}"
 
 
 def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str, ...]]:
@@ -51,15 +54,39 @@ def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str,
     return rows
 
 
+def _same_unit(a: str, b: str) -> bool:
+    """Whether two unit texts name the same unit (``m/s**2`` and ``m/s^2``)."""
+    if a == b:
+        return True
+    from ..units import parse_unit
+
+    try:
+        return parse_unit(a) == parse_unit(b)
+    except Exception:  # not a unit dyncalc reads: shown as it is
+        return False
+
+
+def _input_part(entry: Entry, digits: int) -> str:
+    """How one input was read: ``k = 2 kN/m = 2000 N/m``, ``k = 1500 N / (7 mm) = 214286
+    N/m``, ``k = 200 N/m (assumed SI)``; the value in the unit typed and, where that is not
+    the canonical unit, in it too."""
+    value, unit = shown(entry, {})
+    number = _with_uncertainty(entry, value, unit, digits)
+    if entry.reading:  # typed as an expression: the reading, then its value
+        number, unit = entry.reading, ""
+    text = f"{entry.name} = {number}{' ' + unit if unit else ''}"
+    if entry.assumed_si:
+        return text + " (assumed SI)"
+    canonical = entry.canonical_unit
+    if (entry.dim is not None and not isinstance(entry.si, str)
+            and (entry.reading or not _same_unit(unit, canonical))):
+        si = _with_uncertainty(entry, entry.si, canonical, digits)
+        text += f" = {si}{' ' + canonical if canonical else ''}"
+    return text
+
+
 def _inputs_line(result: Result, digits: int) -> str:
-    parts = []
-    for entry in result.inputs.values():
-        value, unit = shown(entry, {})
-        number = _with_uncertainty(entry, value, unit, digits)
-        text = f"{entry.name} = {number}{' ' + unit if unit else ''}"
-        if entry.assumed_si:
-            text += " (assumed SI)"
-        parts.append(text)
+    parts = [_input_part(entry, digits) for entry in result.inputs.values()]
     return "inputs: " + ", ".join(parts) if parts else ""
 
 

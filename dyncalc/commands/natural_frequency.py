@@ -107,7 +107,7 @@ COMMAND = Command(
       dyncalc natural-frequency --k "2 kN/m" --m 4kg
       dyncalc natural-frequency --k 100N/m --m 2kg --zeta 0.05
       dyncalc natural-frequency --length 1m --amplitude 170deg
-      dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=2/12 kg*m^2"
+      dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=(2/12) kg*m^2"
       dyncalc natural-frequency --k 100N/m --m 2kg --check f=1.13Hz
       dyncalc natural-frequency --batch rows.csv     # header: k [N/m],m [kg]
     """,

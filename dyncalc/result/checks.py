@@ -69,6 +69,9 @@ def run_checks(result: Result, specs: list[str], rtol: float | None) -> list[Che
         if entry.dim is None or not isinstance(entry.si, float):
             raise InputError(f"--check {name}: only a single number can be checked")
         parsed = parse_quantity(text, entry.dim, label=f"--check {name}")
+        if parsed.uncertainty is not None:  # SPEC: refused, never dropped
+            raise InputError(f"--check {name}: a check takes no uncertainty (+/- or ±); give "
+                             f"the answer alone and the tolerance with --rtol")
         expected, given = entry.si, parsed.si
         diff = abs(given - expected)
         rel = diff / abs(expected) if expected != 0 else diff

@@ -7,6 +7,7 @@ Values are carried as SI magnitudes (floats, or numpy arrays for vectors) beside
 from __future__ import annotations
 
 import math
+import re
 from typing import Any, Callable
 
 from ..records import Record
@@ -33,24 +34,28 @@ class Entry(Record):
     ``si`` is the magnitude in ``dim.si`` (float, array, or ``str`` for a word such as a
     regime); ``unit`` is the unit it is shown in unless ``--unit`` says otherwise; ``symbol`` and
     ``description`` are for the human table; ``assumed_si`` marks a bare number read as SI;
-    ``text`` is an input as the user typed it (or the default's text), ``None`` on results.
+    ``text`` is an input as the user typed it (or the default's text), ``None`` on results;
+    ``reading`` is an input typed as an expression (``1500 N / 7 mm``) with the parentheses
+    the grammar implies made explicit (``1500 N / (7 mm)``), ``""`` otherwise.
 
     A plain class, not a dataclass (no code generated at import: start-up), with a
     dataclass's repr and equality from :class:`~dyncalc.records.Record`.
     """
 
     __slots__ = ("name", "si", "dim", "unit", "symbol", "description", "assumed_si", "exact",
-                 "overflowed", "uncertainty", "text")
+                 "overflowed", "uncertainty", "text", "reading")
 
     def __init__(self, name: str, si: Any, dim: Dim | None, unit: str = "", symbol: str = "",
                  description: str = "", assumed_si: bool = False, exact: Any = None,
-                 overflowed: bool = False, uncertainty: Any = None, text: str | None = None):
+                 overflowed: bool = False, uncertainty: Any = None, text: str | None = None,
+                 reading: str = ""):
         self.name, self.si, self.dim, self.unit = name, si, dim, unit
         self.symbol, self.description, self.assumed_si = symbol, description, assumed_si
         self.exact = exact  # the magnitude in ``unit`` exactly as typed or computed
         self.overflowed = overflowed  # a finite true value beyond float64: shown as inf / null
         self.uncertainty = uncertainty  # standard uncertainty in ``dim.si``, if any
         self.text = text  # an input's text as typed (JSON ``inputs.NAME.text``)
+        self.reading = reading  # an expression input as read, parentheses made explicit
 
 
     @property
@@ -83,13 +88,20 @@ class Entry(Record):
         return convert(self.si, self.dim, target, label=f"--unit {self.name}", name=self.name)
 
 
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+
 def entry_from_parsed(name: str, parsed: Parsed, dim: Dim, **kw) -> Entry:
-    """An input entry shown in the unit the user typed (SI when a bare number was given)."""
+    """An input entry shown in the unit the user typed (SI when a bare number was given);
+    an input typed as an expression keeps its reading (:attr:`Entry.reading`)."""
     typed = bool(parsed.unit_text) and dim.kind not in ("angular-rate", "cycle-rate")
+    expression = (not parsed.unit_text and parsed.reading
+                  and not _PLAIN_NUMBER.fullmatch(parsed.reading))
     return Entry(name, parsed.si, dim, unit=parsed.unit_text or dim.si,
                  assumed_si=parsed.assumed_si,
                  exact=float(parsed.quantity.magnitude) if typed else None,
-                 uncertainty=parsed.uncertainty, text=parsed.text, **kw)
+                 uncertainty=parsed.uncertainty, text=parsed.text,
+                 reading=parsed.reading if expression else "", **kw)
 
 
 class Explanation(Record):

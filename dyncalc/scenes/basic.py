@@ -102,7 +102,7 @@ register(Scene(
            r"{2}\right)\right)}",
            Formula(r"$omega = \frac{2\pi}{$T}", lambda v: "omega_0" in v)),
     reference="E3.44, E5.15",
-    example='dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=2/12 kg*m^2"',
+    example='dyncalc natural-frequency --scene physical-pendulum m=2kg a=0.5m "J=(2/12) kg*m^2"',
     example_result={"omega": "3.83535852300668236 rad/s", "T": "1.63822632734056901 s",
                     "J_A": "0.6666666666666667 kg*m^2"},
     methods=("small-angle", "series", "elliptic", "ode"),

@@ -10,7 +10,7 @@ __all__ = [
     "Dim", "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "AREA",
     "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
     "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS", "DECAY_RATE",
-    "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY",
+    "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "angle_power", "angle_exponent",
 ]
 
 # --------------------------------------------------------------------------------------------
@@ -23,23 +23,28 @@ class Dim(Frozen):
     ``name`` is the word in messages ("stiffness"), ``display`` the dimension as shown
     (``[force]/[length]``), ``check`` the pint dimensionality it must have, ``si`` the unit of a
     bare number and of SI output, ``kind`` one of plain, angle, angular-rate, cycle-rate,
-    dimensionless.
+    dimensionless; ``angles`` the powers of ``[angle]`` a quantity of it may carry (pint counts
+    the radian as dimensionless, dyncalc does not: see :func:`angle_power`). A torsional
+    stiffness takes ``(-1, 0)`` (``N*m/rad``, or a bare ``N*m`` read as per radian), an angle
+    ``(1,)``, a linear stiffness ``(0,)``.
     """
 
-    __slots__ = ("name", "display", "check", "si", "kind")
+    __slots__ = ("name", "display", "check", "si", "kind", "angles")
 
-    def __init__(self, name: str, display: str, check: str, si: str, kind: str = "plain"):
+    def __init__(self, name: str, display: str, check: str, si: str, kind: str = "plain",
+                 angles: tuple[int, ...] = (0,)):
         setattr_ = object.__setattr__
         setattr_(self, "name", name)
         setattr_(self, "display", display)
         setattr_(self, "check", check)
         setattr_(self, "si", si)
         setattr_(self, "kind", kind)
+        setattr_(self, "angles", angles)
 
 
 STIFFNESS = Dim("stiffness", "[force]/[length]", "[force]/[length]", "N/m")
 TORSIONAL_STIFFNESS = Dim("torsional stiffness", "[force]*[length]/[angle]",
-                          "[force]*[length]", "N*m/rad")
+                          "[force]*[length]", "N*m/rad", angles=(-1, 0))
 MASS = Dim("mass", "[mass]", "[mass]", "kg")
 INERTIA = Dim("mass moment of inertia", "[mass]*[length]^2", "[mass]*[length]**2", "kg*m^2")
 LENGTH = Dim("length", "[length]", "[length]", "m")
@@ -52,10 +57,11 @@ FORCE = Dim("force", "[force]", "[force]", "N")
 MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
 DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
               "N*s/m")
-ANGLE = Dim("angle", "[angle]", "", "rad", "angle")
-ANGULAR_RATE = Dim("angular rate", "[angle]/[time]", "1/[time]", "rad/s", "angular-rate")
+ANGLE = Dim("angle", "[angle]", "", "rad", "angle", angles=(1,))
+ANGULAR_RATE = Dim("angular rate", "[angle]/[time]", "1/[time]", "rad/s", "angular-rate",
+                   angles=(1,))
 ANGULAR_ACCELERATION = Dim("angular acceleration", "[angle]/[time]^2", "1/[time]**2",
-                           "rad/s^2", "angular-rate")
+                           "rad/s^2", "angular-rate", angles=(1,))
 CYCLE_RATE = Dim("frequency", "[cycles]/[time]", "1/[time]", "Hz", "cycle-rate")
 DIMENSIONLESS = Dim("pure number", "dimensionless", "", "", "dimensionless")
 DECAY_RATE = Dim("decay rate", "1/[time]", "1/[time]", "1/s")
@@ -63,10 +69,34 @@ LINEAR_DRAG = Dim("drag per unit length", "[force]*[time]/[length]^2",
                   "[force]*[time]/[length]**2", "N*s/m^2")
 RIGIDITY = Dim("bending stiffness", "[force]*[length]^2", "[force]*[length]**2", "N*m^2")
 TORSIONAL_RIGIDITY = Dim("torsional rigidity", "[force]*[length]^2", "[force]*[length]**2",
-                         "N*m^2")
+                         "N*m^2", angles=(-1, 0))
 
 _TURN_UNITS = {"turn", "revolutions_per_minute", "revolutions_per_second"}
 _CYCLE_ONLY_UNITS = {"hertz"}
+
+
+_ANGLE_EXPONENTS: dict[str, float] = {}
+
+
+def angle_exponent(name: str) -> float:
+    """The power of ``[angle]`` in one pint unit name: 1 for ``degree``, ``turn``,
+    ``revolutions_per_minute``; 2 for ``steradian``; 0 for ``hertz``, ``percent``, ``meter``."""
+    known = _ANGLE_EXPONENTS.get(name)
+    if known is None:
+        try:
+            root = registry().get_root_units(name)[1]._units
+            known = float(root.get("radian", 0.0))
+        except Exception:  # not a unit pint knows: no angle
+            known = 0.0
+        _ANGLE_EXPONENTS[name] = known
+    return known
+
+
+def angle_power(quantity) -> float:
+    """The power of ``[angle]`` in ``quantity``'s unit, as typed: ``N*m/deg`` -1, ``rpm`` 1,
+    ``N*m*deg`` 1, ``%`` 0. (pint keeps the units as multiplied and divided; sums of
+    quantities with different angle powers are refused by the grammar.)"""
+    return sum(power * angle_exponent(name) for name, power in quantity.unit_items())
 
 
 def _unit_names(unit) -> list[str]:

@@ -25,16 +25,30 @@ and leans on ``assert`` (so ``python -O`` changes it). So dyncalc tokenises and 
 small quantity grammar itself and asks pint only for what pint does well: the meaning of each
 unit name (prefixes, plurals, aliases), unit algebra and conversion.
 
-Grammar (juxtaposition multiplies, with the precedence of ``*``, as in pint)::
+Grammar (SPEC v2: a number with its unit, and juxtaposed factors, bind tighter than ``/``,
+as in GNU units; explicit ``*`` and ``/`` go left to right)::
 
-    expr     := term (('+' | '-') term)*
-    term     := unary (('*' | '/' | juxtaposition) unary)*     # a number juxtaposed only as
-                                                             # "1/unit": "2 1/s"; "1 000" and
-                                                             # "2 3/4" are refused
+    expr     := term (('+' | '-') term)*             # terms of different [angle] refused
+    term     := group (('*' | '/') group)*
+    group    := unary (juxtaposed power)*            # "7 mm", "2 kg m", "x (3 s)"
+              | literal
+    literal  := NUMBER-ish unit (('*' | '/') unit_group)*   # "9.81 m/s^2": one quantity
+    unit_group := power NAME-power*                  # a divisor in a unit: "m/s s" = m/(s s)
     unary    := ('+' | '-') unary | power
     power    := atom (('**' | '^') exponent)?          # 2**3**2 is refused, not guessed
     exponent := ('+' | '-')? (NUMBER | '(' expr ')')    # a plain number
     atom     := NUMBER | UNIT | '(' expr ')'
+
+``NUMBER-ish`` is a signed number or a parenthesised pure number (``(2/12) kg*m^2``). A number
+is juxtaposed only as ``1/unit`` (``2 1/s``); ``1 000`` and ``2 3/4`` are refused. So
+``1500 N / 7 mm`` is ``1500 N / (7 mm)``, ``450 N / 9.81 m/s^2`` a mass, ``100 N/2 m``
+50 N/m. The reading with these parentheses made explicit is kept (:attr:`Parsed.reading`)
+and shown in the human output.
+
+Angles (SPEC v2): pint counts the radian as dimensionless; dyncalc counts the power of
+``[angle]`` (:func:`dyncalc.units.dimensions.angle_power`) and checks it against the
+parameter's :attr:`Dim.angles`: a torsional stiffness is ``N*m/angle`` or a bare ``N*m``,
+never ``N*m*deg``; an angle has exactly one; ``%`` is a ratio, never an angle.
 
 Angular rates and cycle rates: pint counts the radian as dimensionless, so it converts
 ``1 rad/s`` to ``1 Hz`` and ``1 rpm`` to ``0.105 Hz``. dyncalc never relies on that: an
@@ -50,7 +64,7 @@ from typing import Any
 
 from ..errors import InputError
 from ..records import Frozen
-from .dimensions import DIMENSIONLESS, Dim, _unit_class, _unit_names
+from .dimensions import DIMENSIONLESS, Dim, _unit_class, _unit_names, angle_power
 from .registry import registry
 
 __all__ = ["Parsed", "ReadError", "parse_quantity", "parse_vector", "parse_unit", "convert",
@@ -71,14 +85,17 @@ class Parsed(Frozen):
     :func:`convert`), ``si`` its magnitude in the SI unit of its dimension (a float, or a numpy
     array for vectors), ``assumed_si`` whether a bare number was given, ``unit_text`` the unit as
     the user wrote it (``""`` when none), ``text`` the original text, ``uncertainty`` the
-    standard uncertainty in the same SI unit when the text carried one (``2.0+/-0.1 kg``).
+    standard uncertainty in the same SI unit when the text carried one (``2.0+/-0.1 kg``),
+    ``reading`` the value's text with the parentheses the precedence implies made explicit
+    (``1500 N / (7 mm)``; ``""`` for a vector).
     """
 
-    __slots__ = ("quantity", "si", "assumed_si", "unit_text", "text", "uncertainty")
+    __slots__ = ("quantity", "si", "assumed_si", "unit_text", "text", "uncertainty", "reading")
 
     def __init__(self, quantity: Any, si: Any, assumed_si: bool, unit_text: str, text: str,
-                 uncertainty: float | None = None):
+                 uncertainty: float | None = None, reading: str = ""):
         setattr_ = object.__setattr__
+        setattr_(self, "reading", reading)
         setattr_(self, "quantity", quantity)
         setattr_(self, "si", si)
         setattr_(self, "assumed_si", assumed_si)
@@ -134,12 +151,15 @@ def _check_characters(text: str, label: str) -> None:
 
 class _Tok:
     """A token: ``kind`` NUM, NAME or OP; ``value`` a float for NUM, text otherwise; ``pos``
-    where it starts; ``exponent`` a number that is a power (m^2, s**-1, m²), not a magnitude."""
+    where it starts and ``end`` where it ends in the text; ``exponent`` a number that is a
+    power (m^2, s**-1, m²), not a magnitude."""
 
-    __slots__ = ("kind", "value", "pos", "exponent")
+    __slots__ = ("kind", "value", "pos", "exponent", "end")
 
-    def __init__(self, kind: str, value: Any, pos: int, exponent: bool = False):
+    def __init__(self, kind: str, value: Any, pos: int, exponent: bool = False,
+                 end: int | None = None):
         self.kind, self.value, self.pos, self.exponent = kind, value, pos, exponent
+        self.end = pos + 1 if end is None else end
 
     def __repr__(self) -> str:
         return (f"_Tok(kind={self.kind!r}, value={self.value!r}, pos={self.pos!r}, "
@@ -187,7 +207,7 @@ def _tokenize(text: str, label: str) -> list[_Tok]:
             after_power = (toks and toks[-1].kind == "OP" and toks[-1].value in ("**", "^")) or (
                 len(toks) >= 2 and toks[-1].kind == "OP" and toks[-1].value in "+-"
                 and toks[-2].kind == "OP" and toks[-2].value in ("**", "^"))
-            toks.append(_Tok("NUM", value, i, exponent=bool(after_power)))
+            toks.append(_Tok("NUM", value, i, exponent=bool(after_power), end=end))
             i = end
             continue
         if ch in _IDENT_START:
@@ -199,9 +219,9 @@ def _tokenize(text: str, label: str) -> list[_Tok]:
             if low in _WORD_NAN:
                 raise _refuse(label, text, "NaN is not a number dyncalc accepts")
             if low in _WORD_NUMBERS:
-                toks.append(_Tok("NUM", _WORD_NUMBERS[low], i))
+                toks.append(_Tok("NUM", _WORD_NUMBERS[low], i, end=j))
             else:
-                toks.append(_Tok("NAME", "degree" if word == "°" else word, i))
+                toks.append(_Tok("NAME", "degree" if word == "°" else word, i, end=j))
             i = j
             continue
         if ch in "·×":
@@ -213,7 +233,7 @@ def _tokenize(text: str, label: str) -> list[_Tok]:
             i += 1
             continue
         if text.startswith("**", i):
-            toks.append(_Tok("OP", "**", i))
+            toks.append(_Tok("OP", "**", i, end=i + 2))
             i += 2
             continue
         if ch == "+" and text.startswith("+/-", i) or ch == "±":
@@ -250,6 +270,8 @@ class _Parser:
         self.ureg = registry()
         self.had_inf = any(t.kind == "NUM" and math.isinf(t.value) for t in toks)
         self.mixed_turns = False  # a sum of a term in revolutions and one not
+        self.wraps: list[tuple[int, int]] = []  # implicit groups after '/', to show in ( )
+        self.angle_mismatch = ""  # a sum of an angle and a non-angle: why it is refused
 
     # -- helpers
     def peek(self):
@@ -312,6 +334,11 @@ class _Parser:
             rhs = self.term()
             if _has_turns(q) != _has_turns(rhs):
                 self.mixed_turns = True
+            if angle_power(q) != angle_power(rhs) and not self.angle_mismatch:
+                verb = "add" if op == "+" else "subtract"  # refused once the dimension's
+                self.angle_mismatch = (  # own advice (Hz for omega, ...) had its say
+                    f"cannot {verb} {_unit_words(rhs)} and {_unit_words(q)}: an angle and a "
+                    "quantity without one do not add")
             try:
                 q = q + rhs if op == "+" else q - rhs
             except Exception as exc:  # pint: DimensionalityError, OffsetUnitCalculusError
@@ -321,30 +348,73 @@ class _Parser:
         return q
 
     def term(self):
+        """Explicit ``*`` and ``/``, equal precedence, left to right, between groups."""
+        q, _ = self.group()
+        while self.is_op(self.peek(), "*", "/"):
+            op = self.take().value
+            start = self.i
+            rhs, factors = self.group()
+            if op == "/" and factors > 1:  # shown as the parentheses the precedence implies
+                self.wraps.append((self.toks[start].pos, self.toks[self.i - 1].end))
+            q = self.combine(q, rhs, op)
+        return q
+
+    def group(self):
+        """A number with its unit, or juxtaposed factors: both bind tighter than an explicit
+        ``/``, as in GNU units. ``1500 N / 7 mm`` is ``1500 N / (7 mm)``; a number's unit runs
+        on over ``*``, ``/`` and names (``450 N / 9.81 m/s^2`` is ``450 N / (9.81 m/s^2)``;
+        a parenthesised pure number is a number: ``(2/12) kg*m^2``),
+        and a divisor in a unit is its juxtaposed names (``m/s s`` is ``m/(s s)``). A number
+        is juxtaposed only as ``1/unit`` (``2 1/s``); ``1 000`` and ``2 3/4`` are refused.
+        Returns the value and the number of factors (to show the implied parentheses)."""
+        first = self.peek()
         q = self.unary()
+        literal = first is not None and (first.kind == "NUM" or self.is_op(first, "+", "-")
+                                         or (self.is_op(first, "(") and q.unitless))
+        factors = 1
         while True:
             tok = self.peek()
-            if self.is_op(tok, "*", "/"):
-                op = self.take().value
-            elif tok is not None and (tok.kind == "NAME" or self.is_op(tok, "(")):
-                op = "*"
-            elif tok is not None and tok.kind == "NUM":
-                after = self.toks[self.i + 1] if self.i + 1 < len(self.toks) else None
+            if tok is None:
+                return q, factors
+            after = self.toks[self.i + 1] if self.i + 1 < len(self.toks) else None
+            if tok.kind == "NUM":
                 if not (tok.value == 1.0 and self.is_op(after, "/")):  # "2 1/s" is 2/s
                     raise self.fail("two numbers side by side; write 1000, not 1 000, and use "
                                     "* to multiply")
-                op = "*"
+                q = self.combine(q, self.power(), "*")
+            elif tok.kind == "NAME" or self.is_op(tok, "("):
+                q = self.combine(q, self.power(), "*")
+            elif literal and self.is_op(tok, "*", "/") and after is not None and (
+                    after.kind == "NAME"):
+                op = self.take().value
+                start = self.i
+                rhs, count = self.unit_group()
+                if op == "/" and count > 1:
+                    self.wraps.append((self.toks[start].pos, self.toks[self.i - 1].end))
+                q = self.combine(q, rhs, op)
             else:
-                return q
-            rhs = self.unary()
-            try:
-                q = q * rhs if op == "*" else q / rhs
-            except ZeroDivisionError as exc:
-                raise self.fail("it divides by zero") from exc
-            except Exception as exc:
-                raise self.fail(str(exc).splitlines()[0]) from exc
-            self.check_units(q)
-            self.finite(q)
+                return q, factors
+            factors += 1
+
+    def unit_group(self):
+        """Juxtaposed unit names (``s s``, ``kg m^2``) inside a number's unit."""
+        q = self.power()
+        count = 1
+        while self.peek() is not None and self.peek().kind == "NAME":
+            q = self.combine(q, self.power(), "*")
+            count += 1
+        return q, count
+
+    def combine(self, q, rhs, op: str):
+        """``q * rhs`` or ``q / rhs``, checked (division by zero, unit powers, overflow)."""
+        try:
+            q = q * rhs if op == "*" else q / rhs
+        except ZeroDivisionError as exc:
+            raise self.fail("it divides by zero") from exc
+        except Exception as exc:
+            raise self.fail(str(exc).splitlines()[0]) from exc
+        self.check_units(q)
+        return self.finite(q)
 
     def unary(self):
         tok = self.peek()
@@ -407,7 +477,7 @@ class _Parser:
             try:
                 unit = self.ureg.parse_units(tok.value)
             except Exception as exc:
-                raise self.fail(f"unknown unit {tok.value!r}") from exc
+                raise self.fail(_unknown_unit(tok.value)) from exc
             return self.ureg.Quantity(1.0, unit)
         if tok.value == "(":
             return self.parenthesised()
@@ -422,15 +492,18 @@ class _Parser:
 
 class _Reading:
     """What the parser read: the quantity, whether a unit was named, the unit as typed, the
-    canonical names of every unit mentioned, and whether it adds revolutions to non-revolutions
-    (``1 turn/s + 1 Hz``, which pint sums through radians)."""
+    canonical names of every unit mentioned, whether it adds revolutions to non-revolutions
+    (``1 turn/s + 1 Hz``, which pint sums through radians), and the text with the parentheses
+    the precedence implies made explicit (``1500 N / (7 mm)``)."""
 
-    __slots__ = ("quantity", "named", "unit_text", "names", "mixed_turns")
+    __slots__ = ("quantity", "named", "unit_text", "names", "mixed_turns", "explicit",
+                 "angle_mismatch")
 
     def __init__(self, quantity: Any, named: bool, unit_text: str, names: list[str],
-                 mixed_turns: bool):
+                 mixed_turns: bool, explicit: str = "", angle_mismatch: str = ""):
         self.quantity, self.named, self.unit_text = quantity, named, unit_text
-        self.names, self.mixed_turns = names, mixed_turns
+        self.names, self.mixed_turns, self.explicit = names, mixed_turns, explicit
+        self.angle_mismatch = angle_mismatch
 
 
 def _evaluate(text: str, label: str) -> _Reading:
@@ -459,7 +532,88 @@ def _evaluate(text: str, label: str) -> _Reading:
     if (names and len(magnitudes) == 1 and signs_only and first + 1 < len(toks)
             and toks[first + 1].kind == "NAME"):
         unit_text = text[toks[first + 1].pos:].strip()
-    return _Reading(quantity, bool(names), unit_text, names, parser.mixed_turns)
+    return _Reading(quantity, bool(names), unit_text, names, parser.mixed_turns,
+                    _explicit(text, parser.wraps), parser.angle_mismatch)
+
+
+def _explicit(text: str, wraps: list[tuple[int, int]]) -> str:
+    """``text`` with ``(`` and ``)`` around each ``(start, end)`` span, stripped."""
+    for start, end in sorted(wraps, reverse=True):
+        text = text[:start] + "(" + text[start:end] + ")" + text[end:]
+    return text.strip()
+
+
+def _unit_words(quantity) -> str:
+    """A quantity's unit for a message: ``degree``, ``meter / second``, ``a pure number``."""
+    return "a pure number" if quantity.unitless else str(quantity.units)
+
+
+_VOCABULARY: list[str] = []
+
+
+def _vocabulary() -> list[str]:
+    """Every unit name, symbol and alias pint knows (for "did you mean")."""
+    if not _VOCABULARY:
+        words = set()
+        for name, definition in registry()._units.items():
+            words.add(name)
+            if getattr(definition, "symbol", None):
+                words.add(definition.symbol)
+            words.update(a for a in getattr(definition, "aliases", ()) or () if a)
+        _VOCABULARY.extend(sorted(w for w in words if w.isidentifier()))
+    return _VOCABULARY
+
+
+def _is_unit(word: str) -> bool:
+    try:
+        registry().parse_units(word)
+    except Exception:
+        return False
+    return True
+
+
+def _unknown_unit(word: str) -> str:
+    """``unknown unit 'kgg' (did you mean 'kg'?)``. Tried in turn, the first that finds
+    something wins: the same letters in another case (``hz``, ``Mpa``) or order (``rmp``), a
+    plural (``lbs``), a power written without ``^`` (``m2``), a close name pint knows, two
+    units written together (``Nm``), a prefix with a close name (``kiloneuton``)."""
+    import difflib
+
+    vocabulary = _vocabulary()
+    low = word.lower()
+    def other_case_prefixed():
+        found = []
+        for cut in range(1, min(6, len(word))):
+            rest = word[cut:].lower()
+            bases = [w for w in vocabulary if w.lower() == rest]
+            for prefix in dict.fromkeys((word[:cut], word[:cut].upper(), word[:cut].lower())):
+                if prefix != "m" and _is_unit(prefix + "m"):
+                    found += [prefix + w for w in bases if _is_unit(prefix + w)]
+        return found
+
+    tries = [
+        lambda: [w for w in vocabulary if w.lower() == low] + other_case_prefixed(),
+        lambda: [w for w in vocabulary if len(w) == len(word) and len(w) > 2
+                 and sorted(w) == sorted(word)],
+        lambda: [word[:-1]] if len(word) > 2 and word.endswith("s") and _is_unit(word[:-1])
+        else [],
+        lambda: ([f"{word[:-1]}^{word[-1]}"] if len(word) > 1 and word[-1] in "23456789"
+                 and _is_unit(word[:-1]) else []),
+        lambda: (difflib.get_close_matches(word, vocabulary, n=2, cutoff=0.8)
+                 + [f"{word[:cut]}*{word[cut:]}" for cut in range(len(word) - 1, 0, -1)
+                    if len(word) <= 5 and not word[cut:].isdigit() and _is_unit(word[:cut])
+                    and _is_unit(word[cut:])][:1]),
+        lambda: [word[:cut] + base for cut in range(1, min(6, len(word)))
+                 if _is_unit(word[:cut] + "m") and word[:cut] != "m"
+                 for base in difflib.get_close_matches(word[cut:], vocabulary, n=2, cutoff=0.8)
+                 if _is_unit(word[:cut] + base)],
+    ]
+    for attempt in tries:
+        found = [w for w in dict.fromkeys(attempt()) if w != word]
+        if found:
+            shown = " or ".join(repr(w) for w in found[:3])
+            return f"unknown unit {word!r} (did you mean {shown}?)"
+    return f"unknown unit {word!r}"
 
 
 def _has_turns(quantity) -> bool:
@@ -477,8 +631,29 @@ def _canonical(ureg, name: str) -> str:
 # Dimensions and conversion
 
 
+def _dimensionality(quantity) -> str:
+    """pint's dimensionality with dyncalc's ``[angle]``: ``[length] * [mass] / [time] ** 2 *
+    [angle]`` for ``N*m*deg``."""
+    power = angle_power(quantity)
+    text = "" if quantity.dimensionless else str(quantity.dimensionality)
+    if not power:
+        return text or "dimensionless"
+    num, _, den = text.partition(" / ")
+    num = "" if num in ("", "1") else num
+    shown = "[angle]" if abs(power) == 1 else f"[angle] ** {abs(power):g}"
+    if power > 0:
+        num = f"{num} * {shown}" if num else shown
+    else:
+        den = f"{den} * {shown}" if den else shown
+    text = f"{num or '1'} / {den}" if den else num
+    return text or "dimensionless"
+
+
+_RATIO_NAMES = frozenset({"percent", "permille", "ppm"})
+
+
 def _dimension_message(label: str, dim: Dim, quantity) -> InputError:
-    got = f"{format_quantity(quantity)} ({quantity.dimensionality})"
+    got = f"{format_quantity(quantity)} ({_dimensionality(quantity)})"
     if dim.kind == "dimensionless":
         return InputError(f"{label} must be a pure number; got {got}")
     article = "an" if dim.name[0] in "aeiou" else "a"
@@ -518,6 +693,10 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
     if dim.kind == "angle":
         if not quantity.dimensionless:
             raise _dimension_message(label, dim, quantity)
+        if angle_power(quantity) != 1:
+            if angle_power(quantity) == 0 and set(names or ()) & _RATIO_NAMES:
+                raise _ratio_not_angle(label, quantity)
+            raise _dimension_message(label, dim, quantity)
         return quantity
     if not quantity.check(dim.check):
         raise _dimension_message(label, dim, quantity)
@@ -525,6 +704,16 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
         if "cycle" in classes:
             raise InputError(f"{label} is an angular rate; give it in rad/s, deg/s, rpm or "
                              f"rev/s, not Hz (a frequency in cycles)")
+        power = angle_power(quantity)
+        if power == 0:  # a plain rate: 1/s is read as rad/s (SPEC), any other is refused
+            used = names if names is not None else _unit_names(quantity.units)
+            if any(name != "second" for name in used):
+                raise InputError(
+                    f"{label} is an angular rate; got {_compact(quantity)}, a plain "
+                    f"rate with no angle (only 1/s is read as rad/s): for revolutions per "
+                    f"minute write rpm or rev/min, or give rad/s")
+        elif power not in dim.angles:
+            raise _dimension_message(label, dim, quantity)
         return _convert(quantity, dim.si.replace("^", "**"), label)
     if dim.kind == "cycle-rate":
         if "angle" in classes:
@@ -536,7 +725,30 @@ def _normalise(quantity, dim: Dim, label: str, names: list[str] | None = None,
         if "turn" in classes:
             return ureg.Quantity(_convert(quantity, "turn/s", label).magnitude, "Hz")
         return _convert(quantity, "Hz", label)
+    if angle_power(quantity) not in dim.angles:
+        raise _dimension_message(label, dim, quantity)
     return quantity
+
+
+def _compact(quantity) -> str:
+    """``60 1/min``: a scalar quantity with pint's short unit symbols, for messages."""
+    return f"{float(quantity.magnitude):.15g} {format(quantity.units, '~C')}"
+
+
+def _ratio_not_angle(label: str, quantity) -> InputError:
+    """A percent (or permille, ppm) where an angle belongs: never read as radians. A grade
+    of 100 % is atan(1) = 45 deg; the message says so, for the value given."""
+    import numpy as np
+
+    ratio = np.asarray(quantity.to("dimensionless").magnitude, dtype=float)
+    shown = format_quantity(quantity)
+    if ratio.ndim == 0 and math.isfinite(float(ratio)):
+        degrees = math.degrees(math.atan(float(ratio)))
+        return InputError(f"{label} must be an angle; got {shown}, a ratio, not an angle: a "
+                          f"grade of {format_quantity(quantity)} is {degrees:.6g} deg, so give "
+                          f"the angle ({degrees:.6g}deg)")
+    return InputError(f"{label} must be an angle; got {shown}, a ratio, not an angle; give the "
+                      "angle (a grade of 100 % is 45 deg)")
 
 
 def _convert(quantity, unit: str, label: str, shown=None):
@@ -621,11 +833,20 @@ def _finish(reading: _Reading, text: str, dim: Dim, label: str, strict: bool, al
                              f"write it with a unit, e.g. {text.strip()} {dim.si}")
         quantity = registry().Quantity(quantity.magnitude, dim.si.replace("^", "**"))
         assumed = True
-    quantity = _normalise(quantity, dim, label, reading.names if reading.named else None,
-                          reading.mixed_turns)
+    try:
+        quantity = _normalise(quantity, dim, label, reading.names if reading.named else None,
+                              reading.mixed_turns)
+    except InputError as exc:
+        if reading.explicit == text.strip() or "(" not in reading.explicit:
+            raise
+        raise InputError(f"{exc} (the text was read as {_show(reading.explicit)}: a number "
+                         "and its unit bind tighter than /)") from None
+    if reading.angle_mismatch:
+        raise _refuse(label, text, reading.angle_mismatch)
     si = to_si(quantity, dim, label)
     _check_value(si, dim, label, allow_inf, constraint, quantity)
-    return Parsed(quantity, float(si), assumed, reading.unit_text, text)
+    return Parsed(quantity, float(si), assumed, reading.unit_text, text,
+                  reading=reading.explicit)
 
 
 _PLUS_MINUS_RE = re.compile(r"\+/-|±")
@@ -662,7 +883,8 @@ def _with_unit(reading: _Reading, unit, names: list[str], unit_text: str, label:
     if reading.named:
         raise _refuse(label, text, "give the unit once, after the parentheses: (100 ± 5) N/m")
     return _Reading(reading.quantity * unit, True, unit_text.strip(), names,
-                    reading.mixed_turns or mixed_turns)
+                    reading.mixed_turns or mixed_turns, reading.explicit,
+                    reading.angle_mismatch)
 
 
 def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: str,
@@ -677,8 +899,14 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
     try:
         value = _evaluate(value_text, label)
         sigma = _evaluate(sigma_text, label)
+        sigma_toks = _tokenize(sigma_text, label)
     except ReadError as exc:  # quote the whole text, not the half that failed
         raise _refuse(label, text, exc.why) from None
+    extra = _not_a_unit(sigma_toks[_number_end(sigma_toks):])
+    if extra is not None:
+        raise _refuse(label, text, f"only the uncertainty and its own unit may follow +/- or "
+                                   f"±, not {sigma_text[extra:].strip()!r}; write one value "
+                                   "and its uncertainty: 2.0 ± 0.1 kg or (100 ± 5) N/m")
     relative = (dim.kind != "dimensionless" and not shared.strip() and sigma.named
                 and set(sigma.names) <= _RELATIVE_UNITS)
     if dim.kind == "dimensionless" and value.named != sigma.named and not shared.strip():
@@ -706,7 +934,7 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
     else:
         sigma_si = _finish(sigma, text, dim, spread_label, strict, False, "nonnegative").si
     parsed = Parsed(parsed.quantity, parsed.si, parsed.assumed_si, parsed.unit_text, text,
-                    uncertainty=sigma_si)
+                    uncertainty=sigma_si, reading=parsed.reading)
     return parsed
 
 
@@ -800,12 +1028,52 @@ def parse_vector(text: str, dim: Dim, *, label: str = "value", size: int = 3,
     return Parsed(quantity, si, not named and dim.kind != "dimensionless", unit_text, text)
 
 
+def _number_end(toks: list[_Tok]) -> int:
+    """How many tokens the leading number takes: signs and a number, or a parenthesised
+    signed number (``(-0.1)``); 0 when ``toks`` do not start with one."""
+    k = 0
+    opened = bool(toks) and toks[0].kind == "OP" and toks[0].value == "("
+    k += opened
+    while k < len(toks) and toks[k].kind == "OP" and toks[k].value in "+-":
+        k += 1
+    if k >= len(toks) or toks[k].kind != "NUM":
+        return 0
+    k += 1
+    if opened:
+        if k < len(toks) and toks[k].kind == "OP" and toks[k].value == ")":
+            return k + 1
+        return 0
+    return k
+
+
+def _not_a_unit(toks: list[_Tok]) -> int | None:
+    """Where ``toks`` stop being a unit (names, ``*``, ``/``, parentheses, powers): the text
+    position of the first number that is not an exponent or the ``1`` of ``1/s``, or of a
+    ``+``/``-`` that is not an exponent's sign; ``None`` when all of it is a unit."""
+    for k, tok in enumerate(toks):
+        before = toks[k - 1] if k else None
+        after = toks[k + 1] if k + 1 < len(toks) else None
+        if tok.kind == "NUM" and not tok.exponent and not (
+                tok.value == 1.0 and after is not None and after.kind == "OP"
+                and after.value == "/"):
+            return tok.pos
+        if (tok.kind == "OP" and tok.value in "+-"
+                and not (before is not None and before.kind == "OP"
+                         and before.value in ("**", "^"))):
+            return tok.pos
+    return None
+
+
 def _read_unit(text: str, label: str):
     """(pint unit, unit names mentioned) of a unit text such as ``kN/m`` or ``1/s``."""
     if not isinstance(text, str) or not text.strip():
         raise _refuse(label, str(text), "no unit is given")
     _check_characters(text, label)
     stripped = text.strip()
+    toks = _tokenize(stripped, label)
+    lead = 1 if toks and toks[0].kind == "NUM" and toks[0].value == 1.0 else 0
+    if _not_a_unit(toks[lead:]) is not None:
+        raise _refuse(label, text, "give a unit, not a quantity")
     probe = stripped if _NUMBER_RE.match(stripped) else "1 " + stripped
     try:
         reading = _evaluate(probe, label)
@@ -846,6 +1114,12 @@ def convert(si_value, dim: Dim, unit_text: str, *, label: str = "unit", name: st
         base = ureg.Quantity(si_value, dim.si.replace("^", "**"))
     else:
         base = ureg.Quantity(si_value, dim.si.replace("^", "**") if dim.si else "")
+        if dim.kind != "dimensionless" and angle_power(ureg.Quantity(1.0, unit)) not in dim.angles:
+            article = "an" if dim.name[0] in "aeiou" else "a"
+            raise InputError(f"{label}: {unit_text} is not a unit of {dim.display}; {name} is "
+                             f"{article} {dim.name}")
+        if dim.kind == "dimensionless" and classes & {"angle", "turn"}:
+            raise InputError(f"{label}: {unit_text} is an angle unit; {name} is a pure number")
     try:
         return base.to(unit).magnitude
     except Exception as exc:  # pint's DimensionalityError
