@@ -141,6 +141,17 @@ def test_text_after_the_uncertainty_is_refused():
                     "uncertainty: 2.0 ± 0.1 kg or (100 ± 5) N/m")
 
 
+@pytest.mark.parametrize("text", ["1±1%m", "1 ± 1 % m", "2 ± 5%kg"])
+def test_a_percent_with_a_unit_after_the_uncertainty_is_refused(text):
+    """Before: '1±1%m' was 1 ± 1 of a unit '%m', i.e. (0.01 ± 0.01) m, with exit 0."""
+    result = invoke("natural-frequency", "--length", text)
+    assert result.exit_code == 2
+    tail = text.split("±")[1].strip()
+    assert error_line(result) == (f"Error: --length: cannot read {text!r}: a percent goes alone "
+                                  f"after +/- or ±, not {tail!r}: write 1 m ± 1% (a relative "
+                                  "uncertainty) or (1 ± 0.01) m")
+
+
 def test_the_uncertainty_with_its_own_unit_still_reads():
     parsed = parse_quantity("1 m ± 1 cm", LENGTH)
     assert (parsed.si, parsed.uncertainty) == (1.0, 0.01)

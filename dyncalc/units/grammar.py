@@ -909,6 +909,12 @@ def _parse_uncertain(text: str, split: tuple[str, str, str], dim: Dim, label: st
                                    "and its uncertainty: 2.0 ± 0.1 kg or (100 ± 5) N/m")
     relative = (dim.kind != "dimensionless" and not shared.strip() and sigma.named
                 and set(sigma.names) <= _RELATIVE_UNITS)
+    if sigma.named and set(sigma.names) & _RELATIVE_UNITS and not relative \
+            and not set(sigma.names) <= _RELATIVE_UNITS:
+        # 1 ± 1%m: a percent of a metre (0.01 m), never what was meant by a relative spread
+        raise _refuse(label, text, f"a percent goes alone after +/- or ±, not "
+                                   f"{sigma_text.strip()!r}: write 1 m ± 1% (a relative "
+                                   "uncertainty) or (1 ± 0.01) m")
     if dim.kind == "dimensionless" and value.named != sigma.named and not shared.strip():
         raise _refuse(label, text, "a pure number with a unit (%) on one side only is "
                                    "ambiguous; write both sides alike: 5% ± 1% or 0.05 ± 0.01")
