@@ -95,9 +95,9 @@ class Output:
                 click.echo(f"warning: {one_line(w)}", err=True)
             for c in checks:
                 if not c.passed:
-                    from .render import _check_line
+                    from .render_parts import check_line
 
-                    click.echo(_check_line(c, self.digits), err=True)
+                    click.echo(check_line(c, self.digits), err=True)
             click.echo(text)
         elif self.as_json:
             click.echo(encode.to_json(result, units, checks, self.explain))

@@ -19,8 +19,9 @@ from typing import TYPE_CHECKING
 import click
 
 from ..errors import one_line
-from ..result.encode import explain_format, shown
-from ..result.entries import Entry, Result, format_number
+from ..result.encode import explain_format
+from ..result.entries import Result, format_number
+from .render_parts import check_line, header_parts, input_phrases, rows
 from .streams import fit
 
 if TYPE_CHECKING:
@@ -30,21 +31,6 @@ __all__ = ["human", "plain_text", "rich_text", "format_number", "pack", "plain_w
 
 _GAP = "   "  # between the title's phrases
 _HEAD = ("result", "symbol", "value", "unit")
-
-
-def header_parts(result: Result) -> list[str]:
-    """The title's phrases: the command, ``scene: ...``, ``model: ...``, ``method: ...``."""
-    parts = [result.command]
-    if result.scene:
-        parts.append(f"scene: {result.scene}")
-    if result.model:
-        parts.append(f"model: {result.model}")
-    if result.method:
-        parts.append(f"method: {result.method}")
-    inverse = result.extra.get("inverse")
-    if inverse:
-        parts.append(f"solved for {inverse['unknown']}: {inverse['method']}")
-    return parts
 
 
 def pack(phrases: list[str], width: int | None, sep: str = _GAP, first: str = "",
@@ -79,48 +65,9 @@ def _wrap(text: str, width: int | None) -> list[str]:
                          break_long_words=False, break_on_hyphens=False)
 
 
-def _with_uncertainty(entry: Entry, value, unit: str, digits: int) -> str:
-    """``7.07107 ± 0.18``: the value to ``digits`` figures, its uncertainty to two."""
-    text = format_number(value, digits)
-    sigma = entry.uncertainty_in(unit) if entry.uncertainty is not None else None
-    if sigma is None or isinstance(value, str):
-        return text
-    return f"{text} ± {format_number(sigma, 2)}"
-
-
-def _rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str, ...]]:
-    rows = []
-    for entry in result.results.values():
-        value, unit = shown(entry, units)
-        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name,
-                                    _with_uncertainty(entry, value, unit, digits), unit))))
-    return rows
-
-
-def _input_phrases(result: Result, digits: int) -> list[str]:
-    parts = []
-    for entry in result.inputs.values():
-        value, unit = shown(entry, {})
-        number = _with_uncertainty(entry, value, unit, digits)
-        text = f"{entry.name} = {number}{' ' + unit if unit else ''}"
-        if entry.assumed_si:
-            text += " (assumed SI)"
-        parts.append(text)
-    return parts
-
-
 def _inputs_lines(result: Result, digits: int, width: int | None) -> list[str]:
-    phrases = [fit(p) for p in _input_phrases(result, digits)]
+    phrases = [fit(p) for p in input_phrases(result, digits)]
     return pack(phrases, width, sep=", ", first="inputs: ", indent="  ") if phrases else []
-
-
-def _check_line(check: Check, digits: int) -> str:
-    verdict = "pass" if check.passed else "FAIL"
-    unit = f" {check.unit}" if check.unit else ""
-    return (f"check {check.name}: expected {format_number(check.expected, digits)}{unit}, "
-            f"given {format_number(check.given, digits)}{unit}, relative difference "
-            f"{check.rel_diff:.2g} (tolerance {check.rtol:g}): {verdict}"
-            + (f"; likely slip: {check.diagnosis}" if check.diagnosis else ""))
 
 
 def _explanation_lines(result: Result, explain: bool | str = True) -> list[str]:
@@ -132,16 +79,16 @@ def _explanation_lines(result: Result, explain: bool | str = True) -> list[str]:
     return render_explanation(result.explanation, explain_format(explain)).splitlines()
 
 
-def _aligned(rows: list[tuple[str, ...]]) -> list[str]:
-    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-    return ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
+def _aligned(lines: list[tuple[str, ...]]) -> list[str]:
+    widths = [max(len(r[i]) for r in lines) for i in range(len(lines[0]))]
+    return ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in lines]
 
 
-def _listed(rows: list[tuple[str, ...]], width: int) -> list[str]:
+def _listed(cells: list[tuple[str, ...]], width: int) -> list[str]:
     """One result a line, ``name (symbol) = value unit``; the value on a line of its own,
     indented, when the line would be too wide (and whole even then)."""
     lines = []
-    for name, symbol, value, unit in rows:
+    for name, symbol, value, unit in cells:
         label = name if symbol == name else f"{name} ({symbol})"
         shown_value = f"{value} {unit}".rstrip()
         line = f"{label} = {shown_value}"
@@ -153,14 +100,14 @@ def table_lines(result: Result, units: dict[str, str], digits: int,
                 width: int | None) -> list[str]:
     """The results as plain aligned lines that fit ``width``: the full table, the table
     without its symbol column, or one result a line (:func:`_listed`)."""
-    rows = _rows(result, units, digits)
-    full = _aligned([_HEAD, *rows])
+    cells = rows(result, units, digits)
+    full = _aligned([_HEAD, *cells])
     if width is None or max(map(len, full)) <= width:
         return full
-    slim = _aligned([(r[0], r[2], r[3]) for r in [_HEAD, *rows]])
+    slim = _aligned([(r[0], r[2], r[3]) for r in [_HEAD, *cells]])
     if max(map(len, slim)) <= width:
         return slim
-    return _listed(rows, width)
+    return _listed(cells, width)
 
 
 def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[Check],
@@ -171,7 +118,7 @@ def plain_text(result: Result, units: dict[str, str], digits: int, checks: list[
     lines += table_lines(result, units, digits, width)
     lines += _inputs_lines(result, digits, width)
     for text in ([f"warning: {one_line(w)}" for w in result.warnings]
-                 + [_check_line(c, digits) for c in checks]):
+                 + [check_line(c, digits) for c in checks]):
         lines += _wrap(text, width)
     if explain:
         for line in _explanation_lines(result, explain):
@@ -192,7 +139,7 @@ def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[C
     for column, justify in (("result", "left"), ("symbol", "left"), ("value", "right"),
                             ("unit", "left")):
         table.add_column(column, justify=justify, no_wrap=True)
-    for row in _rows(result, units, digits):
+    for row in rows(result, units, digits):
         table.add_row(*(Text(cell) for cell in row))
     natural = Measurement.get(console, console.options.update_width(1 << 20), table).maximum
 
@@ -212,7 +159,7 @@ def rich_text(result: Result, units: dict[str, str], digits: int, checks: list[C
         for line in _wrap(f"warning: {one_line(w)}", width):
             say(line, "yellow")
     for c in checks:
-        for line in _wrap(_check_line(c, digits), width):
+        for line in _wrap(check_line(c, digits), width):
             say(line, "green" if c.passed else "bold red")
     if explain:
         for text in _explanation_lines(result, explain):
@@ -254,7 +201,7 @@ def human(result: Result, units: dict[str, str], digits: int, checks: list[Check
             click.echo(f"warning: {one_line(w)}", err=True)
         for c in checks:
             if not c.passed:
-                click.echo(_check_line(c, digits), err=True)
+                click.echo(check_line(c, digits), err=True)
         click.echo(render_forms.delimited(result, units, fmt), nl=False)
     elif fmt == "markdown" or document == "markdown":
         click.echo(render_forms.markdown(result, units, digits, checks, explain), nl=False)

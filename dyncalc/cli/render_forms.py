@@ -19,7 +19,7 @@ from ..errors import one_line
 from ..result.encode import full_number, machine
 from ..result.explain_render import latex_text, md_text as _md, render_explanation
 from ..result.entries import Result
-from .render import _check_line, _input_phrases, _rows, header_parts
+from .render_parts import check_line, header_parts, input_phrases, rows
 
 if TYPE_CHECKING:
     from ..result.checks import Check
@@ -43,12 +43,12 @@ def markdown(result: Result, units: dict[str, str], digits: int, checks: list[Ch
         parts += ["; ".join(_md(m) for m in meta), ""]
     parts += ["| result | symbol | value | unit |", "| --- | --- | ---: | --- |"]
     parts += ["| " + " | ".join(_md(cell) for cell in row) + " |"
-              for row in _rows(result, units, digits)]
+              for row in rows(result, units, digits)]
     parts.append("")
-    if (inputs := _input_phrases(result, digits)):
+    if (inputs := input_phrases(result, digits)):
         parts += ["**Inputs:** " + _md(", ".join(inputs)), ""]
     notes = ([f"- **warning:** {_md(one_line(w))}" for w in result.warnings]
-             + [f"- {_md(_check_line(c, digits))}" for c in checks])
+             + [f"- {_md(check_line(c, digits))}" for c in checks])
     if notes:
         parts += notes + [""]
     if explain:
@@ -69,14 +69,14 @@ def latex(result: Result, units: dict[str, str], digits: int, checks: list[Check
              r"\begin{tabular}{llrl}", r"\hline", r"result & symbol & value & unit \\",
              r"\hline"]
     parts += [" & ".join(latex_text(cell) for cell in row) + r" \\"
-              for row in _rows(result, units, digits)]
+              for row in rows(result, units, digits)]
     parts += [r"\hline", r"\end{tabular}", ""]
-    if (inputs := _input_phrases(result, digits)):
+    if (inputs := input_phrases(result, digits)):
         parts += [r"\noindent Inputs: " + latex_text(", ".join(inputs)), ""]
     for w in result.warnings:
         parts += [r"\noindent Warning: " + latex_text(one_line(w)), ""]
     for c in checks:
-        parts += [r"\noindent " + latex_text(_check_line(c, digits)), ""]
+        parts += [r"\noindent " + latex_text(check_line(c, digits)), ""]
     if explain:
         parts.append(_explanation(result, "latex"))
     return "\n".join(parts).rstrip("\n") + "\n"
