@@ -177,15 +177,15 @@ def plain_width() -> int | None:
 def _console():
     """A rich console as wide as the terminal (``COLUMNS``, else the terminal's own width;
     ``COLUMNS=0`` or nonsense, which rich would take as zero columns, falls back to it, then
-    to 80); colour off under ``NO_COLOR``. Only called when colour is wanted (a terminal, or
-    ``FORCE_COLOR``), so it is always a terminal to rich."""
+    to 80). It is a terminal to rich when stdout is one or ``FORCE_COLOR`` is set (not
+    empty); rich itself leaves the colour off under ``NO_COLOR``."""
     import shutil
 
     from rich.console import Console
 
     width = shutil.get_terminal_size((80, 24)).columns
-    no_color = os.environ.get("NO_COLOR", "") != ""
-    return Console(width=width if width > 0 else 80, force_terminal=True, no_color=no_color)
+    forced = True if os.environ.get("FORCE_COLOR") else None
+    return Console(width=width if width > 0 else 80, force_terminal=forced)
 
 
 def human(result: Result, units: dict[str, str], digits: int, checks: list[Check],
