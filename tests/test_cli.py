@@ -302,7 +302,7 @@ def test_internal_error_one_line_and_debug_traceback(monkeypatch):
 @pytest.mark.parametrize("args, message", [
     (["spring-series", "5 kg"], "Error: element k1 (5 kg) must be a stiffness [force]/[length] "
                                 "or [force]*[length]/[angle]; got 5 kilogram ([mass])"),
-    (["spring-series", "--foo"], "Error: No such option '--foo'; see 'dyncalc "
+    (["spring-series", "--xyzzy"], "Error: No such option '--xyzzy'; see 'dyncalc "
                                  "spring-series --help'"),
     (["spring-series", "--jsn"], "Error: No such option '--jsn' (did you mean '--json'?); "
                                  "see 'dyncalc spring-series --help'"),

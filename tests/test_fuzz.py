@@ -770,7 +770,8 @@ NOT_DRAWN = {
 }
 OUTPUT_FLAGS = ["--json", "--explain", "--strict-units", "--explain=markdown",
                 "--explain=latex", "--explain=text"]
-OUTPUT_OPTIONS = ["--value", "--unit", "--digits", "--check", "--rtol"]
+OUTPUT_OPTIONS = ["--value", "--unit", "--digits", "--check", "--rtol", "--format"]
+FORMATS = ["table", "markdown", "csv", "tsv"]
 
 #: Values of the options whose value is a name or a path, not a quantity.
 NAMED_VALUES = {
@@ -778,6 +779,7 @@ NAMED_VALUES = {
     "--method": methods_of(SCENES) + ["log-linear", "nonlinear", "closed-form", "exact",
                                       "small-damping", "ODE"],
     "--body": BODIES + ["sphere", "Hoop"],
+    "--format": FORMATS + ["CSV", "html", "latex"],
 }
 
 
@@ -797,6 +799,8 @@ def output_pieces(draw, spec: Spec) -> list[Piece]:
         pieces.append(Piece(["--unit", f"{name}={unit}"], 1, None))
     if draw(PERCENT) < 8:
         pieces.append(Piece(["--digits", str(draw(st.integers(1, 17)))], 1, None))
+    if draw(PERCENT) < 10:
+        pieces.append(Piece(["--format", draw(st.sampled_from(FORMATS))], 1, None))
     if draw(PERCENT) < 20:
         name = draw(st.sampled_from(results))
         dim = spec.result_dims.get(name)

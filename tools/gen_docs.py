@@ -310,9 +310,12 @@ page all come from the same record, so they cannot drift apart.
 
 Every computing command also takes the output options `--json`, `--value NAME`,
 `--unit NAME=UNIT`, `--digits N`, `--check NAME=QUANTITY`, `--rtol`, `--explain[=FORMAT]`,
-`--strict-units`, `--batch FILE`, `--on-error` and `--debug`. `--value`, `--json` and batch
-output give each result in its *canonical unit* (the column below) unless `--unit` names
-another. A bare number is read in the parameter's SI unit.
+`--format table|markdown|csv|tsv`, `--strict-units`, `--batch FILE`, `--on-error` and
+`--debug`. `--value`, `--json`, `--format csv|tsv` and batch output give each result in its
+*canonical unit* (the column below) unless `--unit` names another. A bare number is read in
+the parameter's SI unit. `--explain=markdown|latex` and `--format markdown` make the whole
+human output Markdown or LaTeX; `--format csv|tsv` prints the results table alone
+(`name,value,unit`, full precision). See the README's "Output" for the details.
 """
 
 _KIND_WORDS = {"quantity": "", "text": "text", "choice": "one of", "setting": "setting",

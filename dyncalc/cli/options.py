@@ -1,8 +1,8 @@
 """The output contract every computing command shares, as one decorator.
 
 ``@output_options`` adds ``--json``, ``--value``, ``--unit``, ``--digits``, ``--check``,
-``--rtol``, ``--explain``, ``--strict-units``, ``--batch``, ``--on-error`` and ``--debug`` and
-hands the command an :class:`Output` whose :meth:`Output.emit` renders a
+``--rtol``, ``--explain``, ``--format``, ``--strict-units``, ``--batch``, ``--on-error`` and
+``--debug`` and hands the command an :class:`Output` whose :meth:`Output.emit` renders a
 :class:`~dyncalc.result.Result` and returns the exit status, and whose :meth:`Output.run_batch`
 runs the command over the rows of a ``--batch`` file (:mod:`dyncalc.batch`).
 """
@@ -23,22 +23,25 @@ MAX_DIGITS = 17
 
 #: The forms of ``--explain=FORMAT`` (``--explain`` alone is ``text``).
 EXPLAIN_FORMATS = ("text", "markdown", "latex")
+#: The forms of ``--format`` (the human output's results table).
+TABLE_FORMATS = ("table", "markdown", "csv", "tsv")
 
 
 class Output:
     """How the user asked to see the result (and, with ``--batch``, where the rows come from).
 
-    ``explain`` is False, or the format of ``--explain``: ``text``, ``markdown`` or ``latex``.
+    ``explain`` is False, or the format of ``--explain``: ``text``, ``markdown`` or ``latex``;
+    ``format`` that of ``--format`` (None when not given).
     """
 
     __slots__ = ("as_json", "value", "units", "digits", "checks", "rtol", "explain", "strict",
-                 "batch", "on_error", "debug")
+                 "batch", "on_error", "debug", "format")
 
     def __init__(self, as_json: bool = False, value: str | list[str] | None = None,
                  units: list[str] | None = None, digits: int = 6,
                  checks: list[str] | None = None, rtol: float | None = None,
                  explain: bool | str = False, strict: bool = False, batch: str | None = None,
-                 on_error: str = "stop", debug: bool = False):
+                 on_error: str = "stop", debug: bool = False, format: str | None = None):
         self.as_json, self.digits = as_json, digits
         #: the results of ``--value`` (repeatable), in the order given; empty without it
         self.value = [value] if isinstance(value, str) else list(value or [])
@@ -46,6 +49,7 @@ class Output:
         self.checks = list(checks or [])
         self.rtol, self.explain, self.strict = rtol, explain, strict
         self.batch, self.on_error, self.debug = batch, on_error, debug
+        self.format = format
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__slots__)
@@ -91,20 +95,17 @@ class Output:
                 click.echo(f"warning: {one_line(w)}", err=True)
             for c in checks:
                 if not c.passed:
-                    from .render import _check_line
+                    from .render_parts import check_line
 
-                    click.echo(_check_line(c, self.digits), err=True)
+                    click.echo(check_line(c, self.digits), err=True)
             click.echo(text)
         elif self.as_json:
             click.echo(encode.to_json(result, units, checks, self.explain))
-        elif _is_terminal():
-            from . import render
-
-            render.rich_text(result, units, self.digits, checks, self.explain, _console())
         else:
-            from . import render  # human text only: not for --json or --value (start-up)
+            from . import render  # human forms only: not for --json or --value (start-up)
 
-            click.echo(render.plain_text(result, units, self.digits, checks, self.explain))
+            render.human(result, units, self.digits, checks, self.explain, self.format,
+                         terminal=_is_terminal())
         return EXIT_CHECK_FAILED if any(not c.passed for c in checks) else EXIT_OK
 
     def run_batch(self, spec, given: dict[str, object] | None = None) -> int:
@@ -114,7 +115,7 @@ class Output:
         from ..batch import run_batch
 
         for option, used in (("--value", self.value), ("--check", self.checks),
-                             ("--explain", self.explain)):
+                             ("--explain", self.explain), ("--format", self.format)):
             if used:
                 raise InputError(f"{option} does not go with --batch: {_BATCH_REFUSALS[option]}")
         for label, value in (given or {}).items():
@@ -142,23 +143,17 @@ _BATCH_REFUSALS = {
     "--check": "compare the output's columns with your answers instead",
     "--explain": "run one row on its own with --explain",
     "--plot": "draw one row's decay on its own with --plot",
+    "--format": "the output is CSV (or JSON lines with --json)",
 }
 
 
-def _console():
-    """A rich console as wide as the terminal; ``COLUMNS=0`` or a nonsense width (which rich
-    would take as zero columns, printing nothing) falls back to the terminal's own width."""
-    import shutil
-
-    from rich.console import Console
-
-    width = shutil.get_terminal_size((80, 24)).columns
-    return Console(width=width if width > 0 else 80)
-
-
 def _is_terminal() -> bool:
+    """Whether the table is drawn for a terminal, with colour: stdout is one, or
+    ``FORCE_COLOR`` is set (not empty) and ``NO_COLOR`` is not (``NO_COLOR`` wins)."""
     if os.environ.get("DYNCALC_PLAIN"):
         return False
+    if os.environ.get("FORCE_COLOR") and not os.environ.get("NO_COLOR"):
+        return True
     try:
         return sys.stdout.isatty()
     except (AttributeError, ValueError):
@@ -244,17 +239,37 @@ def _positive_rtol(ctx, param, value):
     return value
 
 
+def _explain_with(fmt: str | None, as_json: bool, value, explain: bool | str) -> bool | str:
+    """``--explain``'s format once ``--format`` is taken into account (``--format markdown``
+    makes a plain ``--explain`` Markdown); refuses the combinations that cannot be honoured."""
+    if fmt is None:
+        return explain
+    for flag, used in (("--json", as_json), ("--value", value)):
+        if used:
+            raise InputError(f"--format does not go with {flag}: {flag} prints its own "
+                             "form; --format is for the human output")
+    if explain and fmt in ("csv", "tsv"):
+        raise InputError(f"--explain does not go with --format {fmt}: the {fmt.upper()} is "
+                         "the results table alone (use --format markdown --explain)")
+    if explain in ("markdown", "latex") and fmt != explain:
+        raise InputError(f"--explain={explain} and --format {fmt} do not go together: "
+                         f"--explain={explain} makes the whole output "
+                         f"{'Markdown' if explain == 'markdown' else 'LaTeX'}")
+    return "markdown" if explain and fmt == "markdown" else explain
+
+
 def output_options(command):
     """Add the shared output options to a click command function (which takes ``out``)."""
 
     @functools.wraps(command)
     def wrapper(*args, as_json, value, units, digits, checks, rtol, explain, explain_format,
-                strict_units, batch, on_error, debug, **kwargs):
+                strict_units, batch, on_error, debug, table_format, **kwargs):
+        explained = (explain_format or "text") if explain else False
         out = Output(as_json=as_json, value=list(value), units=list(units), digits=digits,
                      checks=list(checks), rtol=rtol,
-                     explain=(explain_format or "text") if explain else False,
+                     explain=_explain_with(table_format, as_json, value, explained),
                      strict=strict_units,
-                     batch=batch, on_error=on_error, debug=debug)
+                     batch=batch, on_error=on_error, debug=debug, format=table_format)
         return command(*args, out=out, **kwargs)
 
     decorators = [
@@ -283,6 +298,11 @@ def output_options(command):
                           "pasting."),
         click.option("--explain-format", type=click.Choice(EXPLAIN_FORMATS), default=None,
                      hidden=True, help="Format of --explain (what --explain=FORMAT sets)."),
+        click.option("--format", "table_format", type=click.Choice(TABLE_FORMATS),
+                     default=None,
+                     help="The results table as an aligned table (the default), Markdown (the "
+                          "whole output), or CSV/TSV (the table alone: full precision, "
+                          "canonical units, a name,value,unit header)."),
         click.option("--strict-units", is_flag=True,
                      help="Refuse bare numbers: every quantity needs its unit."),
         click.option("--batch", metavar="FILE",

@@ -13,7 +13,7 @@ from ..result.explain import latex_escape
 from ..result.entries import Explanation
 
 __all__ = ["FORMATS", "render_explanation", "text_lines", "markdown", "latex",
-           "variance_line"]
+           "variance_line", "md_text", "latex_text"]
 
 FORMATS = ("text", "markdown", "latex")
 
@@ -46,6 +46,11 @@ _MD_SPECIAL = re.compile(r"([\\`*_\[\]<>|#$])")
 
 def _md(text: str) -> str:
     return _MD_SPECIAL.sub(r"\\\1", text)
+
+
+def md_text(text: str) -> str:
+    """Words for Markdown, its special characters (``* _ | [ ] ...``) backslash-escaped."""
+    return _md(text)
 
 
 def _md_code(text: str) -> str:
