@@ -40,3 +40,27 @@ def count_readings(monkeypatch, *modules, name="parse_quantity"):
 
         monkeypatch.setattr(module, name, counting)
     return calls
+
+
+def on_a_terminal(argv: list[str], env: dict[str, str]) -> tuple[int, bytes, bytes]:
+    """Run ``argv`` with its stdout a pseudo-terminal (stdin empty) and ``env``; (exit status,
+    what the terminal received, stderr)."""
+    import os
+    import pty
+    import subprocess
+
+    master, slave = pty.openpty()
+    proc = subprocess.Popen(argv, stdout=slave, stderr=subprocess.PIPE,
+                            stdin=subprocess.DEVNULL, env=env)
+    os.close(slave)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(master, 65536)
+        except OSError:  # the terminal closed with the process
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(master)
+    return proc.wait(timeout=60), b"".join(chunks), proc.stderr.read()

@@ -22,6 +22,20 @@ def log_uniform(rng, low, high, n):
     return 10.0 ** rng.uniform(low, high, n)
 
 
+def mixed(rng, ordinary, n):
+    """``n`` values: the first half in the ordinary range ``(low, high)`` of log10, the rest
+    over 1e-300..1e300."""
+    half = n // 2
+    return np.concatenate([log_uniform(rng, *ordinary, half),
+                           log_uniform(rng, -300, 300, n - half)])
+
+
+def ordinary_rows(n, extra=0):
+    """The mask of :func:`mixed`'s ordinary half, with ``extra`` ordinary rows appended (a
+    textbook example)."""
+    return np.concatenate([np.arange(n) < n // 2, np.ones(extra, dtype=bool)])
+
+
 def _runner_warns(outcome, values_si, inputs) -> bool:
     """Whether the scene runner adds an overflow or underflow warning (result/entries.py)."""
     for name, value in values_si.items():

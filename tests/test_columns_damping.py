@@ -12,19 +12,17 @@ from dyncalc.physics.columns import kernel_of
 from dyncalc.physics.damping import (_small_damping_error_array, frame_brace_damper,
                                      pendulum_spring_dashpot, rod_in_fluid,
                                      small_damping_error)
-from kernel_rows import check_kernel, log_uniform
+from kernel_rows import check_kernel, log_uniform, mixed, ordinary_rows
 
 N = 500
 
 
 def _mix(rng, ordinary, n=N):
-    half = n // 2
-    return np.concatenate([log_uniform(rng, *ordinary, half),
-                           log_uniform(rng, -300, 300, n - half)])
+    return mixed(rng, ordinary, n)
 
 
 def _ordinary(extra=0):
-    return np.append(np.arange(N) < N // 2, [True] * extra)
+    return ordinary_rows(N, extra)
 
 
 def test_pendulum_spring_dashpot_columns():

@@ -11,19 +11,17 @@ from dyncalc.physics.columns import kernel_of
 from dyncalc.physics.nonlinear import (WOUND_THRESHOLD, _rod_equilibrium,
                                        _rod_equilibrium_array, half_cylinder_shell,
                                        rod_torsion_spring)
-from kernel_rows import check_kernel, log_uniform
+from kernel_rows import check_kernel, log_uniform, mixed, ordinary_rows
 
 N = 600
 
 
 def _mix(rng, ordinary, n=N):
-    half = n // 2
-    return np.concatenate([log_uniform(rng, *ordinary, half),
-                           log_uniform(rng, -300, 300, n - half)])
+    return mixed(rng, ordinary, n)
 
 
 def _ordinary(extra=0):
-    return np.append(np.arange(N) < N // 2, [True] * extra)
+    return ordinary_rows(N, extra)
 
 
 @pytest.mark.parametrize("method", ["auto", "linear"])

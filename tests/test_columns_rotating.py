@@ -11,21 +11,17 @@ import numpy as np
 from dyncalc.physics.columns import kernel_of
 from dyncalc.physics.rotating import (bead_on_rotating_ring, pendulum_accelerating_support,
                                       pendulum_on_rotating_disk, quarter_car)
-from kernel_rows import check_kernel, log_uniform
+from kernel_rows import check_kernel, mixed, ordinary_rows
 
 N = 600
 
 
 def _mix(rng, ordinary, n=N):
-    """``n`` values: the first half in the ordinary range ``(low, high)`` of log10, the rest
-    over 1e-300..1e300."""
-    half = n // 2
-    return np.concatenate([log_uniform(rng, *ordinary, half),
-                           log_uniform(rng, -300, 300, n - half)])
+    return mixed(rng, ordinary, n)
 
 
 def _ordinary(n=N):
-    return np.arange(n) < n // 2
+    return ordinary_rows(n)
 
 
 def test_pendulum_accelerating_support_columns():

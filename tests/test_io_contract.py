@@ -29,6 +29,8 @@ from pathlib import Path
 
 import pytest
 
+from helpers import on_a_terminal
+
 DYNCALC = Path(sys.executable).parent / "dyncalc"
 
 #: The simplest valid invocation of every command.
@@ -377,24 +379,8 @@ def test_a_misspelt_command_gets_did_you_mean(warm_cache):
 
 def _on_a_terminal(args, columns: str):
     """Run with stdout a pseudo-terminal ``columns`` wide (``COLUMNS``); what it printed."""
-    import pty
-
-    master, slave = pty.openpty()
-    env = env_for(None, COLUMNS=columns)
-    proc = subprocess.Popen([str(DYNCALC), *args], stdout=slave, stderr=subprocess.PIPE,
-                            stdin=subprocess.DEVNULL, env=env)
-    os.close(slave)
-    chunks = []
-    while True:
-        try:
-            chunk = os.read(master, 65536)
-        except OSError:  # the terminal closed with the process
-            break
-        if not chunk:
-            break
-        chunks.append(chunk)
-    os.close(master)
-    return proc.wait(timeout=60), b"".join(chunks).decode(), proc.stderr.read()
+    status, out, err = on_a_terminal([str(DYNCALC), *args], env_for(None, COLUMNS=columns))
+    return status, out.decode(), err
 
 
 @pytest.mark.parametrize("columns", ["30", "33", "36", "0", "abc"])

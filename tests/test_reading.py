@@ -246,3 +246,17 @@ def test_a_parenthesised_number_keeps_its_unit_after_a_slash():
     with its unit), as "(1 m)/2 m*m" does."""
     area = parse_quantity("(1 m^3)/(2) m*m", LENGTH).si
     assert area == parse_quantity("(1 m^3)/2 m*m", LENGTH).si == 0.5
+
+
+def test_did_you_mean_does_not_depend_on_what_was_read_before():
+    """pint adds each prefixed unit it meets to its table; the suggestions must not follow
+    (before: '3 N/mmm' was offered 'mm' only after some earlier text had used mm)."""
+    from dyncalc.units import grammar, parse_unit
+
+    grammar._VOCABULARY.clear()
+    before = list(grammar._vocabulary())
+    for text in ("Gm", "ks", "nN", "hPa", "Mm/ks"):
+        parse_unit(text)
+    grammar._VOCABULARY.clear()
+    assert grammar._vocabulary() == before
+    assert "mm" in before and "Gm" not in before

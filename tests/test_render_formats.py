@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 import os
 import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -18,6 +17,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc.cli import cli
+from helpers import on_a_terminal
 
 DYNCALC = Path(sys.executable).with_name("dyncalc")
 ANSI = re.compile(r"\x1b\[[0-9;]*m")
@@ -103,26 +103,11 @@ def test_without_columns_a_pipe_has_no_width():
 
 
 def _on_a_terminal(args, columns: int) -> str:
-    import pty
-
-    master, slave = pty.openpty()
     env = {k: v for k, v in os.environ.items() if k not in CLEAN}
     env["COLUMNS"] = str(columns)
-    proc = subprocess.Popen([str(DYNCALC), *args], stdout=slave, stderr=subprocess.PIPE,
-                            stdin=subprocess.DEVNULL, env=env)
-    os.close(slave)
-    chunks = []
-    while True:
-        try:
-            chunk = os.read(master, 65536)
-        except OSError:
-            break
-        if not chunk:
-            break
-        chunks.append(chunk)
-    os.close(master)
-    assert proc.wait(timeout=60) == 0
-    return ANSI.sub("", b"".join(chunks).decode()).replace("\r\n", "\n")
+    status, out, _err = on_a_terminal([str(DYNCALC), *args], env)
+    assert status == 0
+    return ANSI.sub("", out.decode()).replace("\r\n", "\n")
 
 
 @pytest.mark.parametrize("width", [40, 80, 200])

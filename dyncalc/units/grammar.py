@@ -407,8 +407,15 @@ class _Parser:
 
     def combine(self, q, rhs, op: str):
         """``q * rhs`` or ``q / rhs``, checked (division by zero, unit powers, overflow)."""
+        return self.checked(lambda: q * rhs if op == "*" else q / rhs)
+
+    def checked(self, compute):
+        """``compute()``, a product, quotient or power of quantities: its failures refused in
+        words, its units and its size checked."""
         try:
-            q = q * rhs if op == "*" else q / rhs
+            q = compute()
+        except OverflowError as exc:
+            raise self.fail("its value overflows float64 (the largest is 1.8e308)") from exc
         except ZeroDivisionError as exc:
             raise self.fail("it divides by zero") from exc
         except Exception as exc:
@@ -434,16 +441,7 @@ class _Parser:
         exponent = self.exponent()
         if self.is_op(self.peek(), "**", "^"):
             raise self.fail("chained powers (a**b**c) are not read; use parentheses")
-        try:
-            q = base ** exponent
-        except OverflowError as exc:
-            raise self.fail("its value overflows float64 (the largest is 1.8e308)") from exc
-        except ZeroDivisionError as exc:
-            raise self.fail("it divides by zero") from exc
-        except Exception as exc:
-            raise self.fail(str(exc).splitlines()[0]) from exc
-        self.check_units(q)
-        return self.finite(q)
+        return self.checked(lambda: base ** exponent)
 
     def exponent(self) -> float:
         sign = 1.0
@@ -551,11 +549,23 @@ def _unit_words(quantity) -> str:
 _VOCABULARY: list[str] = []
 
 
+#: Prefixed units offered by "did you mean" besides the unprefixed ones pint defines.
+_COMMON_PREFIXED = ("mm", "cm", "km", "um", "mg", "ms", "us", "kN", "MN", "mN", "kPa", "MPa",
+                    "GPa", "kHz", "MHz", "mrad", "kJ", "kW", "kNm")
+
+
 def _vocabulary() -> list[str]:
-    """Every unit name, symbol and alias pint knows (for "did you mean")."""
+    """The unit names, symbols and aliases pint defines without a prefix, and the common
+    prefixed ones (for "did you mean"). Prefixed units pint has met already sit in its table
+    too, but which depends on what this process read before: they are left out, so that the
+    suggestion for a text is always the same."""
     if not _VOCABULARY:
-        words = set()
-        for name, definition in registry()._units.items():
+        ureg = registry()
+        words = set(_COMMON_PREFIXED)
+        for name, definition in ureg._units.items():
+            if any(prefix for prefix, _unit, _suffix in ureg.parse_unit_name(name)) \
+                    and name != "kilogram":
+                continue
             words.add(name)
             if getattr(definition, "symbol", None):
                 words.add(definition.symbol)
