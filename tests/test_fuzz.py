@@ -685,10 +685,16 @@ def recipe_coriolis(draw) -> list[Piece]:
     return pieces
 
 
+#: Textbook example ids: those the scenes cite (one scene or several) and one none cites.
+EXAMPLE_IDS = sorted({e for name in SCENES for e in get_scene(name).examples}) + ["E9.99"]
+
+
 def recipe_scenes(draw) -> list[Piece]:
     pieces = []
     if draw(PERCENT) < 80:
-        pieces.append(Piece([draw(st.sampled_from(SCENES))], 0, None))
+        pieces.append(Piece([draw(st.sampled_from(SCENES + EXAMPLE_IDS))], 0, None))
+    if draw(PERCENT) < 20:
+        pieces.append(opt("--command", draw(st.sampled_from(COMMANDS))))
     if draw(st.booleans()):
         pieces.append(flag("--json"))
     return pieces
@@ -757,7 +763,7 @@ SPECS: dict[str, Spec] = {
          "a_centripetal"],
         {"a_c_mag": "acceleration", "F_c_mag": "force", "a_mag": "acceleration"},
         words=False),
-    "scenes": Spec(recipe_scenes, {}, [], flags=["--json"]),
+    "scenes": Spec(recipe_scenes, {"--command": None}, [], flags=["--json"]),
 }
 
 #: Options of a command that the grammar does not draw, and why.

@@ -1,4 +1,4 @@
-"""Writing and checking generated files, shared by ``gen_completions.py`` and ``gen_docs.py``:
+"""Writing and checking generated files, for ``gen_docs.py`` (and any later generator):
 each generator makes ``{file name: text}`` and these keep its folder in step with it (bytes
 in UTF-8, so the drift tests compare exactly what is committed)."""
 from __future__ import annotations

@@ -19,16 +19,9 @@ from .._version import __version__
 from ..errors import (EXIT_BAD_INPUT, EXIT_BROKEN_PIPE, EXIT_INTERRUPTED, InputError,
                       one_line as _one_line)
 from . import streams
+from .modules import COMMAND_MODULES
 
 __all__ = ["cli", "main"]
-
-
-#: Command name -> the module under ``dyncalc.cli`` that defines it (in its ``COMMANDS``).
-COMMAND_MODULES = {
-    "spring-series": "springs", "spring-parallel": "springs",
-    "natural-frequency": "natural_frequency", "damping-ratio": "damping_ratio",
-    "rolling-onset": "rolling_onset", "coriolis": "coriolis", "scenes": "scenes",
-}
 
 
 class _LazyCommands(dict):

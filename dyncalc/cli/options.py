@@ -17,7 +17,8 @@ import click
 from ..errors import EXIT_CHECK_FAILED, EXIT_OK, InputError, one_line
 from .command import Command
 
-__all__ = ["Output", "output_options", "complete_scene", "build_command", "Command"]
+__all__ = ["Output", "output_options", "complete_scene", "build_command", "Command",
+           "COMMON_UNITS"]
 
 MAX_DIGITS = 17
 
@@ -168,23 +169,62 @@ def complete_scene(ctx, param, incomplete):
     return _complete_scene(ctx, param, incomplete)
 
 
+#: The units ``--unit NAME=`` completes to, by the result's canonical unit: the canonical one
+#: first, then a few common ones (tests/test_completion_custom.py runs each one).
+COMMON_UNITS: dict[str, tuple[str, ...]] = {
+    "N/m": ("N/m", "N/mm", "kN/m", "lbf/in"),
+    "rad/s": ("rad/s", "deg/s", "rpm"),
+    "Hz": ("Hz", "kHz", "mHz"),
+    "s": ("s", "ms", "min", "h"),
+    "1/s": ("1/s", "1/ms", "1/min"),
+    "N*s/m": ("N*s/m", "kN*s/m", "lbf*s/in"),
+    "m": ("m", "mm", "cm", "km", "in", "ft"),
+    "m/s": ("m/s", "mm/s", "km/h", "ft/s", "mph"),
+    "m/s^2": ("m/s^2", "mm/s^2", "ft/s^2"),
+    "N": ("N", "kN", "lbf"),
+}
+
+
 def _complete_result(ctx, param, incomplete):
     """Shell completion of ``--value``, ``--unit`` and ``--check``: the result names of the
-    command's record (``NAME=`` for the two that take an assignment)."""
+    command's record (``NAME=`` for the two that take an assignment); after ``--unit NAME=``,
+    the common units of that result's canonical unit (:data:`COMMON_UNITS`)."""
     from click.shell_completion import CompletionItem
 
     record = getattr(ctx.command, "record", None)
-    names = record.result_names() if record is not None else []
+    if record is None:
+        return []
+    if param.name == "units" and "=" in incomplete:
+        name, _, unit = incomplete.partition("=")
+        canonical = next((r.unit for r in record.results
+                          if r.name.replace("<i>", "1") == name
+                          or (r.name.endswith("<i>") and name.startswith(r.name[:-3])
+                              and name[len(r.name) - 3:].isdigit())), None)
+        return [CompletionItem(f"{name}={u}") for u in COMMON_UNITS.get(canonical or "", ())
+                if u.startswith(unit)]
     suffix = "=" if param.name in ("units", "checks") else ""
-    return [CompletionItem(name + suffix) for name in names if name.startswith(incomplete)]
+    return [CompletionItem(name + suffix) for name in record.result_names()
+            if name.startswith(incomplete)]
+
+
+def _complete_file(ctx, param, incomplete):
+    """Shell completion of ``--batch`` and ``--plot``: the shell's own file names."""
+    from click.shell_completion import CompletionItem
+
+    return [CompletionItem(incomplete, type="file")]
 
 
 def _complete_words(words):
-    """Shell completion from a parameter's words (a tuple, or a function giving one)."""
+    """Shell completion from a parameter's words: a tuple, or a function giving one, called
+    with the ``--scene`` typed before (``scene=``) when it takes that keyword."""
     def complete(ctx, param, incomplete):
         from click.shell_completion import CompletionItem
 
-        choices = words() if callable(words) else words
+        if callable(words):
+            takes_scene = "scene" in words.__code__.co_varnames[:words.__code__.co_argcount]
+            choices = words(scene=ctx.params.get("scene")) if takes_scene else words()
+        else:
+            choices = words
         return [CompletionItem(w) for w in choices if w.startswith(incomplete)]
     return complete
 
@@ -221,6 +261,8 @@ def build_command(record, *, rows=None, after=None):
             extra["type"] = click.Choice(parameter.choices)
         elif parameter.choices is not None:
             extra["shell_complete"] = _complete_words(parameter.choices)
+        elif parameter.kind == "after":
+            extra["shell_complete"] = _complete_file
         if parameter.default is not None and parameter.kind == "setting":
             extra["default"] = parameter.default
         decorated = click.option(parameter.flag, parameter.name, metavar=parameter.metavar,
@@ -305,7 +347,7 @@ def output_options(command):
                           "canonical units, a name,value,unit header)."),
         click.option("--strict-units", is_flag=True,
                      help="Refuse bare numbers: every quantity needs its unit."),
-        click.option("--batch", metavar="FILE",
+        click.option("--batch", metavar="FILE", shell_complete=_complete_file,
                      help="Compute every row of a CSV file ('-': standard input) whose header "
                           "names the parameters ('k [N/m],m [kg]'); print CSV with a column "
                           "per result, or JSON lines with --json."),

@@ -64,6 +64,21 @@ _USAGE = ('--c C --k K --m M, --decrement DELTA, --ratio R --cycles N, --amplitu
           '"x0,x1,...", or --scene NAME NAME=QUANTITY ...')
 
 
+def method_names(scene: str | None = None) -> list[str]:
+    """The words ``--method`` takes: the fits of ``--amplitudes``, or with a damping scene
+    ``auto`` and that scene's methods: for completion."""
+    if scene is not None:
+        from ..scenes import get_scene
+
+        try:
+            return ["auto", *get_scene(scene).methods]
+        except InputError:
+            pass
+    from ..physics.decay_fit import FIT_METHODS
+
+    return list(FIT_METHODS)
+
+
 def damping_scene_names() -> list[str]:
     """The scenes with a damper: those whose physics lives in ``dyncalc.physics.damping``."""
     from ..scenes import catalog
@@ -927,7 +942,7 @@ COMMAND = Command(
                   "m/s^2).", "G"),
         Parameter("method", None, "Fit of --amplitudes: log-linear (default; least squares of "
                   "ln x) or nonlinear (least squares of x, scipy); a scene's own methods with "
-                  "--scene.", "METHOD", kind="setting"),
+                  "--scene.", "METHOD", kind="setting", choices=method_names),
         Parameter("plot", None, "Draw the free decay (the peaks and the fitted envelope for "
                   "--amplitudes) into FILE (.png, .svg or .pdf); needs matplotlib (the plot "
                   "extra).", "FILE.png", kind="after"),

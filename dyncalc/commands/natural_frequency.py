@@ -42,6 +42,19 @@ def collect_parameters(options: dict[str, str | None], words: tuple[str, ...] | 
     return texts, labels
 
 
+def method_names(scene: str | None = None) -> list[str]:
+    """The words ``--method`` takes: ``auto`` and the methods of scene ``scene`` (a name or an
+    example id), or of every scene when none (or an unknown one) is given: for completion."""
+    if scene is not None:
+        try:
+            return ["auto", *get_scene(scene).methods]
+        except InputError:
+            pass
+    from ..scenes import catalog
+
+    return list(dict.fromkeys(["auto", *(m for s in catalog().values() for m in s.methods)]))
+
+
 def infer_scene(names: set[str]) -> str:
     """The scene the parameter names fit: mass-spring (the default), torsional or pendulum
     (results given to solve for, ``f=5Hz``, do not choose)."""
@@ -129,7 +142,7 @@ COMMAND = Command(
         Parameter("method", None, "auto (default: the cheapest model meeting --rtol), or one "
                   "the scene offers (dyncalc scenes NAME lists them; pendulums: small-angle, "
                   "series, elliptic, ode; half-cylinder-shell: linear, quadrature, ode).",
-                  "METHOD", kind="setting"),
+                  "METHOD", kind="setting", choices=method_names),
     ),
     (
         ResultName("omega", "ω", ANGULAR_RATE.si, "angular frequency"),

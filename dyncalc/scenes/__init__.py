@@ -13,12 +13,14 @@ Scenes are added with :func:`register`; the catalog modules that do so are liste
 from __future__ import annotations
 
 import importlib
+import re
 from typing import Any
 
 from ..errors import InputError
 from ..records import Frozen
 
-__all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names"]
+__all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names",
+           "is_example_id", "scenes_of_example"]
 
 #: Modules whose import registers scenes.
 CATALOG_MODULES: tuple[str, ...] = (
@@ -110,6 +112,11 @@ class Scene(Frozen):
     def signature(self) -> str:
         return ", ".join(p.signature() for p in self.params)
 
+    @property
+    def examples(self) -> tuple[str, ...]:
+        """The textbook example ids its ``reference`` cites (``("E4.9", "E5.17")``)."""
+        return tuple(_EXAMPLE_ID.findall(self.reference))
+
 
 
 def _set_all(record, *values) -> None:
@@ -117,6 +124,9 @@ def _set_all(record, *values) -> None:
     for name, value in zip(record.__slots__, values):
         object.__setattr__(record, name, value)
 
+
+#: A textbook example id as scenes cite it in their ``reference``: ``E5.12``.
+_EXAMPLE_ID = re.compile(r"\bE\d+\.\d+\b")
 
 _SCENES: dict[str, Scene] = {}
 _imported = 0  # how many of CATALOG_MODULES have been imported, in order
@@ -160,8 +170,32 @@ def scene_names() -> list[str]:
     return list(catalog())
 
 
+def is_example_id(text: str) -> bool:
+    """Whether ``text`` is a textbook example id (``E5.12``, ``e5.12``)."""
+    return _EXAMPLE_ID.fullmatch(text.upper()) is not None
+
+
+def scenes_of_example(example: str) -> list[Scene]:
+    """The scenes that cite example ``example`` (``E5.15``), in catalog order; refuses an id
+    no scene cites."""
+    example = example.upper()
+    found = [s for s in catalog().values() if example in s.examples]
+    if not found:
+        raise InputError(f"no scene reproduces example {example}; 'dyncalc scenes' lists the "
+                         "examples of each scene")
+    return found
+
+
 def get_scene(name: str) -> Scene:
-    """The scene called ``name``; refuses an unknown name with the list of known ones."""
+    """The scene called ``name``, or the one scene that reproduces textbook example ``name``
+    (``E5.12``); refuses an unknown name with the list of known ones, and an example several
+    scenes cite with their names."""
+    if is_example_id(name) and name not in _SCENES:
+        found = scenes_of_example(name)
+        if len(found) > 1:
+            raise InputError(f"example {name.upper()} is reproduced by several scenes: "
+                             f"{', '.join(s.name for s in found)}; name one of them")
+        return found[0]
     _load(until=name)
     scenes = _SCENES if name in _SCENES else catalog()
     if name not in scenes:
