@@ -189,11 +189,18 @@ def expressions(draw):
 # The reference reading
 
 
+def ref_parse(ref_text: str):
+    """pint's reading of a text, always a Quantity (pint 0.25.0 gives a bare number for a text
+    without units, ``(1)``; later releases a dimensionless Quantity)."""
+    value = REF.parse_expression(ref_text)
+    return value if isinstance(value, REF.Quantity) else REF.Quantity(value)
+
+
 def reference(ref_text: str):
     """pint's value of the parenthesised form, or ``None`` when pint refuses it (a sum of
     different dimensions): then dyncalc must refuse it too."""
     try:
-        return REF.parse_expression(ref_text)
+        return ref_parse(ref_text)
     except (pint.DimensionalityError, pint.OffsetUnitCalculusError):
         return None
 
@@ -219,7 +226,7 @@ def scale(ref_text: str) -> float:
     if " - " not in ref_text:
         return 0.0
     try:
-        return abs(float(REF.parse_expression(ref_text.replace(" - ", " + "))
+        return abs(float(ref_parse(ref_text.replace(" - ", " + "))
                          .to_base_units().magnitude))
     except pint.PintError:
         return 0.0
@@ -313,7 +320,7 @@ def test_parameter_reads_to_its_si_value_or_is_refused(case):
         assert agree, (typed, "an angle added to a non-angle was read")
         want = expected.to(dim.si.replace("^", "**") or "dimensionless").magnitude \
             if dim.si else expected.to("dimensionless").magnitude
-        size = scale(ref_text) and float(REF.parse_expression(ref_text.replace(" - ", " + "))
+        size = scale(ref_text) and float(ref_parse(ref_text.replace(" - ", " + "))
                                           .to(dim.si.replace("^", "**") or "dimensionless")
                                           .magnitude)
         assert close(parsed.si, float(want), abs(size)), (typed, ref_text, dim.name,
@@ -344,7 +351,7 @@ def test_angular_rate(case):
         assert verdict == "refuse", typed
         return
     assert verdict != "refuse", typed
-    q = REF.parse_expression(ref_text)
+    q = ref_parse(ref_text)
     want = q.to("radian/second").magnitude if verdict == "rad" else q.to("1/s").magnitude
     assert close(parsed.si, want), (typed, parsed.si, want)
 
@@ -386,8 +393,8 @@ def test_uncertainty(case):
         assert refs is None, typed
         return
     assert refs is not None, f"{typed!r}: text after the uncertainty was read"
-    value = REF.parse_expression(refs[0]).to("meter").magnitude
-    sigma = REF.parse_expression(refs[1]).to("meter").magnitude
+    value = ref_parse(refs[0]).to("meter").magnitude
+    sigma = ref_parse(refs[1]).to("meter").magnitude
     assert close(parsed.si, value) and close(parsed.uncertainty, sigma), (typed, parsed.si,
                                                                          parsed.uncertainty)
 
