@@ -115,11 +115,20 @@ def unit_groups(draw):
 @st.composite
 def units(draw):
     """A unit expression: groups joined by ``*`` and ``/``, left to right."""
-    typed, ref, angle = draw(unit_groups())
+    return _chain(draw, draw(unit_groups()), unit_groups())
+
+
+def _chain(draw, first, parts):
+    """``first`` (typed, reference, angle power) followed by up to two more of ``parts``,
+    joined by ``*`` or ``/`` with or without spaces; the reference parenthesised left to
+    right."""
+    typed, ref, angle = first
     for _ in range(draw(st.integers(0, 2))):
         op = draw(st.sampled_from(["*", "/"]))
-        g_typed, g_ref, g_angle = draw(unit_groups())
+        g_typed, g_ref, g_angle = draw(parts)
         space = draw(st.sampled_from(["", " "]))
+        # (in an expression, a group after an explicit op that starts with a name joins the
+        # unit before it: the reference's parentheses say the same)
         typed = f"{typed}{space}{op}{space}{g_typed}"
         ref = f"({ref} {op} {g_ref})"
         angle = angle + g_angle if op == "*" else angle - g_angle
@@ -166,16 +175,7 @@ def expressions(draw):
     Returns (typed, reference, angle power, whether the terms' angle powers agree)."""
     terms = []
     for _ in range(draw(st.sampled_from([1, 1, 1, 2]))):
-        typed, ref, angle = draw(groups())
-        for _ in range(draw(st.integers(0, 2))):
-            op = draw(st.sampled_from(["*", "/"]))
-            g_typed, g_ref, g_angle = draw(groups())
-            space = draw(st.sampled_from(["", " "]))
-            # after an explicit op a group that starts with a name would join the unit
-            typed = f"{typed}{space}{op}{space}{g_typed}"
-            ref = f"({ref} {op} {g_ref})"
-            angle = angle + g_angle if op == "*" else angle - g_angle
-        terms.append((typed, ref, angle))
+        terms.append(_chain(draw, draw(groups()), groups()))
     typed, ref, angle = terms[0]
     agree = True
     for t_typed, t_ref, t_angle in terms[1:]:
