@@ -127,8 +127,8 @@ def _chain(draw, first, parts):
         op = draw(st.sampled_from(["*", "/"]))
         g_typed, g_ref, g_angle = draw(parts)
         space = draw(st.sampled_from(["", " "]))
-        # (in an expression, a group after an explicit op that starts with a name joins the
-        # unit before it: the reference's parentheses say the same)
+        # (in an expression, after an explicit op a group that starts with a name would join
+        # the unit)
         typed = f"{typed}{space}{op}{space}{g_typed}"
         ref = f"({ref} {op} {g_ref})"
         angle = angle + g_angle if op == "*" else angle - g_angle
