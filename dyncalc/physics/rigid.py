@@ -164,12 +164,16 @@ def rolling_in_track(R, r, g, kappa: float = 0.5) -> Outcome:
     2.959043342028
     """
     kappa = _check_kappa(kappa)
-    gap = float((R - r).to("m").magnitude)
+    if hasattr(R, "units") and hasattr(r, "units"):  # the difference in the unit typed
+        gap = float((R - r).to("m").magnitude)
+    else:  # a plain number is in metres (the face's rule)
+        gap = magnitude(R, "m") - magnitude(r, "m")
     if not gap > 0.0:
-        from ..units import format_quantity
+        from ..units import Q_, format_quantity
 
-        raise PhysicsError(f"the body (r = {format_quantity(r)}) must be smaller than the track "
-                           f"it rolls in (R = {format_quantity(R)})")
+        shown = [q if hasattr(q, "units") else Q_(q, "m") for q in (r, R)]
+        raise PhysicsError(f"the body (r = {format_quantity(shown[0])}) must be smaller than "
+                           f"the track it rolls in (R = {format_quantity(shown[1])})")
     length = Wide(gap)
     return _outcome(_si(g, "m/s**2") / (length + kappa * length))
 

@@ -45,7 +45,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..result.entries import Entry, entry_from_parsed
-from ..units import ANGLE, DIMENSIONLESS, parse_quantity, registry
+from ..units import ANGLE, parse_quantity, registry
 from . import Scene
 from ..result.kinds import result_kind
 from .runner import (DEFAULT_RTOL, Prepared, check_constraints, compute_values, is_result_name,
@@ -283,6 +283,25 @@ def _shown(x: float, param) -> float:
     return math.degrees(x) if param.dim is ANGLE else x
 
 
+def _si_where_typed_in_si(scene: Scene, prepared: Prepared) -> dict:
+    """The physics' keyword arguments with each quantity typed in its SI unit replaced by its
+    plain SI number, which the physics takes as it is (converting a quantity to the unit it
+    is in gives its magnitude unchanged, so the results are the same to the bit; a solve
+    calls the physics hundreds or thousands of times, and pint's conversion was most of each
+    call). Angles and quantities typed in other units stay as they are."""
+    ureg = registry()
+    kwargs = dict(prepared.kwargs)
+    for name, value in prepared.kwargs.items():
+        param = scene.param(name)
+        if (param is None or param.dim is None or param.dim is ANGLE or not param.dim.si
+                or not hasattr(value, "units")):
+            continue
+        si_unit = ureg.Unit(param.dim.si.replace("^", "**"))
+        if value.units == si_unit and float(value.magnitude) == prepared.si.get(name):
+            kwargs[name] = float(value.magnitude)
+    return kwargs
+
+
 class _Problem:
     """The scene as a function of the unknown alone: ``y(x)`` in SI, NaN where refused."""
 
@@ -295,15 +314,17 @@ class _Problem:
         # changes of y below this (relative) are rounding or model error, not a turning point
         self.noise = 8 * max(rtol if rtol else DEFAULT_RTOL, 2.0 ** -52)
         self.samples: list[float] = []
+        self.kwargs = _si_where_typed_in_si(scene, prepared)
 
     def evaluate(self, x: float):
         """``(outcome, values, warnings)`` of the scene at ``x``; InputError when refused."""
         prepared = Prepared()
-        prepared.kwargs = dict(self.prepared.kwargs)
+        prepared.kwargs = dict(self.kwargs)
         prepared.si = dict(self.prepared.si)
         prepared.zeta = self.prepared.zeta
-        quantity = registry().Quantity(x, self.unit) if self.param.dim is not DIMENSIONLESS \
-            else x
+        # x is SI: the physics takes a plain number as SI (an angle keeps its unit: the physics
+        # works in the unit an angle is given in)
+        quantity = registry().Quantity(x, self.unit) if self.param.dim is ANGLE else x
         set_parameter(self.scene, prepared, self.param.name, x, quantity)
         check_constraints(self.scene, prepared.si)
         return compute_values(self.scene, prepared.kwargs, prepared.zeta, self.method,
