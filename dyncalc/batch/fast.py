@@ -70,24 +70,32 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
         present[col.key] = np.fromiter((c != "" for c in column), dtype=bool, count=n)
     keys = [col.key for col in columns]
     units = {col.key: col.unit for col in columns}
-    signature = np.zeros(n, dtype=np.int64)
-    for bit, key in enumerate(keys):
-        signature |= present[key].astype(np.int64) << bit
     blocks = []
-    # the distinct signatures, in order (np.unique would import numpy.ma: 6 ms)
-    for sig in sorted(set(signature.tolist())):
-        given = [key for bit, key in enumerate(keys) if (sig >> bit) & 1]
+    for given, rows in _by_columns_given(keys, [present[key] for key in keys]):
         plan = _plan(spec, given, units) if given else None
         if plan is None:
             continue
-        rows = np.arange(n) if sig == int(signature[0]) and (signature == sig).all() \
-            else np.flatnonzero(signature == sig)
         for words, subset in _by_words(plan, cells, rows):
             block = _scene_block(spec, plan, words, subset, len(subset) == n, cells, plain,
                                  units, want_json, cache)
             if block is not None:
                 blocks.append(block)
     return blocks
+
+
+def _by_columns_given(columns: list, present: list[np.ndarray]):
+    """The rows of a chunk grouped by which of ``columns`` they give (``present``: one
+    boolean array per column): ``(the columns given, their rows)`` pairs, in a fixed order;
+    one group of every row is ``np.arange(n)``."""
+    n = len(present[0]) if present else 0
+    signature = np.zeros(n, dtype=np.int64)
+    for bit, given in enumerate(present):
+        signature |= given.astype(np.int64) << bit
+    # the distinct signatures, in order (np.unique would import numpy.ma: 6 ms)
+    for sig in sorted(set(signature.tolist())):
+        rows = np.arange(n) if sig == int(signature[0]) and (signature == sig).all() \
+            else np.flatnonzero(signature == sig)
+        yield [column for bit, column in enumerate(columns) if (sig >> bit) & 1], rows
 
 
 class _Plan:

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..errors import InputError
 from .columns import _LITERAL_CELL, _plain_floats, _read_column, _unit_info
-from .fast import FastBlock, _input_texts
+from .fast import FastBlock, _by_columns_given, _input_texts
 from .header import Column, with_header_unit
 
 #: A vector cell the vectorised path reads: three plain numbers, comma-separated, no unit.
@@ -43,16 +43,12 @@ def _command_fast(spec, columns: list[Column], table, want_json: bool,
         return []
     n = len(table[0])
     cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
-    signature = np.zeros(n, dtype=np.int64)
-    for bit, col in enumerate(columns):
-        present = np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
-        signature |= present.astype(np.int64) << bit
+    present = [np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
+               for col in columns]
     blocks = []
-    for sig in sorted(set(signature.tolist())):
-        given = [col for bit, col in enumerate(columns) if (sig >> bit) & 1]
+    for given, rows in _by_columns_given(columns, present):
         if not given:
             continue
-        rows = np.flatnonzero(signature == sig)
         for subset in _by_words(spec, given, rows, cells):
             blocks += _blocks(spec, given, subset, cells, want_json, cache)
     return blocks
@@ -132,30 +128,31 @@ def _blocks(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
     """The blocks of these rows: one, or one per combination of the units their number
     cells were typed in (an adapter may compute in the unit typed; it is told one per
     column)."""
-    good = np.ones(len(rows), dtype=bool)
-    typed = []
-    for col in given:
-        read = _read(spec, col, [cells[col.key][i] for i in rows.tolist()], cache)
-        if read is None:
-            return []
-        good &= read[0]
-        if read[4] == "number":
-            typed.append(read[2].unit_json)
+    read = _read_rows(spec, given, rows, cells, cache)
+    if read is None:
+        return []
+    reads, _arrays, good = read
+    typed = [r[2].unit_json for r, _column in reads.values() if r[4] == "number"]
     groups: dict[tuple, list[int]] = {}
     for i in np.flatnonzero(good).tolist():
         groups.setdefault(tuple(units[i] for units in typed), []).append(int(rows[i]))
     if len(groups) > MAX_WORD_GROUPS:
         return []
-    if len(groups) == 1:
-        block = _block(spec, given, rows, cells, want_json, cache)
+    if len(groups) == 1:  # the common case: the columns as read serve the block
+        block = _block(spec, given, rows, cells, want_json, read)
         return [] if block is None else [block]
-    found = (_block(spec, given, np.asarray(members, dtype=np.intp), cells, want_json, cache)
-             for members in groups.values())
+    found = []
+    for members in groups.values():
+        subset = np.asarray(members, dtype=np.intp)
+        read = _read_rows(spec, given, subset, cells, cache)
+        if read is not None:
+            found.append(_block(spec, given, subset, cells, want_json, read))
     return [block for block in found if block is not None]
 
 
-def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
-           cache: dict) -> FastBlock | None:
+def _read_rows(spec, given: list[Column], rows: np.ndarray, cells, cache: dict):
+    """``(reads by key: (read, cells), SI arrays by key, good rows)`` of these rows' columns,
+    or ``None`` where a column cannot be read here."""
     good = np.ones(len(rows), dtype=bool)
     arrays: dict[str, Any] = {}
     reads = {}
@@ -168,6 +165,14 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
         good &= read[0]
         arrays[col.key] = read[1]
         reads[col.key] = (read, column)
+    return reads, arrays, good
+
+
+def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
+           read) -> FastBlock | None:
+    """One block: the adapter on the columns as read (:func:`_read_rows`), its exact rows
+    kept where the probe agrees."""
+    reads, arrays, good = read
     if not good.any():
         return None
     settings = {**spec.settings, "units": _typed_units(reads, good)}
@@ -178,7 +183,7 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
         out = None  # an adapter that cannot take these columns: the generic path answers
     if out is None:
         return None
-    good &= np.asarray(out.exact, dtype=bool)
+    good = good & np.asarray(out.exact, dtype=bool)
     if not good.any():
         return None
     probe = _probe(spec, given, cells, int(rows[np.argmax(good)]), out,
