@@ -301,7 +301,7 @@ def test_readme_links_are_relative_and_resolve():
     pages |= {p.relative_to(ROOT).as_posix() for p in (DOCS / "guide").glob("*.md")}
     assert pages <= set(local), sorted(pages - set(local))
     assert "docs/man/dyncalc.1" in local
-    assert len(readme.splitlines()) <= 170  # short: a tour line a command, the rest in docs/
+    assert len(readme.splitlines()) <= 190  # short: a tour line a command, the rest in docs/
 
 
 def test_the_docs_picture_is_the_benchmarks():
