@@ -55,6 +55,8 @@ def machine(entry: Entry, units: dict[str, str]):
 def _json_value(value):
     if isinstance(value, str):
         return value
+    if getattr(value, "ndim", 1) == 2:
+        return [_json_value(row) for row in value]
     if hasattr(value, "__len__"):
         return [_json_value(float(v)) for v in value]
     value = float(value)
@@ -170,7 +172,10 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
 
 def full_number(value) -> str:
     """A number as ``--value`` and a batch CSV cell print it: ``repr`` of the float (full
-    precision), a vector's components comma-separated."""
+    precision), a vector's components comma-separated, a matrix's rows separated by ``;``
+    (``1.0,0.0;0.0,2.0``: the matrix grammar reads it back)."""
+    if getattr(value, "ndim", 1) == 2:
+        return ";".join(full_number(row) for row in value)
     if hasattr(value, "__len__"):
         return ",".join(repr(float(v)) for v in value)
     return repr(float(value))

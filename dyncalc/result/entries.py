@@ -17,9 +17,13 @@ __all__ = ["Entry", "Explanation", "Result", "entry_from_parsed", "format_number
 
 
 def format_number(value, digits: int) -> str:
-    """``value`` to ``digits`` significant figures (vectors as ``(x, y, z)``)."""
+    """``value`` to ``digits`` significant figures (vectors as ``(x, y, z)``, matrices as
+    ``[[a, b], [c, d]]``)."""
     if isinstance(value, str):
         return value
+    if getattr(value, "ndim", 1) == 2:
+        return "[" + ", ".join("[" + ", ".join(format_number(float(v), digits) for v in row)
+                               + "]" for row in value) + "]"
     if hasattr(value, "__len__"):
         return "(" + ", ".join(format_number(float(v), digits) for v in value) + ")"
     value = float(value)
