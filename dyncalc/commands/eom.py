@@ -11,7 +11,7 @@ the natural frequencies and the accelerations at the state.
 from __future__ import annotations
 
 from ..errors import InputError
-from ..result import Entry, Explanation, Result
+from ..result import Result
 from ..units import ANGULAR_RATE, CYCLE_RATE
 from ..units.expression import FUNCTIONS as _FUNCTION_NAMES
 from .record import Command, Parameter, ResultName
@@ -31,7 +31,8 @@ class EomInputs:
     ``parsed`` (a scene parameter -> (Parsed, Dim), to show it as typed)."""
 
     __slots__ = ("coords", "trees", "texts", "values", "dims", "param_texts", "state",
-                 "angles", "signed", "about", "scene", "note", "reference", "parsed")
+                 "angles", "signed", "about", "scene", "note", "reference", "parsed",
+                 "domain")
 
     def __init__(self, **kw):
         for name in self.__slots__:
@@ -140,7 +141,8 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
                      angles=None if record is None else set(record.angles),
                      signed=signed, about=options.get("about"), scene=scene, parsed=parsed,
                      note=record.note if record else "",
-                     reference=record.reference if record else "")
+                     reference=record.reference if record else "",
+                     domain=record.domain if record else {})
 
 
 def _sort_words(given: dict[str, str], coords: list[str]):

@@ -186,7 +186,10 @@ def _equilibria(system, values, angles, inputs, numeric):
         scale = max(lengths) if lengths else 1.0
         found = lagrange.numeric_equilibria(system, values, angles,
                                              [scale] * len(s.q))
+        bounds = _bounds(inputs, values)
         for p in found:
+            if any(not lo - 1e-9 <= p[i] <= hi + 1e-9 for i, (lo, hi) in bounds.items()):
+                continue
             point = [None if i in free else v for i, v in enumerate(p)]
             M, K = lagrange.linearise(system, {s.q[i]: v for i, v in enumerate(p)})
             M, K = M.subs(values), K.subs(values)
@@ -206,6 +209,24 @@ def _equilibria(system, values, angles, inputs, numeric):
         points.append(point)
         stabilities.append(lagrange.stability_of(M, K))
     return points, stabilities, False
+
+
+def _bounds(inputs, values) -> dict:
+    """{coordinate index: (lowest, highest)} of the scene's domain at these values."""
+    from ..physics.symbolic import Symbols, to_sympy
+    from ..units.expression import parse_expression
+
+    out = {}
+    s = Symbols(inputs.coords)
+    by_name = {str(k): v for k, v in values.items()}
+    for c, pair in (inputs.domain or {}).items():
+        ends = []
+        for text in pair:
+            tree = parse_expression(text, names=set(by_name), free_names=False)
+            ends.append(float(to_sympy(tree, s).subs({s.param(n): v
+                                                       for n, v in by_name.items()})))
+        out[inputs.coords.index(c)] = tuple(ends)
+    return out
 
 
 def _parse_about(inputs, system, values):

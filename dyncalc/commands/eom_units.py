@@ -33,7 +33,9 @@ def dimension_of_dim(dim) -> Dimension:
 def unit_text(dim: Dimension) -> str:
     """SI base units of ``dim`` as pint reads them: ``kg*m^2/s^2``, ``1/s^2``, ``""``."""
     up, down = [], []
-    for name, power in dim.powers:
+    order = list(_BASE)
+    for name, power in sorted(dim.powers, key=lambda kv: (order.index(kv[0])
+                                                          if kv[0] in order else 99)):
         unit = _BASE.get(name, name.strip("[]"))
         p = abs(power)
         shown = unit if p == 1 else f"{unit}^{p}" if p.denominator == 1 else f"{unit}^({p})"

@@ -187,6 +187,7 @@ def numeric_equilibria(system: System, values: dict, angles: list[bool],
     def jacobian(x):
         return np.array(J(*x), dtype=float)
 
+    periodic = [_periodic(equations, q) for q in unknowns]
     for x0 in starts:
         try:
             if square:
@@ -198,23 +199,30 @@ def numeric_equilibria(system: System, values: dict, angles: list[bool],
         x = list(sol.x)
         if not all(math.isfinite(v) for v in x):
             continue
-        try:
-            r = residual(x)
-            size = float(np.max(np.abs(jacobian(x)))) if x else 1.0
-        except (ValueError, ZeroDivisionError, OverflowError):
-            continue
-        if not np.all(np.abs(r) <= 1e-9 * max(size, 1e-300) * (1 + max(abs(v) for v in x))):
-            continue
         for k, i in enumerate(index):
-            if angles[i]:
+            if angles[i] and periodic[k]:
                 x[k] = math.remainder(x[k], 2 * math.pi)
                 if x[k] <= -math.pi + 1e-12:
                     x[k] = math.pi
-            if abs(x[k]) < 1e-12 * max(1.0, scales[i]):
-                x[k] = 0.0
-        if any(all(abs(a - b) <= 1e-7 * max(1.0, abs(a)) for a, b in zip(x, y)) for y in found):
-            continue
-        found.append(x)
+            if abs(x[k]) > 1e6 * (math.pi if angles[i] else scales[i]):
+                break
+        else:
+            try:
+                r = residual(x)
+                size = float(np.max(np.abs(jacobian(x))))
+            except (ValueError, ZeroDivisionError, OverflowError):
+                continue
+            reach = max([1.0] + [abs(x[k]) / scales[i] for k, i in enumerate(index)
+                                 if not angles[i]])
+            if not np.all(np.abs(r) <= 1e-9 * max(size, 1e-300) * reach):
+                continue
+            for k, i in enumerate(index):
+                if abs(x[k]) < 1e-12 * (1.0 if angles[i] else scales[i]):
+                    x[k] = 0.0
+            if any(all(abs(a - b) <= 1e-7 * max(1.0, abs(a)) for a, b in zip(x, y))
+                   for y in found):
+                continue
+            found.append(x)
     out = []
     for x in found:
         full = [0.0] * len(s.q)
@@ -223,6 +231,12 @@ def numeric_equilibria(system: System, values: dict, angles: list[bool],
         out.append(full)
     out.sort(key=lambda p: (sum(abs(v) for v in p), [-v for v in p]))
     return out
+
+
+def _periodic(equations, q) -> bool:
+    """Whether the equations repeat when ``q`` turns once (a spring wound up does not)."""
+    shifted = [e.subs(q, q + 2 * sympy.pi) for e in equations]
+    return all(sympy.simplify(sympy.expand_trig(a - b)) == 0 for a, b in zip(shifted, equations))
 
 
 def frequencies(M, K) -> tuple[list[float], bool]:

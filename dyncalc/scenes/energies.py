@@ -37,17 +37,19 @@ class EParam(Frozen):
 class Energies(Frozen):
     """One scene's energies: ``coords`` (names), ``angles`` (those that are angles), ``T``,
     ``V``, ``D`` (text or ""), ``Q`` ({coordinate: text}), ``params``, ``about`` (the
-    equilibrium the scene's frequency is about, in words), ``note``, ``reference``."""
+    equilibrium the scene's frequency is about, in words), ``note``, ``reference``,
+    ``domain`` ({coordinate: (lowest, highest)} as texts of the grammar: where the model
+    holds; equilibria outside it are left out)."""
 
     __slots__ = ("name", "coords", "angles", "T", "V", "D", "Q", "params", "note",
-                 "reference")
+                 "reference", "domain")
 
     def __init__(self, name, coords, angles, T, V, params, D="", Q=None, note="",
-                 reference=""):
+                 reference="", domain=None):
         for key, value in (("name", name), ("coords", tuple(coords)),
                            ("angles", tuple(angles)), ("T", T), ("V", V), ("D", D),
                            ("Q", dict(Q or {})), ("params", tuple(params)), ("note", note),
-                           ("reference", reference)):
+                           ("reference", reference), ("domain", dict(domain or {}))):
             object.__setattr__(self, key, value)
 
     def param(self, name: str) -> EParam | None:
@@ -123,7 +125,8 @@ _TABLE = (
              note="per unit mass", reference="E3.44"),
     Energies("half-cylinder-shell", ["phi"], ["phi"], "r^2*phi'^2*(1 - (2/pi)*cos(phi))",
              "(2/pi)*g*r*(1 - cos(phi))", [_p("r", LENGTH, "radius"), _g()],
-             note="per unit mass; valid for |phi| < pi/2", reference="E4.18"),
+             note="per unit mass; valid for |phi| < pi/2", reference="E4.18",
+             domain={"phi": ("-pi/2", "pi/2")}),
     Energies("coupled-blocks", ["x1", "x2"], [], "m1*x1'^2/2 + m2*x2'^2/2",
              "k1*x1^2/2 + k3*(x2 - x1)^2/2 + k2*x2^2/2",
              [_p("m1", MASS, "block 1"), _p("m2", MASS, "block 2"),
@@ -213,12 +216,14 @@ _TABLE = (
              [_p("m", MASS, "each bob"), _p("l", LENGTH, "rod length"),
               _p("k", STIFFNESS, "spring"), _p("b", LENGTH, "free length of the spring",
                                                 "0 m"), _g()],
-             note="phi1 the bisector, phi2 half the opening", reference="E4.16"),
+             note="phi1 the bisector, phi2 half the opening", reference="E4.16",
+             domain={"phi2": ("0", "pi/2")}),
     Energies("disk-on-swinging-bar", ["phi", "x"], ["phi"],
              "(m1*l^2/3 + m2*x^2 + J2)*phi'^2/2 + m2*x'^2/2", "-(m1*l/2 + m2*x)*g*cos(phi)",
              [_p("m1", MASS, "bar"), _p("l", LENGTH, "bar length"), _p("m2", MASS, "disk"),
               _p("J2", INERTIA, "disk about its centre"), _g()],
-             note="no equilibrium with the disk free", reference="E4.17"),
+             note="no equilibrium with the disk free", reference="E4.17",
+             domain={"x": ("0", "l")}),
     Energies("pendulum-on-sliding-block", ["x", "phi"], ["phi"],
              "(m1 + m2)*x'^2/2 + m2*l*x'*phi'*cos(phi) + m2*l^2*phi'^2/2",
              "-m2*g*l*cos(phi)",

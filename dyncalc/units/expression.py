@@ -644,7 +644,7 @@ def parse_expression(text: str, *, label: str = "expression", coordinates=(),
     Examples
     --------
     >>> parse_expression("m*x'^2/2", coordinates=("x",))
-    mul(mul(m, x'), ...)
+    div(mul(m, pow(x', num(2))), num(2))
     """
     if not isinstance(text, str):
         raise InputError(f"{label}: expected text, got {type(text).__name__}")
