@@ -196,7 +196,8 @@ def _parameters(params: dict[str, str], record, strict: bool):
             import difflib
 
             names = [p.name for p in record.params]
-            close = difflib.get_close_matches(name, names, n=1)
+            close = [n for n in names if n.lower() == name.lower()] or \
+                difflib.get_close_matches(name, names, n=1)
             hint = f" (did you mean {close[0]}?)" if close else ""
             raise InputError(f"{name}= is not a parameter of --scene {record.name}{hint}; its "
                              f"parameters are {', '.join(names)}")
@@ -211,6 +212,9 @@ def _parameters(params: dict[str, str], record, strict: bool):
                                             else "positive")
         parsed = parse_quantity(text, p.dim, label=f"{p.name}=", strict=strict,
                                 constraint=constraint)
+        if parsed.uncertainty is not None:
+            raise InputError(f"{p.name}=: an uncertainty is not read here (eom does not "
+                             "propagate one); give the value alone")
         values[p.name], texts[p.name] = parsed.si, text
         parsed_inputs[p.name] = (parsed, p.dim)
     return values, dims, texts, signed, parsed_inputs

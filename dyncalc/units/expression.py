@@ -238,10 +238,15 @@ class Dimension:
     def __str__(self) -> str:
         if not self.powers:
             return "a pure number"
-        parts = []
-        for k, v in self.powers:
-            parts.append(k if v == 1 else f"{k}^{v}" if v.denominator == 1 else f"{k}^({v})")
-        return "*".join(parts)
+        order = ["[mass]", "[length]", "[time]"]
+        ranked = sorted(self.powers, key=lambda kv: (order.index(kv[0]) if kv[0] in order
+                                                     else 9, kv[0]))
+
+        def part(k, v):
+            return k if v == 1 else f"{k}^{v}" if v.denominator == 1 else f"{k}^({v})"
+        up = [part(k, v) for k, v in ranked if v > 0]
+        down = [part(k, -v) for k, v in ranked if v < 0]
+        return ("*".join(up) or "1") + "".join("/" + d for d in down)
 
 
 PURE = Dimension()
@@ -260,7 +265,7 @@ def dimension_of(node: Node, dims: dict[str, Dimension], label: str = "expressio
 
     >>> L, T = Dimension({"[length]": 1}), Dimension({"[time]": 1})
     >>> str(dimension_of(parse_expression("x'^2/2", coordinates=("x",)), {"x": L}))
-    '[length]^2*[time]^-2'
+    '[length]^2/[time]^2'
     """
     time = Dimension({"[time]": 1})
     kind = node.kind
@@ -601,6 +606,11 @@ class Parser:
                 self._is_op(self.toks[start + 1] if start + 1 < len(self.toks) else None,
                             "("):
             word = self.toks[start]
+            if (word.text in self.names or word.text in self.coordinates) and \
+                    is_unit_word(word.text):
+                raise self._fail(word.pos, f"{word.text!r} after the number {tok.text} is a "
+                                           "name of the expression here, not a unit: write "
+                                           f"{tok.text}*{word.text} for the product")
             if word.text not in self.names and word.text not in self.coordinates and \
                     word.text != "t" and word.text != "pi":
                 raise self._fail(word.pos, f"unknown unit {word.text!r} after the number "

@@ -1173,8 +1173,8 @@ def quantity_in_base(text: str, *, label: str = "value") -> tuple[float, dict[st
     (214285.7142857143, {'[mass]': 1.0, '[time]': -2.0})
     """
     if _split_uncertainty(text, label) is not None:
-        raise InputError(f"{label}: an uncertainty is not propagated here; give the value "
-                         "alone")
+        raise InputError(f"{label}: an uncertainty is not read here (eom does not propagate "
+                         "one); give the value alone")
     reading = _evaluate(text, label)
     if reading.angle_mismatch:
         raise _refuse(label, text, reading.angle_mismatch)
