@@ -32,7 +32,7 @@ class EomInputs:
 
     __slots__ = ("coords", "trees", "texts", "values", "dims", "param_texts", "state",
                  "angles", "signed", "about", "scene", "note", "reference", "parsed",
-                 "domain")
+                 "domain", "warnings_out")
 
     def __init__(self, **kw):
         for name in self.__slots__:

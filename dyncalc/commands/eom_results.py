@@ -86,6 +86,7 @@ def build(inputs) -> Result:
         forces = [exprs.get(f"Q:{c}", sympy.Integer(0)) for c in inputs.coords]
     system = lagrange.derive(s, exprs["T"], exprs["V"], exprs.get("D"), forces)
     warnings: list[str] = []
+    inputs.warnings_out = warnings
     values = {s.param(name): v for name, v in inputs.values.items()}
     results: dict[str, Entry] = {}
     equations = []
@@ -195,13 +196,21 @@ def _equilibria(system, values, angles, inputs, numeric):
             M, K = M.subs(values), K.subs(values)
             if M.free_symbols or K.free_symbols:
                 M, K = M.subs(s.t, 0), K.subs(s.t, 0)
-            stable = lagrange.frequencies(M, K)[1]
+            if M.free_symbols or K.free_symbols:  # parameters without a value remain
+                stable = lagrange.stability_of(M, K)
+            else:
+                stable = lagrange.frequencies(M, K)[1]
             points.append(point)
             stabilities.append(stable)
         return points, stabilities, True
     found = lagrange.symbolic_equilibria(system)
     if found is None:
         return [], [], False
+    if not lagrange.solvable([e for e in system.static if e != 0],
+                              [q for i, q in enumerate(s.q) if i not in free]):
+        inputs.warnings_out.append("the static equations have no closed-form solution: only "
+                                   "the rest position is listed; give every parameter a "
+                                   "value for the numeric search")
     for f in found:
         point = [None if i in free else f.get(q, sympy.Integer(0)) for i, q in enumerate(s.q)]
         subs = {q: (0 if v is None else v) for q, v in zip(s.q, point)}

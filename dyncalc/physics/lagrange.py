@@ -25,7 +25,7 @@ from ..lazy import numpy as np
 from .symbolic import Symbols
 
 __all__ = ["System", "derive", "linearise", "numeric_equilibria", "symbolic_equilibria",
-           "frequencies", "stability_of"]
+           "frequencies", "stability_of", "solvable", "free_coordinates"]
 
 #: Size (sympy's count_ops) above which an acceleration is only cancelled, not simplified.
 SIMPLIFY_LIMIT = 400
@@ -58,7 +58,7 @@ def _tidy(expr):
     return min(forms, key=lambda f: (sympy.count_ops(f), len(str(f))))
 
 
-def _solvable(equations, unknowns) -> bool:
+def solvable(equations, unknowns) -> bool:
     """Whether sympy's ``solve`` is worth asking (it can run for minutes otherwise): one
     unknown that appears only algebraically or only inside sin/cos/tan of itself, or
     polynomial equations in two unknowns."""
@@ -130,15 +130,19 @@ def free_coordinates(system: System) -> list[int]:
 
 
 def symbolic_equilibria(system: System) -> list[dict] | None:
-    """The equilibria sympy's ``solve`` finds (coordinate symbol -> expression), or None when
-    it cannot solve the static equations."""
+    """The equilibria sympy's ``solve`` finds (coordinate symbol -> expression); where it
+    cannot be asked (the static equations mix a coordinate with its sine), the rest position
+    ``q = 0`` when it is one, else None."""
     s = system.symbols
     free = set(free_coordinates(system))
     unknowns = [q for i, q in enumerate(s.q) if i not in free]
     equations = [e for e in system.static if e != 0]
     if not unknowns:
         return [] if equations else [{}]
-    if not _solvable(equations, unknowns):
+    if not solvable(equations, unknowns):
+        zero = {q: 0 for q in unknowns}
+        if all(sympy.simplify(e.subs(zero)) == 0 for e in equations):
+            return [zero]
         return None
     try:
         found = sympy.solve(equations, unknowns, dict=True)
