@@ -145,7 +145,9 @@ def symbolic_equilibria(system: System) -> list[dict] | None:
             return [zero]
         return None
     try:
-        found = sympy.solve(equations, unknowns, dict=True)
+        # check=False: sympy's own check simplifies every root at length (seconds); the
+        # roots of these forms (polynomials, or sines and cosines of one unknown) are exact
+        found = sympy.solve(equations, unknowns, dict=True, check=False, simplify=False)
     except (NotImplementedError, ValueError, TypeError):
         return None
     return [f for f in found if all(v.is_real is not False for v in f.values())]
@@ -262,10 +264,17 @@ def stability_of(M, K):
     """True, False or None (undecided) for symbolic ``M``, ``K`` with positive parameters:
     stable when ``M^-1 K`` is positive definite (Sylvester's criterion on ``K`` and ``M``)."""
     n = M.shape[0]
+
+    def sign(expr):  # the assumptions first; simplify only what stays small
+        known = expr.is_nonnegative if n == 1 else expr.is_positive
+        if known is None and sympy.count_ops(expr) <= 40:
+            expr = sympy.simplify(expr)
+            known = expr.is_nonnegative if n == 1 else expr.is_positive
+        return known, expr
     try:
         if n == 1:
-            return sympy.simplify(K[0, 0] / M[0, 0]).is_nonnegative
-        minors = [sympy.simplify(K[:k, :k].det()) for k in range(1, n + 1)]
+            return sign(K[0, 0] / M[0, 0])[0]
+        minors = [sign(K[:k, :k].det())[1] for k in range(1, n + 1)]
         if all(m.is_positive for m in minors):
             return True
         if any(m.is_negative for m in minors):  # interlacing: K has a negative eigenvalue
