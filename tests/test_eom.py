@@ -230,3 +230,22 @@ def test_sympy_loads_for_eom_only():
     for args in others:
         assert _loaded(run.format(args=args)) is False, args
     assert _loaded(run.format(args=["eom", "--scene", "pendulum", "l=1m"])) is True
+
+
+def test_a_runaway_derivation_is_refused():
+    """Powers of sums in the coordinates are bounded before sympy sees them; anything else
+    that grows too long is stopped by the budget (here shrunk so the test stays short)."""
+    line = error_line(invoke("eom", "--coords", "x", "--T", "m*(x'+x)^64/2"))
+    assert line == ("Error: --T: eom takes powers up to 8 of an expression in the coordinates "
+                    "at column 9: 'm*(x'+x)^64/2'")
+    from dyncalc.commands import eom_results
+
+    original = eom_results.BUDGET
+    eom_results.BUDGET = 0.05
+    try:
+        line = error_line(invoke("eom", "--coords", "x", "--T",
+                                 "m*x'^2*(1+x)^8*(2+x)^8*(3+x)^8", "--V", "x^2"))
+    finally:
+        eom_results.BUDGET = original
+    assert line == ("Error: the derivation did not finish within 0.05 s; simplify the "
+                    "energies (expand fewer powers, fewer nested functions)")

@@ -5,6 +5,7 @@ sympy comes in here (through :mod:`dyncalc.physics.lagrange`), and only for ``eo
 """
 from __future__ import annotations
 
+import contextlib
 import math
 
 from ..errors import InputError, PhysicsError
@@ -72,13 +73,78 @@ def _state(inputs, cdims):
     return out
 
 
+#: Wall-clock budget of the sympy work of one derivation (seconds); beyond it, refused.
+BUDGET = 5.0
+
+
+class _OverBudget(Exception):
+    pass
+
+
+@contextlib.contextmanager
+def _budget(seconds: float):
+    """Stop the enclosed sympy work after ``seconds`` (SIGALRM; only where Python can use it:
+    the main thread on a POSIX system, else unbounded)."""
+    import signal
+    import threading
+
+    usable = hasattr(signal, "setitimer") and threading.current_thread() is \
+        threading.main_thread()
+    if not usable:
+        yield
+        return
+
+    def expire(signum, frame):
+        raise _OverBudget()
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    except _OverBudget:
+        raise PhysicsError(f"the derivation did not finish within {seconds:g} s; simplify "
+                           "the energies (expand fewer powers, fewer nested functions)"
+                           ) from None
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
 def build(inputs) -> Result:
+    cdims, per_mass = _coordinate_dims(inputs)  # a refusal here costs no sympy import
+    state = _state(inputs, cdims) if inputs.state else {}
+    _check_powers(inputs)
+    with _budget(BUDGET):
+        return _build(inputs, cdims, per_mass, state)
+
+
+#: Largest power of an expression in the coordinates eom derives (expansion grows as its cube).
+MAX_POWER = 8
+
+
+def _check_powers(inputs) -> None:
+    from ..units.expression import ExpressionError, names_in
+
+    coords = set(inputs.coords)
+    for key, tree in inputs.trees.items():
+        stack = [tree]
+        while stack:
+            node = stack.pop()
+            stack.extend(node.args)
+            if node.kind == "pow" and abs(node.args[1].const) > MAX_POWER and \
+                    names_in(node.args[0]) & coords:
+                label = f"--{key}" if ":" not in key else f"--Q {key.split(':')[1]}"
+                raise ExpressionError(label, inputs.texts[key], node.pos + 1,
+                                      f"eom takes powers up to {MAX_POWER} of an expression "
+                                      "in the coordinates")
+
+
+def _build(inputs, cdims, per_mass, state) -> Result:
+
     import sympy
 
     from ..physics import lagrange
     from ..physics.symbolic import Symbols, latex_of, text_of, to_sympy
 
-    cdims, per_mass = _coordinate_dims(inputs)
     s = Symbols(inputs.coords, signed=inputs.signed)
     exprs = {key: to_sympy(tree, s) for key, tree in inputs.trees.items()}
     forces = None
@@ -160,7 +226,7 @@ def build(inputs) -> Result:
                                                 description="linearised stiffness matrix")
         latex_lines += [r"M = " + latex_of(M, s), r"K = " + latex_of(K, s)]
     if inputs.state:
-        _accelerations(results, inputs, system, s, values, cdims)
+        _accelerations(results, inputs, system, s, values, cdims, state)
     return _result(inputs, results, warnings, extra, equations, latex_lines, exprs, s,
                    per_mass)
 
@@ -341,8 +407,7 @@ def _matrix(results, extra, name, array, coords, cdims, per_mass, known, stiffne
         extra.setdefault("matrix_units", {})[name] = units
 
 
-def _accelerations(results, inputs, system, s, values, cdims):
-    state = _state(inputs, cdims)
+def _accelerations(results, inputs, system, s, values, cdims, state):
     subs = dict(values)
     for i, c in enumerate(inputs.coords):
         if c in state:

@@ -83,7 +83,7 @@ def derive(s: Symbols, T, V, D=None, Q=None) -> System:
     for i in range(n):
         e = (_ddt(sympy.diff(T, s.qd[i]), s) - sympy.diff(T, s.q[i]) + sympy.diff(V, s.q[i])
              + sympy.diff(D, s.qd[i]) - Q[i])
-        equations.append(sympy.expand(e) if sympy.count_ops(e) < SIMPLIFY_LIMIT else e)
+        equations.append(e)
     mass = sympy.Matrix(n, n, lambda i, j: sympy.diff(equations[i], s.qdd[j]))
     if any(sympy.diff(mass[i, j], x) != 0 for i in range(n) for j in range(n)
            for x in s.qdd):
