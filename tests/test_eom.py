@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from helpers import error_line, invoke, json_of
 
@@ -208,7 +209,7 @@ def test_python_api():
                     k2="100 N/m", k3="50 N/m")
     assert r["omega_1"].to("rad/s").magnitude == pytest.approx(10.0, rel=1e-14)
     assert r["omega_2"].to("rad/s").magnitude == pytest.approx(math.sqrt(200), rel=1e-14)
-    assert r.to_dict()["results"]["eom_1"]["value"] == "x1'' = (-k1*x1 - k3*x1 + k3*x2)/m1"
+    assert r.to_dict()["results"]["eom_1"]["value"] == "x1'' = (-k1*x1 - k3*(x1 - x2))/m1"
 
 
 def _loaded(code: str) -> list[str]:
@@ -249,3 +250,27 @@ def test_a_runaway_derivation_is_refused():
         eom_results.BUDGET = original
     assert line == ("Error: the derivation did not finish within 0.05 s; simplify the "
                     "energies (expand fewer powers, fewer nested functions)")
+
+
+_HOSTILE = ["__import__('os')", "x'", "x''", "m", "k", "*", "/", "^", "(", ")", "+", "-",
+            "sin(", "exp(", "2", "9.81 m/s^2", "1e308", ".", "[", "'", ";", ":", "lambda",
+            "t", "pi", " ", ",", "atan2(", "\x00", "é", "**", "y'"]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.sampled_from(_HOSTILE), max_size=30), st.booleans())
+def test_hostile_energies_are_read_or_refused_before_sympy(pieces, valued):
+    """What the user types reaches sympy only as a tree of the grammar that passed the
+    dimension check; anything else is an InputError naming the option."""
+    from dyncalc.commands.eom import read
+    from dyncalc.commands.eom_results import _check_powers, _coordinate_dims
+    from dyncalc.errors import InputError
+
+    text = "".join(pieces)
+    words = ["m=2kg", "k=3N/m"] if valued else []
+    try:
+        inputs = read({"coords": "x", "T": "m*x'^2/2", "V": text}, words)
+        _coordinate_dims(inputs)
+        _check_powers(inputs)
+    except InputError as exc:
+        assert str(exc).startswith(("--V", "--T", "m=", "k=")) and "\n" not in str(exc), str(exc)

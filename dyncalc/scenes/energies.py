@@ -1,8 +1,8 @@
 """The energies ``eom --scene NAME`` derives each scene's equations of motion from.
 
-Data only, keyed by scene name (SCENES.md, "Energies for eom" and "Lagrange scenes"): the
-coordinates (and which are angles), ``T``, ``V``, the dissipation ``D`` and generalized forces
-``Q`` as texts of the closed grammar (:mod:`dyncalc.units.expression`), and the parameters
+Data only, keyed by scene name (../shared/SCENES.md, "Energies for eom" and "Lagrange
+scenes"): the coordinates (and which are angles), ``T``, ``V``, the dissipation ``D`` and
+generalized forces ``Q`` as texts of the closed grammar (:mod:`dyncalc.units.expression`), and the parameters
 with their dimensions and defaults. Where the mass cancels and the scene has no ``m``, the
 energies are per unit mass. The scene records of the catalog are not touched: this table
 stands beside them.
