@@ -4,7 +4,7 @@
 :mod:`dyncalc.scenes.energies`), parses them with the closed grammar
 (:mod:`dyncalc.units.expression`) and sorts the ``NAME=QUANTITY`` words into parameters and
 the state (``x=``, ``x_dot=``, ``t=``). :func:`compute` checks the dimensions
-(:mod:`.eom_units`), derives the equations with sympy (:mod:`dyncalc.physics.lagrange`),
+(:mod:`.eom_units`), derives the equations with sympy (:mod:`dyncalc.physics.lagrange_equations`),
 finds the equilibria, linearises about the chosen one and, when every value is known, gives
 the natural frequencies and the accelerations at the state.
 """

@@ -1,7 +1,7 @@
 """``eom``'s computation once the input is read: dimensions, derivation, equilibria,
 linearisation, frequencies, the state's accelerations, and the Result with its explanation.
 
-sympy comes in here (through :mod:`dyncalc.physics.lagrange`), and only for ``eom``.
+sympy comes in here (through :mod:`dyncalc.physics.lagrange_equations`), and only for ``eom``.
 """
 from __future__ import annotations
 
@@ -142,7 +142,7 @@ def _build(inputs, cdims, per_mass, state) -> Result:
 
     import sympy
 
-    from ..physics import lagrange
+    from ..physics import lagrange_equations as lagrange
     from ..physics.symbolic import Symbols, latex_of, text_of, to_sympy
 
     s = Symbols(inputs.coords, signed=inputs.signed)
@@ -242,7 +242,7 @@ def _equilibria(system, values, angles, inputs, numeric):
     """``(points, stabilities, numbers)``: each point a list (None for a free coordinate)."""
     import sympy
 
-    from ..physics import lagrange
+    from ..physics import lagrange_equations as lagrange
 
     s = system.symbols
     free = set(lagrange.free_coordinates(system))

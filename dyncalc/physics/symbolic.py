@@ -1,6 +1,6 @@
 """Expression trees of :mod:`dyncalc.units.expression` -> sympy objects, and back to text.
 
-The only modules that import sympy are this one and :mod:`dyncalc.physics.lagrange`, and only
+The only modules that import sympy are this one and :mod:`dyncalc.physics.lagrange_equations`, and only
 ``eom`` imports them (tests/test_architecture.py checks that no other command loads sympy).
 Nothing here reads text: the tree was parsed by the closed grammar, never by ``sympify``.
 
