@@ -192,6 +192,12 @@ def test_uncertain_mass_propagates_linearly():
      "--axis has zero length: a direction needs a non-zero vector"),
     (["disk(m=1kg, r=1m)", "--axis", "z through (1, 0) m"],
      "--axis (the point it passes through) must have 3 components; got 2 in '(1, 0) m'"),
+    (["rod(m=1e300kg, l=1e300m)"],
+     "a mass, centre or moment of inertia overflows float64 (beyond 1.8e308 in kg, m, "
+     "kg*m^2): give the bodies sizes and positions that keep them in range"),
+    (["rod(rho=1e-320 kg/m, l=1e-10 m)"],
+     "the total mass underflows to zero (below 5e-324 kg): give the bodies larger masses or "
+     "densities"),
     (["disk(m=1kg, r=1m)", "--axes", "z"],
      "No such option '--axes' (did you mean '--axis' or '--value'?); see 'dyncalc inertia "
      "--help'"),

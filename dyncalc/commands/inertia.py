@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from ..errors import InputError
+from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from ..result import Result
 from ..result.entries import Entry, Explanation, entry_from_parsed, format_number
@@ -61,7 +61,18 @@ def _place(body: BodyWord, numbers: dict[str, float]):
 
 
 def _evaluate(inputs: InertiaInputs, numbers: list[dict[str, float]]) -> dict:
-    """Every result's SI value (and the placed bodies under ``"_bodies"``)."""
+    """Every result's SI value (and the placed bodies under ``"_bodies"``); overflow refused
+    (PhysicsError), never warned by numpy."""
+    with np.errstate(all="ignore"):
+        out = _evaluate_quietly(inputs, numbers)
+    if not all(np.all(np.isfinite(v)) for k, v in out.items() if not k.startswith("_")):
+        from ..physics.inertia_tensor import _OVERFLOW
+
+        raise PhysicsError(_OVERFLOW)
+    return out
+
+
+def _evaluate_quietly(inputs: InertiaInputs, numbers: list[dict[str, float]]) -> dict:
     from ..physics.inertia_tensor import composite, moment_about, principal
 
     bodies = [_place(b, n)[0] for b, n in zip(inputs.bodies, numbers)]
@@ -160,7 +171,8 @@ def compute(inputs: InertiaInputs) -> Result:
                     explanation=lambda: _explain(inputs, values))
     if inputs.axis is not None:
         n, total = inputs.axis.direction, values["_total"]
-        centre = float(n @ total.J_C @ n)
+        with np.errstate(all="ignore"):
+            centre = float(n @ total.J_C @ n)
         result.slips["J_axis"] = {
             "the parallel-axis term left out (the moment about the parallel axis through the "
             "centre of mass)": centre}
@@ -189,7 +201,7 @@ def _sensitivity(inputs: InertiaInputs, numbers, values):
         moved[i][key] += offset
         try:
             out = _evaluate(inputs, moved)
-        except (InputError, ArithmeticError, ValueError):
+        except (InputError, PhysicsError, ArithmeticError, ValueError):
             return None
         return {k: np.asarray(v, dtype=float) for k, v in out.items() if not k.startswith("_")}
 
@@ -203,6 +215,11 @@ def _show(value, unit: str = "") -> str:
 
 
 def _explain(inputs: InertiaInputs, values: dict) -> Explanation:
+    with np.errstate(all="ignore"):  # a parallel-axis term beyond float64 is shown as inf
+        return _explain_quietly(inputs, values)
+
+
+def _explain_quietly(inputs: InertiaInputs, values: dict) -> Explanation:
     from ..physics.inertia import FORMULAS
 
     formula = []

@@ -81,10 +81,11 @@ def _direction(text: str, label: str, strict: bool):
     bare = word[1:].strip() if sign < 0 else word.lstrip("+").strip()
     if bare in _WORD_AXES:
         return sign * np.array(_WORD_AXES[bare]), word
-    vector = parse_vector(text, DIMENSIONLESS, label=label, strict=strict).si
-    if not float(np.linalg.norm(vector)) > 0.0:
+    vector = np.asarray(parse_vector(text, DIMENSIONLESS, label=label, strict=strict).si,
+                        dtype=float)
+    if not float(np.max(np.abs(vector))) > 0.0:
         raise InputError(f"{label} has zero length: a direction needs a non-zero vector")
-    return np.asarray(vector, dtype=float), None
+    return vector, None
 
 
 def read_body(word: str, index: int, strict: bool = False) -> BodyWord:
@@ -184,4 +185,6 @@ def read_axis(text: str, strict: bool = False) -> AxisText:
         parsed = parse_vector(parts[1], LENGTH, label="--axis (the point it passes through)",
                               strict=strict)
         point = np.asarray(parsed.si, dtype=float)
-    return AxisText(direction / float(np.linalg.norm(direction)), point, text, parsed)
+    from ..physics.inertia_tensor import unit_vector
+
+    return AxisText(unit_vector(direction, "--axis has zero length"), point, text, parsed)

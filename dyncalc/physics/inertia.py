@@ -127,19 +127,19 @@ def mass_from_density(kind: str, rho: float, dims: dict[str, float]) -> float:
     if kind == "ring":
         return rho * 2.0 * math.pi * d["r"]
     if kind == "disk":
-        return rho * math.pi * d["r"] ** 2
+        return rho * math.pi * (d["r"] * d["r"])
     if kind == "plate":
         return rho * d["a"] * d["b"]
     if kind == "hollow-sphere":
-        return rho * 4.0 * math.pi * d["r"] ** 2
+        return rho * 4.0 * math.pi * (d["r"] * d["r"])
     if kind == "half-cylinder-shell":
         return rho * math.pi * d["r"] * d["h"]
     if kind == "solid-sphere":
-        return rho * 4.0 * math.pi * d["r"] ** 3 / 3.0
+        return rho * 4.0 * math.pi * (d["r"] * d["r"] * d["r"]) / 3.0
     if kind == "solid-cylinder":
-        return rho * math.pi * d["r"] ** 2 * d["h"]
+        return rho * math.pi * (d["r"] * d["r"]) * d["h"]
     if kind == "hollow-cylinder":
-        return rho * math.pi * (d["ro"] ** 2 - d["ri"] ** 2) * d["h"]
+        return rho * math.pi * (d["ro"] * d["ro"] - d["ri"] * d["ri"]) * d["h"]
     raise InputError(f"{kind}() takes m=, not a density")
 
 
@@ -154,23 +154,23 @@ def principal_local(kind: str, m: float, dims: dict[str, float]) -> tuple[float,
     if kind == "point":
         return (0.0, 0.0, 0.0)
     if kind == "rod":
-        across = m * d["l"] ** 2 / 12.0
+        across = m * (d["l"] * d["l"]) / 12.0
         return (across, across, 0.0)
     if kind in ("disk", "ring", "solid-sphere", "hollow-sphere"):
-        axial = float(AXIAL_FACTOR[kind]) * m * d["r"] ** 2
+        axial = float(AXIAL_FACTOR[kind]) * m * (d["r"] * d["r"])
         across = axial if "sphere" in kind else axial / 2.0
         return (across, across, axial)
     if kind == "solid-cylinder":
-        r2, h2 = d["r"] ** 2, d["h"] ** 2
+        r2, h2 = (d["r"] * d["r"]), (d["h"] * d["h"])
         return (m * (3.0 * r2 + h2) / 12.0, m * (3.0 * r2 + h2) / 12.0, m * r2 / 2.0)
     if kind == "hollow-cylinder":
-        s2, h2 = d["ri"] ** 2 + d["ro"] ** 2, d["h"] ** 2
+        s2, h2 = d["ri"] * d["ri"] + d["ro"] * d["ro"], (d["h"] * d["h"])
         return (m * (3.0 * s2 + h2) / 12.0, m * (3.0 * s2 + h2) / 12.0, m * s2 / 2.0)
     if kind == "plate":
-        a2, b2 = d["a"] ** 2, d["b"] ** 2
+        a2, b2 = (d["a"] * d["a"]), (d["b"] * d["b"])
         return (m * b2 / 12.0, m * a2 / 12.0, m * (a2 + b2) / 12.0)
     if kind == "half-cylinder-shell":
-        r2, h2 = d["r"] ** 2, d["h"] ** 2
+        r2, h2 = (d["r"] * d["r"]), (d["h"] * d["h"])
         about_axis_x = m * (r2 / 2.0 + h2 / 12.0)
         offset2 = 4.0 * r2 / math.pi ** 2
         return (about_axis_x, about_axis_x - m * offset2, m * (r2 - offset2))

@@ -21,16 +21,32 @@ References
 """
 from __future__ import annotations
 
-from ..errors import InputError
+import math
+
+from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from .inertia import principal_local, reference_offset
 
 __all__ = ["PlacedBody", "Composite", "body_frame", "steiner", "placed", "composite",
-           "principal", "moment_about", "DEGENERATE"]
+           "principal", "moment_about", "DEGENERATE", "unit_vector"]
+
+_OVERFLOW = ("a mass, centre or moment of inertia overflows float64 (beyond 1.8e308 in kg, m, "
+             "kg*m^2): give the bodies sizes and positions that keep them in range")
 
 #: Two principal moments closer than this fraction of the trace are taken as equal (their
 #: axes are then chosen by the rule of :func:`principal`).
 DEGENERATE = 1e-12
+
+
+def unit_vector(v, message: str):
+    """``v / |v|``, scaled by its largest component first (no overflow for 1e300, no
+    underflow for 1e-320); InputError ``message`` for a zero vector."""
+    v = np.asarray(v, dtype=float)
+    largest = float(np.max(np.abs(v)))
+    if not largest > 0.0 or not np.all(np.isfinite(v)):
+        raise InputError(message)
+    v = v / largest
+    return v / float(np.linalg.norm(v))
 
 
 def body_frame(along):
@@ -43,11 +59,7 @@ def body_frame(along):
     >>> body_frame([1.0, 0.0, 0.0]).tolist()
     [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
     """
-    u = np.asarray(along, dtype=float)
-    norm = float(np.linalg.norm(u))
-    if not norm > 0.0:
-        raise InputError("along= has zero length")
-    u = u / norm
+    u = unit_vector(along, "along= has zero length")
     largest = int(np.argmax(np.abs(u)))
     w = np.zeros(3)
     w[(largest + 1) % 3] = 1.0
@@ -128,6 +140,12 @@ def composite(bodies: list[PlacedBody]) -> Composite:
     1.875
     """
     m = sum(b.m for b in bodies)
+    if not all(math.isfinite(b.m) and np.all(np.isfinite(b.J_O)) for b in bodies) \
+            or not math.isfinite(m):
+        raise PhysicsError(_OVERFLOW)
+    if m == 0.0 and all(b.m >= 0.0 for b in bodies):
+        raise PhysicsError("the total mass underflows to zero (below 5e-324 kg): give the "
+                           "bodies larger masses or densities")
     if not m > 0.0:
         raise InputError(f"the negative bodies weigh as much as the others or more: the total "
                          f"mass is {m:.6g} kg; a hole cannot be larger than what it cuts")
@@ -137,6 +155,8 @@ def composite(bodies: list[PlacedBody]) -> Composite:
     J_O = (J_O + J_O.T) / 2.0
     J_C = J_O - steiner(m, r_c)
     J_C = (J_C + J_C.T) / 2.0
+    if not (np.all(np.isfinite(r_c)) and np.all(np.isfinite(J_O)) and np.all(np.isfinite(J_C))):
+        raise PhysicsError(_OVERFLOW)
     moments = np.linalg.eigvalsh(J_C)
     # rounding of the sums: a fraction of the largest terms added or taken away
     scale = 1e-9 * sum(abs(float(np.trace(b.J_O))) for b in bodies)
@@ -215,11 +235,7 @@ def moment_about(J_C, m: float, r_c, direction, point=(0.0, 0.0, 0.0)) -> float:
     ...              [1.0, 0, 0])
     4.0
     """
-    n = np.asarray(direction, dtype=float)
-    norm = float(np.linalg.norm(n))
-    if not norm > 0.0:
-        raise InputError("--axis: the axis direction has zero length")
-    n = n / norm
+    n = unit_vector(direction, "--axis: the axis direction has zero length")
     d = np.asarray(r_c, dtype=float) - np.asarray(point, dtype=float)
     J = np.asarray(J_C, dtype=float) + steiner(m, d)
     return float(n @ J @ n)
