@@ -206,6 +206,14 @@ def test_refusals_exact_messages(args, message):
     assert error_line(run(*args)) == f"Error: {message}"
 
 
+def test_at_most_200_bodies():
+    words = [f"point(m=1kg, at=({i}, 0, 0) m)" for i in range(201)]
+    assert error_line(run(*words)) == "Error: inertia takes at most 200 bodies; got 201"
+    out = values(*words[:200], "--axis", "z")
+    assert out["m"] == 200.0
+    assert out["J_axis"] == pytest.approx(sum(i * i for i in range(200)), rel=1e-15)
+
+
 def test_batch_is_refused_with_the_reason(tmp_path):
     rows = tmp_path / "rows.csv"
     rows.write_text("m\n1\n")

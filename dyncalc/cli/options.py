@@ -183,6 +183,8 @@ COMMON_UNITS: dict[str, tuple[str, ...]] = {
     "m/s^2": ("m/s^2", "mm/s^2", "ft/s^2"),
     "N": ("N", "kN", "lbf"),
     "rad": ("rad", "deg"),
+    "kg": ("kg", "g", "t", "lb"),
+    "kg*m^2": ("kg*m^2", "g*cm^2", "kg*mm^2", "lb*ft^2", "lb*in^2"),
 }
 
 
