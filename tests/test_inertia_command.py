@@ -217,6 +217,7 @@ def test_at_most_200_bodies():
 def test_batch_is_refused_with_the_reason(tmp_path):
     rows = tmp_path / "rows.csv"
     rows.write_text("m\n1\n")
+    assert error_line(run("--batch", "/dev/zero")) == error_line(run("--batch", str(rows)))
     assert error_line(run("--batch", str(rows))) == (
         "Error: inertia does not take --batch: its bodies are words with their own parameters, "
         "not columns; run one composite per command (or use the Python API, dyncalc.inertia)")
