@@ -47,6 +47,16 @@ COMMANDS = {
     "coriolis-scalar": "coriolis --omega 2rad/s --vr 3m/s --r 1m --alpha 1rad/s^2 --mass 2kg",
     "coriolis-vector": 'coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m"',
     "coriolis-earth": 'coriolis --latitude 45deg --speed "180 km/h" --heading 0deg',
+    "inertia": 'inertia "rod(m=2kg, l=1m, along=x, at=(0.5, 0, 0) m)" "-point(m=0.1kg)" '
+               '--axis "z through (0, 0.1, 0) m"',
+    "inertia-density": 'inertia "plate(rho=7.8 kg/m^2, a=40cm, b=20cm)" '
+                       '"-disk(rho=7.8 kg/m^2, r=5cm, at=(0.1, 0, 0) m)"',
+}
+#: Cases whose quantities sit inside words (inertia's bodies): the uncertain form as typed.
+UNCERTAIN_FORMS = {
+    "inertia": 'inertia "rod(m=2kg ± 1%, l=1m, along=x, at=(0.5, 0, 0) m)" "-point(m=0.1kg)" '
+               '--axis z',
+    "inertia-density": 'inertia "plate(rho=7.8 kg/m^2 ± 1%, a=40cm, b=20cm)"',
 }
 CASES = {**{f"scene-{name}": scene.example.removeprefix("dyncalc ")
             for name, scene in catalog().items()}, **COMMANDS}
@@ -137,7 +147,10 @@ def test_object_with_checks_is_valid(case):
 
 @pytest.mark.parametrize("case", CASES)
 def test_object_with_an_uncertain_input_is_valid(case):
-    args = with_uncertainty(words(case) + SCALAR_ADDED.get(case, []))
+    if case in UNCERTAIN_FORMS:
+        args = shlex.split(UNCERTAIN_FORMS[case])
+    else:
+        args = with_uncertainty(words(case) + SCALAR_ADDED.get(case, []))
     data = json_object(*args)
     assert_valid(data)
     uncertain = [n for n, item in data["inputs"].items() if "uncertainty" in item]

@@ -25,6 +25,7 @@ from ..units import ACCELERATION, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from ..lazy import numpy as np
 from .columns import Columns, TypedColumn, column_kernel
 from .face import check_units, magnitude
+from .inertia import disk_about_axis, disk_about_parallel_axis, rod_about_end
 from .numerics import Wide, finite_nonzero
 from .numerics_arrays import WideArray
 from .outcome import Outcome, periodic, periodic_arrays
@@ -374,7 +375,7 @@ def clock_pendulum(m, l, M, r, a, g) -> Outcome:
     """
     m_, l_, M_ = _si(m, "kg"), _si(l, "m"), _si(M, "kg")
     r_, a_ = _si(r, "m"), _si(a, "m")
-    inertia = m_ * l_ * l_ / 3.0 + M_ * (r_ * r_ + 2.0 * a_ * a_) / 2.0
+    inertia = rod_about_end(m_, l_) + disk_about_parallel_axis(M_, r_, a_)
     moment = (m_ * l_ + 2.0 * M_ * a_) * _si(g, "m/s**2")
     return _outcome(moment / (2.0 * inertia), J_A=(inertia, "kg*m**2"))
 
@@ -384,7 +385,7 @@ def _clock_pendulum_columns(m, l, M, r, a, g) -> Columns:
     """:func:`clock_pendulum` on columns (SI: kg, m, m/s^2), with ``J_A`` (bit for bit)."""
     m_, l_, M_ = WideArray(m), WideArray(l), WideArray(M)
     r_, a_ = WideArray(r), WideArray(a)
-    inertia = m_ * l_ * l_ / 3.0 + M_ * (r_ * r_ + 2.0 * a_ * a_) / 2.0
+    inertia = rod_about_end(m_, l_) + disk_about_parallel_axis(M_, r_, a_)
     moment = (m_ * l_ + 2.0 * M_ * a_) * WideArray(g)
     return _columns(moment / (2.0 * inertia), J_A=inertia)
 
@@ -484,7 +485,7 @@ def disk_torsion_offset_mass(M, R, m, r, a, kt, g) -> Outcome:
     if not stiffness.m:
         raise PhysicsError("with kt = 0 and a = 0 nothing pulls the disk back (neutral "
                            "equilibrium): it does not oscillate")
-    inertia = M_ * R_ * R_ / 2.0 + m_ * (r_ * r_ / 2.0 + a_ * a_)
+    inertia = disk_about_axis(M_, R_) + disk_about_parallel_axis(m_, r_, a_)
     return _outcome(stiffness / inertia, J_A=(inertia, "kg*m**2"))
 
 
@@ -495,7 +496,7 @@ def _disk_torsion_offset_mass_columns(M, R, m, r, a, kt, g) -> Columns:
     M_, R_, m_ = WideArray(M), WideArray(R), WideArray(m)
     r_, a_, kt_ = WideArray(r), WideArray(a), WideArray(kt)
     stiffness = kt_ + m_ * WideArray(g) * a_
-    inertia = M_ * R_ * R_ / 2.0 + m_ * (r_ * r_ / 2.0 + a_ * a_)
+    inertia = disk_about_axis(M_, R_) + disk_about_parallel_axis(m_, r_, a_)
     return _columns(stiffness / inertia, stiffness.m != 0.0, J_A=inertia)
 
 
