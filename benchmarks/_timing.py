@@ -33,7 +33,12 @@ def spawn(argv: list[str], env: dict[str, str] | None = None, stdout: str = os.d
           stderr: str = os.devnull) -> Sample:
     """Run ``argv`` (``argv[0]`` a path) with ``env`` (default: this process's), its stdout
     and stderr written to the files named (default /dev/null); a non-zero exit stops the
-    benchmark (a one-line message, the command and its status)."""
+    benchmark (a one-line message, the command and its status).
+
+    ``peak_mb`` is at least this process's own resident size at the spawn (Linux carries the
+    high-water mark of the memory the child shares with its parent until ``exec`` into the
+    child's), so spawn from a small process: the benchmarks' parents are a few tens of MB,
+    below any dyncalc run."""
     start = time.perf_counter()
     pid = os.posix_spawn(argv[0], argv, dict(os.environ) if env is None else env,
                          file_actions=[
