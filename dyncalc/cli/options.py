@@ -183,6 +183,7 @@ COMMON_UNITS: dict[str, tuple[str, ...]] = {
     "m/s^2": ("m/s^2", "mm/s^2", "ft/s^2"),
     "N": ("N", "kN", "lbf"),
     "rad": ("rad", "deg"),
+    "kg": ("kg", "g", "lb"),
 }
 
 

@@ -77,6 +77,8 @@ def _kind_of_diagonal(Mtext, Ktext, i: int) -> str:
         return "length"
     if q.check("[mass]*[length]**2"):
         return "angle"
+    if Mtext.cells[i][i].mag is not None:
+        q = q * Mtext.cells[i][i].mag
     raise InputError(f"--M row {i + 1}, column {i + 1} must be a mass (kg: coordinate "
                      f"{i + 1} a translation) or a moment of inertia (kg*m^2: a rotation); "
                      f"got {format_quantity(q)}")
@@ -93,8 +95,6 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
          normalize: str | None = None, strict: bool = False) -> ModesInputs:
     """The options as typed (``M``, ``K``, ``C``) and, with a scene, its ``NAME=QUANTITY``
     words -> :class:`ModesInputs`."""
-    from ..lazy import numpy as np
-
     normalize = normalize or "max"
     if normalize not in ("max", "mass"):
         raise InputError(f"--normalize must be max or mass; got {normalize[:40]!r}")

@@ -1,7 +1,7 @@
 """The Lagrange scenes of chapter 4 (E4.14, E4.16, E4.17, E4.19): closed-form frequencies for
 ``natural-frequency`` and the linearised mass and stiffness matrices for ``modes``.
 
-Each scene's matrices are derived by hand from its energies (SCENES.md, "Lagrange scenes"):
+Each scene's matrices are derived by hand from its energies (../shared/SCENES.md, "Lagrange scenes"):
 ``M_ij = d^2 T / dq_i' dq_j'`` and ``K_ij = d^2 V / dq_i dq_j`` at the equilibrium, the
 derivation written in the docstring of each ``*_matrices`` function. The closed forms and the
 eigenvalues of the matrices are two derivations of the same frequencies, and the tests hold

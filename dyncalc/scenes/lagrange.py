@@ -1,25 +1,19 @@
-"""Catalog: the Lagrange scenes of chapter 4 (E4.14, E4.16, E4.17, E4.19; SCENES.md
+"""Catalog: the Lagrange scenes of chapter 4 (E4.14, E4.16, E4.19; ../shared/SCENES.md
 "Lagrange scenes"), for ``natural-frequency`` (closed forms) and ``modes`` (the linearised
 matrices of :mod:`dyncalc.physics.lagrange`).
 
 The ``example_result`` values were computed independently with mpmath at 30 digits from the
-formulas of SCENES.md (the pendulums' equilibrium by mpmath.findroot).
+formulas of ../shared/SCENES.md (the pendulums' equilibrium by mpmath.findroot).
 """
 from __future__ import annotations
 
-from ..physics.lagrange import (NO_EQUILIBRIUM, block_disk_springs,
-                                block_disk_springs_matrices, disk_on_swinging_bar,
+from ..physics.lagrange import (block_disk_springs, block_disk_springs_matrices,
                                 pendulum_on_sliding_block, pendulum_on_sliding_block_matrices,
                                 spring_coupled_pendulums, spring_coupled_pendulums_matrices)
-from ..errors import PhysicsError
-from ..units import INERTIA, LENGTH, MASS, STIFFNESS
+from ..units import LENGTH, MASS, STIFFNESS
 from . import Param, register
 from . import Scene
 from .basic import gravity
-
-
-def _no_equilibrium(values):
-    raise PhysicsError(NO_EQUILIBRIUM)
 
 
 _TWO_MODES = "it has two modes, and one damping ratio for both would be ambiguous"
@@ -86,27 +80,6 @@ register(Scene(
     accepts_zeta=False, no_zeta_because=_TWO_MODES,
     matrices=lambda v: spring_coupled_pendulums_matrices(v["m"], v["l"], v["k"], v["b"],
                                                          v["g"]),
-))
-
-register(Scene(
-    name="disk-on-swinging-bar",
-    summary="a disk sliding freely along a swinging bar: no equilibrium, no frequency",
-    figure="a uniform bar (m1, l) swings about a pin at its upper end; a disk (m2, J2 about "
-           "its centre) is threaded on it, slides without friction and turns with it; phi is "
-           "the bar's angle from the downward vertical, x the disk's distance from the pin",
-    params=(Param("m1", MASS, "mass of the bar"), Param("l", LENGTH, "length of the bar"),
-            Param("m2", MASS, "mass of the disk"),
-            Param("J2", INERTIA, "moment of inertia of the disk about its centre"), gravity()),
-    compute=disk_on_swinging_bar,
-    equation="(m1 l^2/3 + m2 x^2 + J2) phi'' + 2 m2 x x' phi' + (m1 l/2 + m2 x) g sin(phi) "
-             "= 0; x'' - x phi'^2 - g cos(phi) = 0",
-    formula="none: at rest the disk accelerates outward at g cos(phi), so there is no "
-            "equilibrium to oscillate about (refused, saying why)",
-    reference="E4.17",
-    example="dyncalc natural-frequency --scene disk-on-swinging-bar m1=2kg l=1m m2=1kg "
-            '"J2=0.01 kg*m^2"',
-    accepts_zeta=False, no_zeta_because="it has no equilibrium to oscillate about",
-    matrices=_no_equilibrium,
 ))
 
 register(Scene(
