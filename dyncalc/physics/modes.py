@@ -151,8 +151,8 @@ def solve_modes(M, K, C=None, *, normalize: str = "max", names=("--M", "--K", "-
     lam_clean = np.where(rigid, 0.0, lam)
     omega = np.sqrt(lam_clean)
     shapes, reference = _normalised(V, normalize)
-    modal_mass = np.einsum("ij,ik,kj->j", shapes, M, shapes)
-    modal_stiffness = np.einsum("ij,ik,kj->j", shapes, K, shapes)
+    modal_mass = np.sum(shapes * (M @ shapes), axis=0)
+    modal_stiffness = np.sum(shapes * (K @ shapes), axis=0)
     if normalize == "mass":
         modal_mass = np.ones(n)
         modal_stiffness = lam_clean.copy()

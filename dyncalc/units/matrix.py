@@ -41,6 +41,11 @@ _WITH_UNIT = re.compile(r"\s*([+-]?(?:(?:0|[1-9]\d*)(?:\.\d*)?|\.\d+)(?:[eE][+-]
                         r"\s*([A-Za-z_µμΩÅ°][^,;\[\]]*?)\s*")
 
 
+_NUM = r"[ \t]*[+-]?(?:(?:0|[1-9]\d*)(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?[ \t]*"
+#: A file of plain numbers only: read at once (numpy), not entry by entry.
+_PLAIN_FILE = re.compile(rf"{_NUM}(?:,{_NUM})*(?:\n{_NUM}(?:,{_NUM})*)*")
+
+
 class _Cell:
     """One entry as read: a plain number (``reading`` None, ``unit`` ""), a number with a
     unit (``unit`` its text), or an expression (``reading`` from the grammar)."""
@@ -144,14 +149,16 @@ class MatrixText:
     none, bare entries are SI); ``text`` what the user typed; ``label`` the option (``--K``).
     """
 
-    __slots__ = ("cells", "trailing", "text", "label")
+    __slots__ = ("cells", "trailing", "text", "label", "plain")
 
-    def __init__(self, cells: list[list[_Cell]], trailing: str, text: str, label: str):
+    def __init__(self, cells: list[list[_Cell]], trailing: str, text: str, label: str,
+                 plain=None):
         self.cells, self.trailing, self.text, self.label = cells, trailing, text, label
+        self.plain = plain  # a file of plain numbers: its array (``cells`` then unused)
 
     @property
     def order(self) -> int:
-        return len(self.cells)
+        return len(self.cells) if self.plain is None else len(self.plain)
 
     def unit_of(self, i: int, j: int) -> str:
         """The unit entry (i, j) is in as typed: its own, the trailing one, or ``""``."""
@@ -165,6 +172,8 @@ class MatrixText:
     def quantity_of(self, i: int, j: int):
         """Entry (i, j)'s unit as a pint quantity (1 of the unit it was typed in, or the
         expression as read); ``None`` when the entry is bare and there is no trailing unit."""
+        if self.plain is not None:
+            return None
         cell = self.cells[i][j]
         if cell.reading is not None and cell.reading.named:
             return cell.reading.quantity
@@ -181,6 +190,21 @@ class MatrixText:
         from ..lazy import numpy as np
 
         n = self.order
+        if self.plain is not None:
+            nonzero = np.argwhere(self.plain != 0.0)
+            if strict and len(nonzero):
+                i, j = (int(x) for x in nonzero[0])
+                dim = dim_of(i, j)[0]
+                if dim.kind != "dimensionless":
+                    raise InputError(f"{_entry_label(self.label, i, j)}: {self.plain[i, j]!r} "
+                                     f"has no unit and --strict-units is on; write it with a "
+                                     f"unit, e.g. {self.plain[i, j]!r} {dim.si}")
+            return self.plain.copy(), bool(len(nonzero))
+        if not strict and not self.trailing and all(
+                c.reading is None and not c.unit for row in self.cells for c in row):
+            # plain numbers only (a large @FILE.csv): SI as they are, no per-entry checks left
+            out = np.array([[c.mag for c in row] for row in self.cells], dtype=float)
+            return out, bool(np.any(out != 0.0))
         out = np.empty((n, n), dtype=float)
         factors: dict[tuple[str, str], float] = {}
         assumed = False
@@ -235,6 +259,20 @@ class MatrixText:
         return value
 
 
+def _plain_file(lines: list[str], label: str, max_order: int):
+    """The array of a file holding plain numbers only (square, finite), else ``None`` (the
+    entry-by-entry reader then gives the exact message)."""
+    from ..lazy import numpy as np
+
+    if not lines or len(lines) > max_order or not _PLAIN_FILE.fullmatch("\n".join(lines)):
+        return None
+    rows = [line.split(",") for line in lines]
+    if any(len(row) != len(rows) for row in rows):
+        return None
+    values = np.array(rows, dtype=float)
+    return values if bool(np.all(np.isfinite(values))) else None
+
+
 def parse_matrix(text: str, *, label: str = "matrix", max_order: int = MAX_ORDER) -> MatrixText:
     """Read a square matrix (see the module docstring for the forms).
 
@@ -248,6 +286,9 @@ def parse_matrix(text: str, *, label: str = "matrix", max_order: int = MAX_ORDER
     if stripped.startswith("@"):
         body = _read_file(stripped[1:], label)
         lines = [line for line in body.splitlines() if line.strip()]
+        plain = _plain_file(lines, label, max_order)
+        if plain is not None:
+            return MatrixText([], "", stripped, label, plain=plain)
         rows = [_split_top(line, ",") for line in lines]
         trailing = ""
         source = stripped
