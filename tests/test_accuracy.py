@@ -850,11 +850,15 @@ def s_block_disk_springs(d):
 
 
 def r_block_disk_springs(v):
-    big, m, k = v["M"], v["m"], v["k"]
-    root = mpmath.sqrt(4 * big ** 2 - 4 * big * m + 17 * m ** 2)
-    lam1 = k * (2 * big + 5 * m - root) / (2 * m * (3 * big + m))
-    lam2 = k * (2 * big + 5 * m + root) / (2 * m * (3 * big + m))
-    return {**periodic_ref(mpmath.sqrt(lam1), "_1"), **periodic_ref(mpmath.sqrt(lam2), "_2")}
+    """SCENES.md's form as printed; its minus root cancels when M and m are far apart (up to
+    1e600 here), so it is evaluated with 1300 digits."""
+    with mpmath.workdps(1300):
+        big, m, k = v["M"], v["m"], v["k"]
+        root = mpmath.sqrt(4 * big ** 2 - 4 * big * m + 17 * m ** 2)
+        lam1 = k * (2 * big + 5 * m - root) / (2 * m * (3 * big + m))
+        lam2 = k * (2 * big + 5 * m + root) / (2 * m * (3 * big + m))
+        return {**periodic_ref(mpmath.sqrt(lam1), "_1"),
+                **periodic_ref(mpmath.sqrt(lam2), "_2")}
 
 
 def s_spring_coupled_pendulums(d):
@@ -874,7 +878,11 @@ def r_spring_coupled_pendulums(v):
             phi = mpmath.mpf(0)
         else:
             f = lambda p: m * g * mpmath.sin(p) + k * (2 * l_ * mpmath.sin(p) - b) * mpmath.cos(p)
-            phi = mpmath.findroot(f, (mpmath.mpf(0), mpmath.pi / 2), solver="bisect")
+            lo, hi = mpmath.mpf(0), mpmath.pi / 2     # f(0) < 0 < f(pi/2): bisect to 60 digits
+            while hi - lo > mpmath.mpf(10) ** -58 * hi:
+                mid = (lo + hi) / 2
+                lo, hi = (lo, mid) if f(mid) > 0 else (mid, hi)
+            phi = (lo + hi) / 2
         c = mpmath.cos(phi)
         out = {**periodic_ref(mpmath.sqrt(g * c / l_), "_1"),
                **periodic_ref(mpmath.sqrt(g / (l_ * c) + 2 * k * c ** 2 / m), "_2")}

@@ -11,7 +11,7 @@ from dyncalc.cli import cli
 from dyncalc.commands.modes import modes
 from dyncalc.errors import InputError
 from dyncalc.physics.modes import solve_modes
-from dyncalc.units import MASS, STIFFNESS
+from dyncalc.units import STIFFNESS
 from dyncalc.units.matrix import parse_matrix
 
 
