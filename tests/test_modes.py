@@ -133,6 +133,16 @@ def test_block_disk_springs_closed_form_and_mode_ratio():
         assert r * phi / x == pytest.approx((lam * (M + m) - k) / (lam * m), rel=1e-12)
 
 
+def test_block_disk_springs_needs_r_for_modes_only():
+    assert nf("--scene", "block-disk-springs", "M=2kg", "m=1kg", "k=100N/m")["omega_2"][
+        "value"] == pytest.approx(10.0, rel=1e-15)
+    result = run("--scene", "block-disk-springs", "M=2kg", "m=1kg", "k=100N/m")
+    assert result.exit_code == 2
+    assert result.stderr == ("Error: modes --scene block-disk-springs needs r= (the disk's "
+                             "radius): it cancels from the frequencies but not from the mode "
+                             "shapes\n")
+
+
 def test_pendulum_on_sliding_block_drift_and_swing():
     m1, m2, l, g = 3.0, 1.0, 0.5, 9.80665
     got = data("--scene", "pendulum-on-sliding-block", f"m1={m1}kg", f"m2={m2}kg", f"l={l}m")

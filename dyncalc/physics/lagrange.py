@@ -79,7 +79,7 @@ def coupled_blocks_matrices(m1: float, m2: float, k1: float, k2: float, k3: floa
 # --- block-disk-springs (E4.14) -------------------------------------------------------------
 
 @check_units(M=MASS, m=MASS, r=LENGTH, k=STIFFNESS)
-def block_disk_springs(M, m, r, k) -> Outcome:
+def block_disk_springs(M, m, k, r=None) -> Outcome:
     """A block on a wall spring with a disk rolling on its top face, tied by a second spring
     to a post on the block (E4.14 of [1]).
 
@@ -95,10 +95,11 @@ def block_disk_springs(M, m, r, k) -> Outcome:
         Mass of the block ``[mass]``.
     m : Quantity
         Mass of the disk (homogeneous) ``[mass]``.
-    r : Quantity
-        Radius of the disk ``[length]`` (cancels).
     k : Quantity
         Stiffness of each of the two springs ``[force]/[length]``.
+    r : Quantity, optional
+        Radius of the disk ``[length]``: it cancels from the frequencies (the mode shapes of
+        ``modes`` need it).
 
     Returns
     -------
@@ -107,7 +108,7 @@ def block_disk_springs(M, m, r, k) -> Outcome:
     Examples
     --------
     >>> from dyncalc.units import Q_
-    >>> out = block_disk_springs(Q_(2, "kg"), Q_(1, "kg"), Q_(0.1, "m"), Q_(100, "N/m"))
+    >>> out = block_disk_springs(Q_(2, "kg"), Q_(1, "kg"), Q_(100, "N/m"))
     >>> round(out.values["omega_1"].magnitude, 9), round(out.values["omega_2"].magnitude, 9)
     (5.345224838, 10.0)
     """

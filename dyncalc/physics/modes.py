@@ -114,8 +114,8 @@ def solve_modes(M, K, C=None, *, normalize: str = "max", names=("--M", "--K", "-
 
     >>> K = np.array([[2., -1, 0], [-1, 2, -1], [0, -1, 2]]) * 100.0
     >>> out = solve_modes(np.eye(3), K)
-    >>> [round(w, 9) for w in out.omega]
-    [7.653668647, 14.142135624, 18.477590651]
+    >>> [round(float(w), 9) for w in out.omega]
+    [7.653668647, 14.142135624, 18.47759065]
     >>> out.shapes[:, 1].tolist()
     [1.0, 0.0, -1.0]
     """

@@ -10,10 +10,18 @@ from __future__ import annotations
 from ..physics.lagrange import (block_disk_springs, block_disk_springs_matrices,
                                 pendulum_on_sliding_block, pendulum_on_sliding_block_matrices,
                                 spring_coupled_pendulums, spring_coupled_pendulums_matrices)
+from ..errors import InputError
 from ..units import LENGTH, MASS, STIFFNESS
 from . import Param, register
 from . import Scene
 from .basic import gravity
+
+
+def _radius(values) -> float:
+    if "r" not in values:
+        raise InputError("modes --scene block-disk-springs needs r= (the disk's radius): it "
+                         "cancels from the frequencies but not from the mode shapes")
+    return values["r"]
 
 
 _TWO_MODES = "it has two modes, and one damping ratio for both would be ambiguous"
@@ -26,7 +34,8 @@ register(Scene(
            "spring k to a post on the block; x is the block's displacement, phi the disk's "
            "rotation (positive moving its centre backward on the block)",
     params=(Param("M", MASS, "mass of the block"), Param("m", MASS, "mass of the disk"),
-            Param("r", LENGTH, "radius of the disk (cancels from the frequencies)"),
+            Param("r", LENGTH, "radius of the disk: it cancels from the frequencies; modes "
+                  "needs it for the mode shapes", optional=True),
             Param("k", STIFFNESS, "stiffness of each spring")),
     compute=block_disk_springs,
     equation="(M + m) x'' - m r phi'' + k x = F(t); -m x'' + (3/2) m r phi'' + k r phi = 0",
@@ -38,14 +47,14 @@ register(Scene(
            r"$omega_2 = \sqrt{$k\,\frac{2$M + 5$m + \sqrt{4$M^2 - 4$M\,$m + 17$m^2}}"
            r"{2$m\,(3$M + $m)}}"),
     reference="E4.14",
-    example="dyncalc natural-frequency --scene block-disk-springs M=2kg m=1kg r=0.1m k=100N/m",
+    example="dyncalc natural-frequency --scene block-disk-springs M=2kg m=1kg k=100N/m",
     example_result={"omega_1": "5.34522483824848769369106961759 rad/s",
                     "f_1": "0.850718954944823509996625824157 Hz",
                     "T_1": "1.175476335853899785616561943 s",
                     "omega_2": "10 rad/s", "f_2": "1.59154943091895335768883763373 Hz",
                     "T_2": "0.628318530717958647692528676656 s"},
     accepts_zeta=False, no_zeta_because=_TWO_MODES,
-    matrices=lambda v: block_disk_springs_matrices(v["M"], v["m"], v["r"], v["k"]),
+    matrices=lambda v: block_disk_springs_matrices(v["M"], v["m"], _radius(v), v["k"]),
 ))
 
 register(Scene(
