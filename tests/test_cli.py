@@ -14,7 +14,7 @@ from dyncalc.cli import cli
 
 ROOT = Path(__file__).resolve().parents[1]
 COMMANDS_ALL = ["spring-series", "spring-parallel", "natural-frequency", "damping-ratio",
-         "rolling-onset", "coriolis", "forced-response", "inertia", "scenes"]
+         "rolling-onset", "coriolis", "forced-response", "modes", "inertia", "scenes"]
 
 
 def run(*args, env=None):

@@ -43,6 +43,7 @@ COMMANDS = {
     "coriolis": ["coriolis", "--omega", "2 rad/s", "--vr", "3 m/s"],
     "forced-response": ["forced-response", "--k", "100 N/m", "--m", "2kg", "--F0", "1 N",
                         "--Omega", "3 rad/s"],
+    "modes": ["modes", "--M", "2, 0; 0, 1 kg", "--K", "300, -100; -100, 100 N/m"],
     "inertia": ["inertia", "disk(m=2kg, r=0.1m)", "-disk(m=0.5kg, r=5cm)"],
     "scenes": ["scenes"],
 }

@@ -118,11 +118,11 @@ def test_command_filter():
 @pytest.mark.parametrize("args, message", [
     (["--command", "spring-series"], "Error: spring-series takes no scene; the commands with "
                                      "scenes are natural-frequency, damping-ratio, "
-                                     "forced-response"),
+                                     "forced-response, modes"),
     (["--command", "natral-frequency"], "Error: there is no command 'natral-frequency' (did "
                                         "you mean 'natural-frequency'?); the commands with "
                                         "scenes are natural-frequency, damping-ratio, "
-                                        "forced-response"),
+                                        "forced-response, modes"),
     (["mass-spring", "--command", "damping-ratio"], "Error: give a scene NAME or --command, "
                                                     "not both"),
 ])

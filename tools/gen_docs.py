@@ -280,8 +280,25 @@ def _example(scene, result) -> list[str]:
     return lines
 
 
+def _refused_scene(scene, error) -> list[str]:
+    """A scene whose example is refused on purpose (no equilibrium): its card and the refusal."""
+    return [f"## {scene.name}", "",
+            _sentence(_cell(scene.summary)), "",
+            f"**Figure.** {_sentence(_cell(scene.figure))}", "",
+            f"* Equation of motion: {_code(scene.equation)}",
+            f"* Formula: {_code(scene.formula)}", "",
+            "**Parameters** (`NAME=QUANTITY`):", "", *_parameters(scene), "",
+            *_rules(scene), "", "**Example** (refused, exit status 2):", "",
+            "```sh", scene.example, "```", "", f"says: {_code('Error: ' + str(error))}"]
+
+
 def _scene(scene) -> list[str]:
-    result, added = run_example(scene)
+    from dyncalc.errors import PhysicsError
+
+    try:
+        result, added = run_example(scene)
+    except PhysicsError as error:
+        return _refused_scene(scene, error)
     return [f"## {scene.name}", "",
             _sentence(_cell(scene.summary)), "",
             f"**Figure.** {_sentence(_cell(scene.figure))}", "",

@@ -241,3 +241,15 @@ def ForcedRows(*, scene: str | None = None, rtol: float | None = None,
     words = tuple(p.name for p in forced_scene(scene).params) if scene is not None else ()
     return RecordRows(COMMAND, {"scene": scene}, scene_words=words, rtol=rtol, strict=strict,
                       example="k [N/m],m [kg],zeta,F0 [N],Omega [rad/s]")
+
+
+def ModesRows(*, scene: str | None = None, normalize: str | None = None,
+              strict: bool = False) -> RecordRows:
+    """``modes``: one system per row, its matrices as quoted cells (``M``, ``K``, ``C``);
+    with ``--scene``, that scene's parameters instead."""
+    from ..commands.modes import COMMAND
+    from ..scenes import get_scene
+
+    words = tuple(p.name for p in get_scene(scene).params) if scene is not None else ()
+    return RecordRows(COMMAND, {"scene": scene, "normalize": normalize}, scene_words=words,
+                      strict=strict, example='M,K')

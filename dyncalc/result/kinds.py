@@ -35,6 +35,7 @@ _FIXED = {
     "zeta": ResultKind(DIMENSIONLESS, "", "ζ", "damping ratio"),
     "xi": ResultKind(DECAY_RATE, "1/s", "ξ", "decay rate (amplitude ~ exp(-xi t))"),
     "phi_0": ResultKind(ANGLE, "deg", "φ0", "equilibrium angle"),
+    "phi2_0": ResultKind(ANGLE, "deg", "φ2,0", "half the opening angle at rest"),
     "theta_eq": ResultKind(ANGLE, "deg", "θeq", "stable equilibrium angle"),
     "J_A": ResultKind(INERTIA, "kg*m^2", "J_A", "moment of inertia about the pivot"),
     "v_crit": ResultKind(VELOCITY, "m/s", "v_crit", "critical (resonance) speed"),

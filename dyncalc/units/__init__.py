@@ -3,7 +3,8 @@ checks, angles included (:mod:`.dimensions`), and the strict quantity grammar
 (:mod:`.grammar`). Nothing here knows about commands, physics or output."""
 from __future__ import annotations
 
-from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, AREA,
+from .dimensions import (COUPLING_DAMPING, COUPLING_MASS, COUPLING_STIFFNESS,
+                         TORSIONAL_DAMPING, ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, AREA,
                          CYCLE_RATE, DAMPING, DECAY_RATE, DIMENSIONLESS, FORCE, INERTIA, LENGTH,
                          LINEAR_DRAG, MASS, MODULUS, RIGIDITY, SECOND_MOMENT, STIFFNESS, TIME,
                          TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS, UNBALANCE, VELOCITY,
@@ -19,4 +20,5 @@ __all__ = [
     "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
     "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION", "DECAY_RATE",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "UNBALANCE",
+    "COUPLING_MASS", "COUPLING_STIFFNESS", "TORSIONAL_DAMPING", "COUPLING_DAMPING",
 ]
