@@ -66,6 +66,7 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
         texts[name], labels[name] = text, f"{name}="
     if scene is not None:
         chosen = forced_scene(scene)
+        _check_driven(chosen, options, texts)
         for name in options:
             if options[name] is not None and chosen.param(name) is None:
                 raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: the "
@@ -74,6 +75,37 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
         return ForcedInputs(chosen, texts, labels, rtol, strict)
     _check_forms(texts, labels)
     return ForcedInputs(OSCILLATOR, texts, labels, rtol, strict)
+
+
+def _check_driven(chosen, options: dict, texts: dict) -> None:
+    """Refuse what a scene driven on its coordinate does not take: another excitation than
+    ``--F0``, a damping where the scene has its own, ``--Omega`` where ``Omega=`` is the
+    scene's own spin, an inverse problem."""
+    from ..scenes.runner import is_inverse
+    from ..scenes.sdof import COORDINATES, has_spin, refuse_excitation
+
+    coordinate = COORDINATES.get(chosen.name)
+    if coordinate is None or chosen.param("F0") is None:
+        return
+    for name in ("base", "base_accel", "unbalance"):
+        if options.get(name) is not None or name in texts:
+            raise refuse_excitation(chosen.name, _flag(name))
+    if coordinate.damped:
+        for name in _DAMPINGS:
+            if options.get(name) is not None or name in texts:
+                raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: its "
+                                 "damping is its own (its parameters give zeta)")
+    if options.get("Omega") is not None and has_spin(chosen.name):
+        raise InputError(f"--Omega does not go with --scene {chosen.name}: its Omega= is the "
+                         "spin of the set-up; give the excitation frequency as --f-exc")
+    if "amplitude" in texts:
+        raise InputError(f"amplitude= does not go with forced-response --scene "
+                         f"{chosen.name}: the driven response is linear (small motion about "
+                         "the equilibrium); natural-frequency takes an amplitude")
+    if is_inverse(chosen, texts):
+        raise InputError(f"forced-response --scene {chosen.name} runs forward only: give "
+                         "every parameter (an inverse problem works on the mass-spring-damper "
+                         "itself, --k --m without --scene)")
 
 
 def _shown(names, labels) -> str:
@@ -124,6 +156,7 @@ def compute(inputs: ForcedInputs) -> Result:
 
     result = compute_scene(inputs.scene, inputs.texts, labels=inputs.labels,
                            rtol=inputs.rtol, strict=inputs.strict, command="forced-response")
+    _coordinate_entries(result)
     kind = next((_KINDS[n] for n in _EXCITATIONS if n in inputs.texts), None)
     if inputs.scene is OSCILLATOR and kind is not None:
         from .forced_slips import forced_slips
@@ -133,6 +166,45 @@ def compute(inputs: ForcedInputs) -> Result:
         for name, slips in forced_slips(values, kind).items():
             result.slips.setdefault(name, {}).update(slips)
     return result
+
+
+#: For a scene driven on an angle: the results that are angles, moments, inertias.
+_ROTATION = {"X": "ANGLE", "X_res": "ANGLE", "X_peak": "ANGLE", "x": "ANGLE",
+             "F_T": "TORQUE", "m_eff": "INERTIA", "k_eff": "TORSIONAL_STIFFNESS"}
+_ROTATION_WORDS = {"X": "steady amplitude of {s}", "X_res": "steady amplitude of {s} at "
+                   "Omega = omega", "X_peak": "largest steady amplitude of {s} over Omega",
+                   "x": "total {s} at time t", "F_T": "amplitude of the moment on the support",
+                   "m_eff": "effective moment of inertia in {s}",
+                   "k_eff": "effective torsional stiffness in {s}"}
+
+
+def _coordinate_entries(result: Result) -> None:
+    """A scene driven on its coordinate (:mod:`dyncalc.scenes.sdof`): the coordinate named
+    in ``extra`` and in the amplitudes' descriptions; for an angle, the amplitudes in rad, the
+    force on the support a moment, ``m_eff`` and ``k_eff`` rotational."""
+    from ..scenes.sdof import COORDINATES
+
+    coordinate = COORDINATES.get(result.scene)
+    if coordinate is None or "m_eff" not in result.results:
+        return
+    from .. import units
+    from ..result.entries import Entry
+
+    result.extra["coordinate"] = {"name": coordinate.symbol, "is": coordinate.what,
+                                  "F0": coordinate.drive,
+                                  "kind": "angle" if coordinate.rotation else "displacement"}
+    sym = coordinate.symbol
+    for name, entry in list(result.results.items()):
+        if name not in _ROTATION:
+            continue
+        if coordinate.rotation:
+            dim = getattr(units, _ROTATION[name])
+            unit = dim.si.replace("**", "^")
+            words = _ROTATION_WORDS[name].format(s=sym)
+            result.results[name] = Entry(name, entry.si, dim, unit=unit, symbol=entry.symbol,
+                                         description=words)
+        elif name in ("X", "X_res", "X_peak", "x", "m_eff", "k_eff"):
+            entry.description = f"{entry.description} ({sym}: {coordinate.what})"
 
 
 def forced_response(options: dict[str, str | None], words=(), *, scene: str | None = None,

@@ -245,9 +245,12 @@ register(Scene(
 
 
 def forced_scene(name: str) -> Scene:
-    """The scene ``forced-response --scene NAME`` runs: a driven variant (:data:`DRIVEN`) or a
-    forced scene of the catalog; refuses any other with the list."""
-    from . import catalog, get_scene
+    """The scene ``forced-response --scene NAME`` runs: a driven variant (:data:`DRIVEN`), a
+    forced scene of the catalog, or a single-degree-of-freedom scene driven by ``F0`` on its
+    coordinate (:func:`dyncalc.scenes.sdof.driven_variant`); refuses any other (several
+    degrees of freedom) with the reason."""
+    from . import get_scene
+    from .sdof import COORDINATES, driven_variant
 
     if name in DRIVEN:
         return DRIVEN[name]
@@ -256,17 +259,20 @@ def forced_scene(name: str) -> Scene:
         return DRIVEN[scene.name]
     if scene.compute.__module__ == "dyncalc.physics.forced_scenes":
         return scene
-    names = [*DRIVEN, *(n for n, s in catalog().items()
-                        if s.compute.__module__ == "dyncalc.physics.forced_scenes")]
+    if scene.name in COORDINATES:
+        return driven_variant(scene.name)
     from ..errors import InputError
 
-    raise InputError(f"forced-response --scene takes a forced scene: {', '.join(names)}; "
-                     f"{scene.name} has no excitation (natural-frequency computes it)")
+    raise InputError(f"forced-response --scene takes a scene with one degree of freedom; "
+                     f"{scene.name} has more than one (natural-frequency gives its modes), so "
+                     "it has no single effective mass and stiffness to drive")
 
 
 def forced_scene_names() -> list[str]:
-    """The scenes forced-response --scene takes (for completion and help)."""
+    """The scenes forced-response --scene takes (for completion and help), in catalog
+    order after the driven variants."""
     from . import catalog
+    from .sdof import COORDINATES
 
-    return [*DRIVEN, *(n for n, s in catalog().items()
-                       if s.compute.__module__ == "dyncalc.physics.forced_scenes")]
+    return [*DRIVEN, *(n for n, s in catalog().items() if n not in DRIVEN and (
+        s.compute.__module__ == "dyncalc.physics.forced_scenes" or n in COORDINATES))]

@@ -6,8 +6,8 @@ from __future__ import annotations
 from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, AREA,
                          CYCLE_RATE, DAMPING, DECAY_RATE, DIMENSIONLESS, FORCE, INERTIA, LENGTH,
                          LINEAR_DRAG, MASS, MODULUS, RIGIDITY, SECOND_MOMENT, STIFFNESS, TIME,
-                         TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS, UNBALANCE, VELOCITY,
-                         Dim)
+                         TORQUE, TORSIONAL_DAMPING, TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS,
+                         UNBALANCE, VELOCITY, Dim)
 from .grammar import (MAX_DEPTH, MAX_TEXT, Parsed, ReadError, convert, format_quantity,
                       parse_quantity, parse_unit, parse_vector, to_si)
 from .registry import Q_, registry
@@ -19,4 +19,5 @@ __all__ = [
     "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
     "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION", "DECAY_RATE",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "UNBALANCE",
+    "TORQUE", "TORSIONAL_DAMPING",
 ]

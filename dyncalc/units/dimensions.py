@@ -10,7 +10,7 @@ __all__ = [
     "Dim", "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "AREA",
     "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
     "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS", "DECAY_RATE",
-    "UNBALANCE",
+    "UNBALANCE", "TORQUE", "TORSIONAL_DAMPING",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "angle_power", "angle_exponent",
 ]
 
@@ -56,9 +56,12 @@ VELOCITY = Dim("velocity", "[length]/[time]", "[length]/[time]", "m/s")
 ACCELERATION = Dim("acceleration", "[length]/[time]^2", "[length]/[time]**2", "m/s^2")
 FORCE = Dim("force", "[force]", "[force]", "N")
 UNBALANCE = Dim("unbalance", "[mass]*[length]", "[mass]*[length]", "kg*m")
+TORQUE = Dim("torque", "[force]*[length]", "[force]*[length]", "N*m")
 MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
 DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
               "N*s/m")
+TORSIONAL_DAMPING = Dim("torsional damping coefficient", "[force]*[length]*[time]/[angle]",
+                        "[force]*[length]*[time]", "N*m*s/rad", angles=(-1, 0))
 ANGLE = Dim("angle", "[angle]", "", "rad", "angle", angles=(1,))
 ANGULAR_RATE = Dim("angular rate", "[angle]/[time]", "1/[time]", "rad/s", "angular-rate",
                    angles=(1,))
