@@ -103,7 +103,7 @@ def has_spin(name: str) -> bool:
 
 
 def _forcing_params(coordinate: Coordinate) -> tuple[Param, ...]:
-    from .forced import _damping, _frequency
+    from .forced_parts import _damping, _frequency
 
     rot = coordinate.rotation
     damping = ()
@@ -142,7 +142,7 @@ def driven_variant(name: str) -> Scene:
     """The scene ``forced-response --scene NAME`` runs for a single-degree-of-freedom scene
     of the catalog: driven by ``F0`` on its coordinate."""
     from . import get_scene
-    from .forced import _STEADY_LATEX
+    from .forced_parts import _STEADY_LATEX
 
     scene = get_scene(name)
     coordinate = COORDINATES[scene.name]
@@ -190,7 +190,8 @@ def forced_example(name: str) -> str:
     coordinate = COORDINATES[scene.name]
     words = _EXAMPLE_WORDS.get(name, "")
     damping = "" if coordinate.damped else " --zeta 0.05"
-    frequency = "--f-exc 1Hz" if scene.param("Omega") is not None else "--Omega 5rad/s"
+    frequency = ("--Omega 5rad/s" if scene.param("Omega") is None
+                 else "--f-exc 2Hz" if name == "pendulum-on-rotating-disk" else "--f-exc 1Hz")
     drive = _EXAMPLE_F0.get(name, _EXAMPLE_DRIVE[coordinate.rotation])
     return (f"dyncalc forced-response --scene {name} {words}{damping} {drive} {frequency}")
 
