@@ -231,19 +231,19 @@ def columns(given: dict, settings: dict):
 
     ``given`` maps the columns of the block (the record's input names: ``k``, ``m``,
     ``zeta``, ``F0``, ``Omega``, ...) to float64 SI arrays; ``settings`` holds ``scene``.
-    Without a scene, for the forms :func:`read` accepts (no result given to solve from), each
-    row goes through :func:`dyncalc.physics.forced.forced_response` on plain SI floats (no
-    parsing, no pint, no Result): the very function the one-off calls, so its numbers are the
-    one-off's to the bit. A row is exact when every input is finite and positive (``x0``,
+    Without a scene, for the forms :func:`read` accepts (no result given to solve from), the
+    columns go through :func:`dyncalc.physics.forced_columns.forced_columns`, the one-off's
+    float operations on whole arrays with its exact roundings reproduced (bit for bit); the
+    rows it leaves go through :func:`dyncalc.physics.forced.forced_response` on plain SI
+    floats (no parsing, no pint, no Result), the very function the one-off calls. A row is exact when every input is finite and positive (``x0``,
     ``v0`` finite), it raises and warns nothing and every result is finite and non-zero.
     A result that exists on some rows only (``isolation``, ``bandwidth``, the peak) is NaN
     on the others: the batch splits a block by the results its rows have
     (``Columns.optional``).
     """
-    from ..errors import PhysicsError
     from ..lazy import numpy as np
     from ..physics.columns import Columns
-    from ..physics.forced import forced_response as physics
+    from ..physics.forced_columns import forced_columns
 
     keys = set(given)
     if settings.get("scene") is not None or not keys or keys - _COLUMN_NAMES:
@@ -254,32 +254,46 @@ def columns(given: dict, settings: dict):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     n = len(next(iter(arrays.values())))
-    rows: list[dict | None] = []
-    names: dict[str, None] = {}
-    for i in range(n):
-        row = {name: float(array[i]) for name, array in arrays.items()}
-        if not all(math.isfinite(v) and (v > 0.0 or name in _SIGNED)
-                   for name, v in row.items()):
-            rows.append(None)
-            continue
-        try:
-            out = physics(**row)
-        except (InputError, PhysicsError, ArithmeticError, ValueError):
-            rows.append(None)
-            continue
-        values = out.values
-        if out.warnings or not all(isinstance(v, float) and math.isfinite(v) and v != 0.0
-                                   for v in values.values()):
-            rows.append(None)
-            continue
-        rows.append(values)
-        names.update(dict.fromkeys(values))
+    kernel = forced_columns(arrays)
+    values, exact = kernel if kernel is not None else ({}, np.zeros(n, dtype=bool))
+    names = dict.fromkeys(name for name in values if name != "isolation"
+                          or not np.all(np.isnan(values[name])))
+    rows = {}
+    for i in np.flatnonzero(~exact).tolist():
+        row = _one_row({name: float(array[i]) for name, array in arrays.items()})
+        if row is not None:
+            rows[i] = row
+            names.update(dict.fromkeys(row))
     order = [name for name in _RESULT_ORDER if name in names]
-    values = {name: np.array([r.get(name, math.nan) if r is not None else math.nan
-                              for r in rows], dtype=float) for name in order}
-    exact = np.array([r is not None for r in rows], dtype=bool)
-    return Columns(values, exact=exact, model="linear", method="closed-form",
-                   optional=True)
+    out = {name: np.array(values[name]) if name in values else np.full(n, math.nan)
+           for name in order}
+    for i, row in rows.items():
+        for name in order:
+            out[name][i] = row.get(name, math.nan)
+    exact = exact.copy()
+    exact[list(rows)] = True
+    return Columns(out, exact=exact, model="linear", method="closed-form", optional=True)
+
+
+def _one_row(row: dict) -> dict | None:
+    """One row through :func:`dyncalc.physics.forced.forced_response` on SI floats (the rows
+    the column kernel leaves: outside its domain, a rounding it could not certify, a form it
+    does not take); ``None`` where the one-off would refuse, warn or give a value that is not
+    finite and non-zero."""
+    from ..errors import PhysicsError
+    from ..physics.forced import forced_response as physics
+
+    if not all(math.isfinite(v) and (v > 0.0 or name in _SIGNED) for name, v in row.items()):
+        return None
+    try:
+        out = physics(**row)
+    except (InputError, PhysicsError, ArithmeticError, ValueError):
+        return None
+    values = out.values
+    if out.warnings or not all(isinstance(v, float) and math.isfinite(v) and v != 0.0
+                               for v in values.values()):
+        return None
+    return values
 
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
