@@ -41,6 +41,7 @@ LIMITS = {
     "damping-ratio": [str(LIMIT / "damping_ratio.py")],
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],
+    "forced-response": [str(LIMIT / "forced_response.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 
