@@ -135,8 +135,8 @@ def main() -> None:
                              f"{wall:.2f} | {floor:.2f} | {wall / floor:.2f}x | "
                              f"{memory:.0f} | {'yes' if ok else 'no'} |")
                 print(lines[-1], flush=True)
-            big.unlink()
-            path.unlink()
+            big.unlink(missing_ok=True)   # the same file when --rows = --memory-rows
+            path.unlink(missing_ok=True)
     load = ", ".join(f"{x:.2f}" for x in os.getloadavg())
     footer = f"Load average {load} at the end. Goal: ratio <= {GOAL_RATIO}x, memory <= {GOAL_MB} MB."
     print(footer)
