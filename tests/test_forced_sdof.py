@@ -341,3 +341,21 @@ def test_refusals(args, message):
     assert len(lines) == 1 and lines[0].startswith("Error: ")
     if message is not None:
         assert lines[0] == f"Error: {message}"
+
+
+def test_total_response_of_an_angle_from_its_initial_conditions(tmp_path):
+    """theta(t) from theta(0) = 2 deg, theta'(0) = -0.1 rad/s (transient plus steady state)
+    against solve_ivp of m l^2 theta'' + c theta' + m g l theta = T0 cos(Omega t); the plot's
+    time panel is drawn for it."""
+    from scipy.integrate import solve_ivp
+
+    l, m, c, T0, W, t = 1.0, 2.0, 0.3, 0.5, 3.0, 4.0
+    plot = tmp_path / "pendulum.png"
+    got = results("--scene", "pendulum", "l=1m", "m=2kg", "--c", "0.3 N*m*s/rad", "--F0",
+                  "0.5 N*m", "--Omega", "3rad/s", "--x0", "2deg", "--v0", "-0.1rad/s",
+                  "--t", "4s", "--plot", str(plot))
+    sol = solve_ivp(lambda s, y: [y[1], (T0 * math.cos(W * s) - c * y[1] - m * G * l * y[0])
+                                  / (m * l * l)], (0.0, t), [math.radians(2.0), -0.1],
+                    method="DOP853", rtol=1e-12, atol=1e-15)
+    assert got["x"] == pytest.approx(sol.y[0][-1], rel=1e-9)
+    assert plot.stat().st_size > 10_000
