@@ -69,12 +69,20 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
         _check_driven(chosen, options, texts)
         for name in options:
             if options[name] is not None and chosen.param(name) is None:
-                raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: the "
-                                 f"scene has its own forcing; its parameters are "
-                                 f"{chosen.signature()}")
+                why = ("it is driven by --F0 on its coordinate" if _is_driven(chosen)
+                       else "the scene has its own forcing")
+                raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: "
+                                 f"{why}; its parameters are {chosen.signature()}")
         return ForcedInputs(chosen, texts, labels, rtol, strict)
     _check_forms(texts, labels)
     return ForcedInputs(OSCILLATOR, texts, labels, rtol, strict)
+
+
+def _is_driven(chosen) -> bool:
+    """Whether ``chosen`` is a catalog scene driven on its coordinate (dyncalc.scenes.sdof)."""
+    from ..scenes.sdof import COORDINATES
+
+    return chosen.name in COORDINATES and chosen.param("F0") is not None
 
 
 def _check_driven(chosen, options: dict, texts: dict) -> None:
