@@ -39,6 +39,7 @@ LIMITS = {
     "damping-ratio": [str(LIMIT / "damping_ratio.py")],
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],
+    "forced-response": [str(LIMIT / "forced_response.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 
@@ -127,8 +128,8 @@ def table(args) -> tuple[list[str], str]:
                              f"{wall:.2f} | {floor:.2f} | {wall / floor:.2f}x | "
                              f"{memory:.0f} | {'yes' if ok else 'no'} |")
                 print(lines[-1], flush=True)
-            big.unlink()
-            path.unlink()
+            big.unlink(missing_ok=True)  # the same file when --rows = --memory-rows
+            path.unlink(missing_ok=True)
     footer = (f"Load average {load()} at the end. Goal: ratio <= {GOAL_RATIO}x, "
               f"memory <= {GOAL_MB} MB.")
     return lines, footer

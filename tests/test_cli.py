@@ -380,7 +380,7 @@ def test_scenes_lists_the_catalog():
     assert len(lines) == 3 * len(catalog())
     assert lines[0].split()[0] == "mass-spring"
     assert lines[1].strip() == "k [force]/[length], m [mass], zeta dimensionless?"
-    assert lines[2].strip() == "examples: E5.11, E5.19, E5.26; commands: natural-frequency"
+    assert lines[2].strip() == "examples: E5.11, E5.19, E5.26; commands: natural-frequency, forced-response"
 
 
 def test_scenes_reads_the_registry(monkeypatch):

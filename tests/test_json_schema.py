@@ -18,6 +18,7 @@ import pytest
 
 from dyncalc.result import encode
 from dyncalc.scenes import catalog
+from dyncalc.scenes.sdof import COORDINATES, forced_example
 from dyncalc.units import registry
 from helpers import invoke
 
@@ -59,7 +60,9 @@ UNCERTAIN_FORMS = {
     "inertia-density": 'inertia "plate(rho=7.8 kg/m^2 ± 1%, a=40cm, b=20cm)"',
 }
 CASES = {**{f"scene-{name}": scene.example.removeprefix("dyncalc ")
-            for name, scene in catalog().items()}, **COMMANDS}
+            for name, scene in catalog().items()},
+         **{f"driven-{name}": forced_example(name).removeprefix("dyncalc ")
+            for name in COORDINATES}, **COMMANDS}
 #: Cases whose quantities are all vectors or peak lists (which take no uncertainty) get a
 #: scalar option for the uncertain form.
 SCALAR_ADDED = {"coriolis-vector": ["--mass", "2kg"], "damping-amplitudes": ["--omega", "25rad/s"]}

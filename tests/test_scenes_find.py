@@ -40,7 +40,7 @@ def test_scenes_id_shows_the_scene_that_reproduces_it():
 def test_scenes_id_of_several_scenes_lists_them():
     blocks = _listing("E3.44")
     assert [b[0].split()[0] for b in blocks] == ["physical-pendulum", "angled-member"]
-    assert blocks[0][2].strip() == "examples: E3.44, E5.15; commands: natural-frequency"
+    assert blocks[0][2].strip() == "examples: E3.44, E5.15; commands: natural-frequency, forced-response"
 
 
 def test_scenes_unknown_id_is_refused():
@@ -91,10 +91,10 @@ def test_the_list_shows_examples_and_commands():
     blocks = _listing()
     assert len(blocks) == len(catalog())
     shown = {b[0].split()[0]: b[2].strip() for b in blocks}
-    assert shown["mass-spring"] == "examples: E5.11, E5.19, E5.26; commands: natural-frequency"
-    assert shown["torsional"] == "examples: none; commands: natural-frequency"
+    assert shown["mass-spring"] == "examples: E5.11, E5.19, E5.26; commands: natural-frequency, forced-response"
+    assert shown["torsional"] == "examples: none; commands: natural-frequency, forced-response"
     assert shown["rod-in-fluid"] == (
-        "examples: E5.14; commands: natural-frequency, damping-ratio")
+        "examples: E5.14; commands: natural-frequency, damping-ratio, forced-response")
     for scene in catalog().values():  # the command of its example is among them
         assert scene.example.split()[1] in shown[scene.name].rpartition("commands: ")[2]
 

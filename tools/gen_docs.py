@@ -292,6 +292,19 @@ def _refused_scene(scene, error) -> list[str]:
             "```sh", scene.example, "```", "", f"says: {_code('Error: ' + str(error))}"]
 
 
+def _driven(scene) -> list[str]:
+    """How ``forced-response --scene`` drives a single-degree-of-freedom scene."""
+    from dyncalc.scenes.sdof import COORDINATES, forced_example
+
+    coordinate = COORDINATES.get(scene.name)
+    if coordinate is None:
+        return []
+    added = (f" It takes the mass {_code('m')} ({coordinate.mass}) besides the parameters "
+             "above." if coordinate.mass else "")
+    return ["", f"**Driven** (`forced-response`): {_sentence(_cell(coordinate.sentence()))}"
+            f"{added}", "", "```sh", forced_example(scene.name), "```"]
+
+
 def _scene(scene) -> list[str]:
     from dyncalc.errors import PhysicsError
 
@@ -308,7 +321,7 @@ def _scene(scene) -> list[str]:
             *_rules(scene), "",
             "**Results** (those of the example command, and those a `zeta` adds; other "
             "inputs may give others):", "", *_results(result, added), "",
-            *_example(scene, result)]
+            *_example(scene, result), *_driven(scene)]
 
 
 def render_catalog(scenes) -> str:

@@ -32,7 +32,8 @@ from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["rolling_disk_spring", "rolling_in_track", "drum_block_spring", "board_on_drums",
            "clock_pendulum", "pulley_block_spring", "disk_torsion_offset_mass",
-           "wheel_on_moving_beam", "angled_member", "ANGLED_MEMBER_FACTOR"]
+           "wheel_on_moving_beam", "angled_member", "ANGLED_MEMBER_FACTOR", "rolling_inertia",
+           "drum_block_inertia", "pulley_block_inertia", "wheel_beam_inertia"]
 
 #: ``sqrt(sqrt(65) / 14)``, correctly rounded (mpmath: 0.758864647647982349822...): the
 #: angled member's ``omega / sqrt(g / l)``.
@@ -59,6 +60,37 @@ def _outcome(omega_squared: Wide, **extra) -> Outcome:
         for name, (value, unit) in extra.items():
             values[name] = Q_(float(value), unit)
     return Outcome(values)
+
+
+# The effective masses of the translating scenes: the kinetic energy is ``m_eff x'^2 / 2`` in
+# the scene's coordinate. The frequencies below divide the stiffness by them, and
+# forced-response drives the same coordinate with them (dyncalc.physics.sdof): one source.
+# Each works on Wide numbers and on WideArray columns alike.
+
+def rolling_inertia(mass, kappa):
+    """``(1 + kappa) m``, a body rolling without slipping, its centre's displacement the
+    coordinate (translation plus rotation at ``x'/r``)."""
+    return mass + kappa * mass
+
+
+def drum_block_inertia(m, M):
+    """``m + M/2``: the block's displacement the coordinate, the drum (a disk) turning at
+    ``x'/R``."""
+    return (M + 2.0 * m) * 0.5
+
+
+def pulley_block_inertia(m, M):
+    """``4 m + 3 M/2``: the pulley centre's displacement ``x`` the coordinate, the block
+    moving ``2x``, the pulley (a disk) rolling on its fixed strand."""
+    return 4.0 * m + 1.5 * M
+
+
+def wheel_beam_inertia(m, M, kappa):
+    """``m (kappa m + M + kappa M)/(kappa m + M)``: the wheel centre's displacement the
+    coordinate, the free beam's motion eliminated by its momentum balance
+    ``M X'' = kappa m (x'' - X'')``."""
+    coupled = kappa * m + M
+    return m * (coupled + kappa * M) / coupled
 
 
 def _kappa_allowed(kappa):
@@ -113,7 +145,7 @@ def rolling_disk_spring(k, m, kappa: float = 0.5) -> Outcome:
     """
     kappa = _check_kappa(kappa)
     mass = _si(m, "kg")
-    return _outcome(_si(k, "N/m") / (mass + kappa * mass))
+    return _outcome(_si(k, "N/m") / rolling_inertia(mass, kappa))
 
 
 @column_kernel(rolling_disk_spring)
@@ -121,7 +153,7 @@ def _rolling_disk_spring_columns(k, m, kappa=0.5) -> Columns:
     """:func:`rolling_disk_spring` on columns: ``k`` in N/m, ``m`` in kg, ``kappa`` an array;
     the one-off's :class:`Wide` steps on :class:`WideArray` (bit for bit)."""
     mass = WideArray(m)
-    return _columns(WideArray(k) / (mass + kappa * mass), _kappa_allowed(kappa))
+    return _columns(WideArray(k) / rolling_inertia(mass, kappa), _kappa_allowed(kappa))
 
 
 @check_units(R=LENGTH, r=LENGTH, g=ACCELERATION)
@@ -256,13 +288,13 @@ def drum_block_spring(k, m, M) -> Outcome:
     >>> round(out.values["omega"].magnitude, 12)  # sqrt(4000 / 18) rad/s
     14.907119849999
     """
-    return _outcome(2.0 * _si(k, "N/m") / (_si(M, "kg") + 2.0 * _si(m, "kg")))
+    return _outcome(_si(k, "N/m") / drum_block_inertia(_si(m, "kg"), _si(M, "kg")))
 
 
 @column_kernel(drum_block_spring)
 def _drum_block_spring_columns(k, m, M) -> Columns:
     """:func:`drum_block_spring` on columns: ``k`` in N/m, ``m``, ``M`` in kg (bit for bit)."""
-    return _columns(2.0 * WideArray(k) / (WideArray(M) + 2.0 * WideArray(m)))
+    return _columns(WideArray(k) / drum_block_inertia(WideArray(m), WideArray(M)))
 
 
 @check_units(a=LENGTH, g=ACCELERATION)
@@ -422,13 +454,13 @@ def pulley_block_spring(k, m, M) -> Outcome:
     >>> round(out.values["omega"].magnitude, 12)  # sqrt(1000 / 18) rad/s
     7.453559924999
     """
-    return _outcome(_si(k, "N/m") / (4.0 * _si(m, "kg") + 1.5 * _si(M, "kg")))
+    return _outcome(_si(k, "N/m") / pulley_block_inertia(_si(m, "kg"), _si(M, "kg")))
 
 
 @column_kernel(pulley_block_spring)
 def _pulley_block_spring_columns(k, m, M) -> Columns:
     """:func:`pulley_block_spring` on columns: ``k`` in N/m, ``m``, ``M`` in kg."""
-    return _columns(WideArray(k) / (4.0 * WideArray(m) + 1.5 * WideArray(M)))
+    return _columns(WideArray(k) / pulley_block_inertia(WideArray(m), WideArray(M)))
 
 
 @check_units(M=MASS, R=LENGTH, m=MASS, r=LENGTH, a=LENGTH, kt=TORSIONAL_STIFFNESS, g=ACCELERATION)

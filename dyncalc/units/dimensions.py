@@ -11,6 +11,7 @@ __all__ = [
     "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
     "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS", "DECAY_RATE",
     "UNBALANCE", "COUPLING_MASS", "COUPLING_STIFFNESS", "TORSIONAL_DAMPING", "COUPLING_DAMPING",
+    "TORQUE",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "angle_power", "angle_exponent",
 ]
 
@@ -66,6 +67,7 @@ TORSIONAL_DAMPING = Dim("torsional damping coefficient", "[force]*[length]*[time
                         "[force]*[length]*[time]", "N*m*s/rad", angles=(-1, 0))
 COUPLING_DAMPING = Dim("translation-rotation damping coupling", "[force]*[time]/[angle]",
                        "[force]*[time]", "N*s/rad", angles=(-1, 0))
+TORQUE = Dim("torque", "[force]*[length]", "[force]*[length]", "N*m")
 MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
 DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
               "N*s/m")
