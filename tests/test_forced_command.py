@@ -64,7 +64,7 @@ BASE = ("--k", "40kN/m", "--m", "40kg")
      "frequency, or a time t for the growing response"),
     (("--scene", "coupled-blocks", "m1=1kg", "m2=1kg", "k1=1N/m", "k2=1N/m", "k3=1N/m"),
      "forced-response --scene takes a scene with one degree of freedom; coupled-blocks has "
-     "more than one (natural-frequency gives its modes), so it has no single effective mass "
+     "more than one (modes gives its frequencies and mode shapes), so it has no single effective mass "
      "and stiffness to drive"),
     (("--scene", "quarter-car", "k=40kN/m", "m=400kg", "L=10m", "U0=2cm", "v0=20m/s", "--F0",
       "1N"),

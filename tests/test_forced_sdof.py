@@ -158,7 +158,7 @@ def test_every_one_degree_scene_is_driven_or_refused_with_its_reason():
     or one with several degrees of freedom (refused)."""
     forced = set(forced_scene_names())
     for name, scene in catalog().items():
-        several = name == "coupled-blocks"
+        several = scene.matrices is not None  # served by modes: several degrees of freedom
         assert (name in forced) is not several, name
         if name in forced and name not in DRIVEN and \
                 scene.compute.__module__ != "dyncalc.physics.forced_scenes":
@@ -311,7 +311,7 @@ def test_unit_invariance_rotation(typed):
     (("--scene", "coupled-blocks", "m1=1kg", "m2=1kg", "k1=1N/m", "k2=1N/m", "k3=1N/m",
       "--F0", "1N", "--Omega", "1rad/s"),
      "forced-response --scene takes a scene with one degree of freedom; coupled-blocks has "
-     "more than one (natural-frequency gives its modes), so it has no single effective mass "
+     "more than one (modes gives its frequencies and mode shapes), so it has no single effective mass "
      "and stiffness to drive"),
     (("--scene", "rod-in-fluid", "m=1kg", "l=1m", "beta=1 N*s/m^2", "--zeta", "0.1", "--F0",
       "1N*m", "--Omega", "1rad/s"),

@@ -205,7 +205,7 @@ def forced_scene(name: str) -> Scene:
     from ..errors import InputError
 
     raise InputError(f"forced-response --scene takes a scene with one degree of freedom; "
-                     f"{scene.name} has more than one (natural-frequency gives its modes), so "
+                     f"{scene.name} has more than one (modes gives its frequencies and mode shapes), so "
                      "it has no single effective mass and stiffness to drive")
 
 
