@@ -31,6 +31,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 BIN = Path(sys.executable).parent
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from _timing import child_env as shared_env, spawn  # noqa: E402
 
 
 def dyncalc() -> list[str]:
@@ -39,10 +42,10 @@ def dyncalc() -> list[str]:
 
 
 def child_env(**extra) -> dict[str, str]:
-    env = dict(os.environ)
-    env.pop("PYTHONDONTWRITEBYTECODE", None)  # dyncalc's bytecode cached, as pint's and numpy's
-    env.pop(extra.pop("unset", ""), None)
-    env.update(extra)
+    """The children's environment (:func:`_timing.child_env`), ``unset=NAME`` removing one."""
+    unset = extra.pop("unset", "")
+    env = shared_env(**extra)
+    env.pop(unset, None)
     return env
 
 
@@ -68,16 +71,8 @@ def write_rows(path: Path, n: int, *, units: bool = False, seed: int = 8) -> Non
 
 def run(argv: list[str], env: dict[str, str]) -> tuple[float, int]:
     """(wall seconds, peak resident memory of the child in MB)."""
-    start = time.perf_counter()
-    pid = os.posix_spawn(argv[0], argv, env, file_actions=[
-        (os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0),
-        (os.POSIX_SPAWN_OPEN, 2, os.devnull, os.O_WRONLY, 0)])
-    _pid, status, usage = os.wait4(pid, 0)
-    wall = time.perf_counter() - start
-    code = os.waitstatus_to_exitcode(status)
-    if code != 0:
-        raise SystemExit(f"{' '.join(argv)} exited {code}")
-    return wall, usage.ru_maxrss // 1024  # Linux: kilobytes
+    sample = spawn(argv, env)
+    return sample.wall, int(sample.peak_mb)
 
 
 #: ``--baseline``: (the folder holding the other dyncalc package, its name in the table)

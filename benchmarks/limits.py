@@ -18,17 +18,15 @@ from __future__ import annotations
 
 import argparse
 import hashlib
-import os
-import platform
 import statistics
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
+from _timing import load, machine, spawn  # noqa: E402
 from batch_commands import CASES, dyncalc, write_file  # noqa: E402
 
 LIMIT = HERE / "limit"
@@ -41,6 +39,7 @@ LIMITS = {
     "damping-ratio": [str(LIMIT / "damping_ratio.py")],
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],
+    "forced-response": [str(LIMIT / "forced_response.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 
@@ -59,20 +58,6 @@ def commands(argv, limit, path: Path, as_json: bool) -> tuple[list[str], list[st
             [sys.executable, *limit[:1], *limit[1:], str(path), *flag])
 
 
-def run(argv: list[str], stdout: str = os.devnull) -> tuple[float, float]:
-    """(wall seconds, peak resident memory in MB) of one child."""
-    start = time.perf_counter()
-    pid = os.posix_spawn(argv[0], argv, dict(os.environ), file_actions=[
-        (os.POSIX_SPAWN_OPEN, 1, stdout, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644),
-        (os.POSIX_SPAWN_OPEN, 2, os.devnull, os.O_WRONLY, 0)])
-    _pid, status, usage = os.wait4(pid, 0)
-    wall = time.perf_counter() - start
-    code = os.waitstatus_to_exitcode(status)
-    if code != 0:
-        raise SystemExit(f"{' '.join(argv)} exited {code}")
-    return wall, usage.ru_maxrss / 1024  # Linux: kilobytes
-
-
 def digest(path: str) -> str:
     sha = hashlib.sha256()
     with open(path, "rb") as f:
@@ -82,37 +67,46 @@ def digest(path: str) -> str:
 
 
 def same_output(mine: list[str], theirs: list[str], folder: Path) -> bool:
-    run(mine, str(folder / "mine.out"))
-    run(theirs, str(folder / "theirs.out"))
+    spawn(mine, stdout=str(folder / "mine.out"))
+    spawn(theirs, stdout=str(folder / "theirs.out"))
     return digest(str(folder / "mine.out")) == digest(str(folder / "theirs.out"))
 
 
+def sizes_text(rows: int, repeat: int, memory_rows: int) -> str:
+    return (f"{rows:,} rows timed (median of {repeat} interleaved runs, start-up included), "
+            f"{memory_rows:,} rows for peak memory")
+
+
 def header_text(args) -> str:
-    load = ", ".join(f"{x:.2f}" for x in os.getloadavg())
-    return (f"Python {platform.python_version()}, {os.cpu_count()} CPUs, {platform.machine()} "
-            f"({platform.processor() or platform.platform()}); "
-            f"{time.strftime('%Y-%m-%d %H:%M')}; load average {load} at the start; "
-            f"command: `python benchmarks/limits.py {' '.join(sys.argv[1:])}`; "
-            f"{args.rows:,} rows timed (median of {args.repeat} interleaved runs, start-up "
-            f"included), {args.memory_rows:,} rows for peak memory.")
+    return (f"{machine()}; command: `python benchmarks/limits.py {' '.join(sys.argv[1:])}`; "
+            f"{sizes_text(args.rows, args.repeat, args.memory_rows)}.")
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def parser(description: str = __doc__.split("\n")[0]) -> argparse.ArgumentParser:
+    """The options of the batch part (benchmarks/done_when.py adds its own to these)."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--rows", type=int, default=1_000_000)
     parser.add_argument("--memory-rows", type=int, default=10_000_000)
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--quick", action="store_true", help="10^5 rows timed, 10^6 for memory")
     parser.add_argument("--only", help="the cases whose label holds this text")
     parser.add_argument("--out", type=Path)
-    args = parser.parse_args()
+    return parser
+
+
+def settle(args) -> None:
+    """``--quick``: the small sizes."""
     if args.quick:
         args.rows, args.memory_rows, args.repeat = 100_000, 1_000_000, 3
-    top = header_text(args)
-    print(top, flush=True)
+
+
+def table(args) -> tuple[list[str], str]:
+    """(the Markdown table's lines, printed as they come, the footer) of every case: dyncalc
+    and its limit script at ``args.rows`` rows, peak memory at ``args.memory_rows``."""
     lines = ["| command | output | dyncalc (s) | limit (s) | ratio | peak memory at "
              f"{args.memory_rows:.0e} rows (MB) | goal met |",
              "| --- | --- | ---: | ---: | ---: | ---: | --- |"]
+    print("\n".join(lines), flush=True)
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         for label, argv, header, make, limit in cases(args.only):
@@ -125,23 +119,36 @@ def main() -> None:
                                      f"dyncalc's: {' '.join(theirs)}")
                 walls, limits = [], []
                 for _ in range(args.repeat):  # interleaved: load drifts hit both alike
-                    walls.append(run(mine)[0])
-                    limits.append(run(theirs)[0])
+                    walls.append(spawn(mine).wall)
+                    limits.append(spawn(theirs).wall)
                 wall, floor = statistics.median(walls), statistics.median(limits)
-                memory = run(commands(argv, limit, big, as_json)[0])[1]
+                memory = spawn(commands(argv, limit, big, as_json)[0]).peak_mb
                 ok = wall / floor <= GOAL_RATIO and memory <= GOAL_MB
                 lines.append(f"| {label} | {'JSON lines' if as_json else 'CSV'} | "
                              f"{wall:.2f} | {floor:.2f} | {wall / floor:.2f}x | "
                              f"{memory:.0f} | {'yes' if ok else 'no'} |")
                 print(lines[-1], flush=True)
-            big.unlink()
-            path.unlink()
-    load = ", ".join(f"{x:.2f}" for x in os.getloadavg())
-    footer = f"Load average {load} at the end. Goal: ratio <= {GOAL_RATIO}x, memory <= {GOAL_MB} MB."
+            big.unlink(missing_ok=True)  # the same file when --rows = --memory-rows
+            path.unlink(missing_ok=True)
+    footer = (f"Load average {load()} at the end. Goal: ratio <= {GOAL_RATIO}x, "
+              f"memory <= {GOAL_MB} MB.")
+    return lines, footer
+
+
+def write(path: Path, top: str, lines: list[str], footer: str) -> None:
+    path.write_text("# Batch mode against the limit scripts\n\n" + top + "\n\n"
+                    + "\n".join(lines) + "\n\n" + footer + "\n")
+
+
+def main() -> None:
+    args = parser().parse_args()
+    settle(args)
+    top = header_text(args)
+    print(top, flush=True)
+    lines, footer = table(args)
     print(footer)
     if args.out:
-        args.out.write_text("# Batch mode against the limit scripts\n\n" + top + "\n\n"
-                            + "\n".join(lines) + "\n\n" + footer + "\n")
+        write(args.out, top, lines, footer)
 
 
 if __name__ == "__main__":

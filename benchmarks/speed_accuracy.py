@@ -2,18 +2,24 @@
 
 For each command with a choice of method (the pendulum: small-angle, series, elliptic, ode;
 the half-cylinder shell: linear, quadrature, ode; rolling onset: closed-form, ode; the damping
-fit: log-linear, nonlinear) and each tolerance 1e-3, 1e-6, 1e-9, 1e-12, this script
+fit: log-linear, nonlinear; the frame with a brace damper: exact, small-damping) and each
+tolerance 1e-3, 1e-6, 1e-9, 1e-12, and for forced-response's closed form (its only method,
+at extreme inputs: zeta = 1e-9 with eta = 1 +- 1e-12), this script
 
 * times the library function the command calls, in process: the median over repeated rounds of
   the mean time per call over a fixed set of inputs (timeit-style; scipy is imported before the
   clock starts, so the ODE's import cost is not in it);
+* times the one-off: the command line ``dyncalc ... --method M --rtol R --value NAME`` run as
+  a process (start-up, imports and all), the median wall time of a few runs, the rows' runs
+  interleaved (:data:`CLI` holds the command lines);
 * times the vectorised path over 10^5 inputs where the program has one (numpy kernels of
   dyncalc.physics.numerics; for the damping fit an input is a peak of one 10^5-peak record),
   and marks "n/a" where it has none;
 * measures the achieved error: the largest relative error over the inputs against a reference
   computed with mpmath at 30 digits from the same float inputs (the elliptic integral by the
   AGM, the shell's energy integral by mpmath.quad, the rolling closed form, the exact
-  least-squares minimisers of the fits).
+  least-squares minimisers of the fits, the frame's peak, the forced response's X, phi and
+  TR with ``1 - eta^2`` formed exactly at 40 digits).
 
 It writes ``benchmarks/results/speed_accuracy.md`` (the table, and the cost of the pendulum's
 kernels that decides which model ``auto`` takes) and ``benchmarks/results/speed_accuracy.png``
@@ -22,11 +28,12 @@ kernels that decides which model ``auto`` takes) and ``benchmarks/results/speed_
     python benchmarks/speed_accuracy.py [--quick]
 
 from the project root with the ``bench`` extra installed (``pip install ".[bench]"``: mpmath,
-matplotlib). A full run takes about a minute or two; ``--quick`` fewer repeats.
+matplotlib). A full run takes about three minutes; ``--quick`` fewer repeats and runs.
 """
 from __future__ import annotations
 
 import argparse
+import importlib
 import math
 import random
 import statistics
@@ -38,11 +45,15 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))   # the checkout's dyncalc, installed or not
+sys.path.insert(0, str(ROOT / "benchmarks"))
 
 import mpmath  # noqa: E402
 
 from dyncalc.physics import numerics  # noqa: E402
+from _timing import child_env, machine, spawn  # noqa: E402
+from dyncalc.physics.damping import frame_brace_damper  # noqa: E402
 from dyncalc.physics.decay_fit import fit_decrement  # noqa: E402
+from dyncalc.physics.forced import forced_response  # noqa: E402
 from dyncalc.physics.nonlinear import half_cylinder_shell  # noqa: E402
 from dyncalc.physics.oscillators import pendulum  # noqa: E402
 from dyncalc.physics.rolling import onset_closed_form, onset_ode  # noqa: E402
@@ -239,7 +250,7 @@ def bench_rolling(rounds: int) -> list[dict]:
     rows = []
     cases = rolling_cases()
     refs = [rolling_reference(c) for c in cases]
-    import scipy.integrate  # noqa: F401  (its import is not the method's cost)
+    importlib.import_module("scipy.integrate")  # its import is not the method's cost
 
     def closed(case, rtol):
         o = onset_closed_form(*case)
@@ -313,11 +324,152 @@ def bench_fit(rounds: int) -> list[dict]:
     return rows
 
 
+# --- the frame with a brace damper (E5.21) --------------------------------------------------------
+
+#: (m kg, k N/m, b0 m/s^2); the dashpot d (N s/m) set for each zeta of FRAME_ZETAS
+FRAME = (500.0, 200e3, 1.0)
+FRAME_ZETAS = (1e-4, 1e-3, 0.01, 0.0707, 0.2, 0.5, 0.7, 0.9)
+
+
+def frame_cases() -> list[float]:
+    """The dashpot coefficients d = 2 zeta sqrt(2 k m) of FRAME_ZETAS."""
+    m, k, _b0 = FRAME
+    return [2.0 * z * math.sqrt(2.0 * k * m) for z in FRAME_ZETAS]
+
+
+def frame_reference(d: float):
+    """y_max from the float inputs: y0 / (2 zeta sqrt(1 - zeta^2)) below zeta = 1/sqrt 2, else
+    y0, with zeta = (d/2) sqrt(1/(2 k m)) and y0 = 2 m b0 / k."""
+    m, k, b0 = (mpmath.mpf(x) for x in FRAME)
+    zeta = mpmath.mpf(d) / 2 * mpmath.sqrt(1 / (2 * k * m))
+    y0 = 2 * m * b0 / k
+    return y0 / (2 * zeta * mpmath.sqrt(1 - zeta ** 2)) if zeta ** 2 < 0.5 else y0
+
+
+def bench_frame(rounds: int) -> list[dict]:
+    rows = []
+    cases = frame_cases()
+    refs = [frame_reference(d) for d in cases]
+    m, k, b0 = Q_(FRAME[0], "kg"), Q_(FRAME[1], "N/m"), Q_(FRAME[2], "m/s^2")
+    for method in ("exact", "small-damping"):
+        for rtol in RTOLS:
+            def call(d, method=method, rtol=rtol):
+                return frame_brace_damper(m, k, Q_(d, "N*s/m"), b0, method=method, rtol=rtol)
+            error = max(relative(call(d).values["y_max"].magnitude, r)
+                        for d, r in zip(cases, refs))
+            seconds = per_call(call, cases, rounds)
+            rows.append(dict(command="natural-frequency (frame-brace-damper)", method=method,
+                             rtol=rtol, seconds=seconds, vector=None, error=error,
+                             vector_error=None))
+            print(f"  frame {method:13} {rtol:g}: {1e6 * seconds:9.1f} us  {error:.2g}",
+                  flush=True)
+    return rows
+
+
+# --- forced-response (issue 18) --------------------------------------------------------------------
+
+#: k (N/m), m (kg): omega = 100 rad/s; the excitation at eta = Omega/omega of FORCED_ETAS,
+#: each with every damping ratio of FORCED_ZETAS (resonance with zeta = 1e-9 included)
+FORCED_KM = (1e4, 1.0)
+FORCED_ETAS = (1.0 - 1e-12, 1.0, 1.0 + 1e-12, 1.0 - 1e-6, 0.5, 2.0, 1e3, 1e-3)
+FORCED_ZETAS = (1e-9, 1e-6, 0.05, 0.7, 2.0)
+FORCED_RESULTS = ("X", "phi", "TR")
+
+
+def forced_cases() -> list[tuple[float, float]]:
+    """(Omega in rad/s, zeta): the float Omega nearest eta omega."""
+    return [(eta * 100.0, zeta) for eta in FORCED_ETAS for zeta in FORCED_ZETAS]
+
+
+def forced_reference(Omega: float, zeta: float) -> dict:
+    """X (F0 = 1 N), phi and TR in mpmath from the float inputs, eta^2 = Omega^2 m / k
+    exactly (40 digits: the gap 1 - eta^2 of 1e-12 keeps 28 of them)."""
+    with mpmath.workdps(40):
+        k, m = (mpmath.mpf(x) for x in FORCED_KM)
+        eta2 = mpmath.mpf(Omega) ** 2 * m / k
+        gap, two_ze = 1 - eta2, 2 * mpmath.mpf(zeta) * mpmath.sqrt(eta2)
+        root = mpmath.sqrt(gap ** 2 + two_ze ** 2)
+        return {"X": 1 / (k * root), "phi": mpmath.atan2(two_ze, gap),
+                "TR": mpmath.sqrt(1 + two_ze ** 2) / root}
+
+
+def bench_forced(rounds: int) -> list[dict]:
+    """One row: the closed form (the command's only method) over every case, near resonance
+    with zeta = 1e-9 and eta = 1 +- 1e-12 included."""
+    cases = forced_cases()
+    refs = [forced_reference(*case) for case in cases]
+    k, m, F0 = Q_(FORCED_KM[0], "N/m"), Q_(FORCED_KM[1], "kg"), Q_(1.0, "N")
+
+    def call(case):
+        return forced_response(k=k, m=m, zeta=case[1], F0=F0, Omega=Q_(case[0], "rad/s"))
+    error = max(relative(got[name], ref[name]) for case, ref in zip(cases, refs)
+                for got in [call(case).values] for name in FORCED_RESULTS)
+    seconds = per_call(call, cases, rounds)
+    print(f"  forced closed-form: {1e6 * seconds:9.1f} us  {error:.2g}", flush=True)
+    return [dict(command="forced-response", method="closed-form", rtol=None, seconds=seconds,
+                 vector=None, error=error, vector_error=None)]
+
+
+# --- the one-off: the command line, a process per call --------------------------------------------
+
+AMPLITUDES = "48.2, 39.1, 31.9, 25.8, 21.1, 17.2 mV"
+#: command label -> the arguments after ``dyncalc`` of one representative one-off, given the
+#: method and the tolerance
+CLI = {
+    "natural-frequency (pendulum)": lambda method, rtol: [
+        "natural-frequency", "--length", "1m", "--amplitude", "30deg", "--method", method,
+        "--rtol", rtol, "--value", "T"],
+    "natural-frequency (half-cylinder-shell)": lambda method, rtol: [
+        "natural-frequency", "--scene", "half-cylinder-shell", "r=0.5m", "--amplitude",
+        "30deg", "--method", method, "--rtol", rtol, "--value", "T"],
+    "rolling-onset": lambda method, rtol: [
+        "rolling-onset", "--v0", "5m/s", "--mu", "0.2", "--method", method, "--rtol", rtol,
+        "--value", "t_roll"],
+    "damping-ratio (--amplitudes)": lambda method, rtol: [
+        "damping-ratio", "--amplitudes", AMPLITUDES, "--method", method, "--rtol", rtol,
+        "--value", "zeta"],
+    "natural-frequency (frame-brace-damper)": lambda method, rtol: [
+        "natural-frequency", "--scene", "frame-brace-damper", "m=500kg", "k=200 kN/m",
+        "d=2 kN*s/m", "b0=1 m/s^2", "--method", method, "--rtol", rtol, "--value", "y_max"],
+    "forced-response": lambda method, rtol: [
+        "forced-response", "--k", "1e4 N/m", "--m", "1 kg", "--zeta", "1e-9", "--F0", "1 N",
+        "--Omega", "100.0000000001 rad/s", "--value", "X", "--value", "phi"],
+}
+
+
+def dyncalc() -> list[str]:
+    script = Path(sys.executable).parent / "dyncalc"
+    return [str(script)] if script.exists() else [sys.executable, "-m", "dyncalc"]
+
+
+def one_offs(rows: list[dict], runs: int) -> None:
+    """Each row's ``one_off``: the median wall time of ``runs`` processes of its command line
+    (after one unmeasured run), start-up included; the rows' runs interleaved round by round,
+    so that a drift of the machine's load hits them alike."""
+    env = child_env(NO_COLOR="1")
+    argvs = [[*dyncalc(), *CLI[r["command"]](r["method"], f"{r['rtol'] or 1e-9:g}")]
+             for r in rows]
+    times: list[list[float]] = [[] for _ in rows]
+    for argv in argvs:
+        spawn(argv, env)
+    for _ in range(runs):
+        for argv, samples in zip(argvs, times):
+            samples.append(spawn(argv, env).wall)
+    for row, samples in zip(rows, times):
+        row["one_off"] = statistics.median(samples)
+
+
 # --- output ------------------------------------------------------------------------------------
+
+def shell_word(word: str) -> str:
+    return f'"{word}"' if any(c in word for c in " *,") else word
+
 
 def time_text(seconds: float | None) -> str:
     if seconds is None:
         return "n/a"
+    if seconds >= 1.0:
+        return f"{seconds:.3g} s"
     if seconds >= 1e-3:
         return f"{1e3 * seconds:.3g} ms"
     if seconds >= 1e-6:
@@ -332,28 +484,38 @@ def error_text(row: dict) -> str:
     return text
 
 
-def write_table(rows: list[dict], kernels: list[str], elapsed: float) -> Path:
+def write_table(rows: list[dict], kernels: list[str], elapsed: float, header: str) -> Path:
     lines = [
         "# Speed against accuracy, every method of every command",
         "",
-        f"Written by `python benchmarks/speed_accuracy.py` ({elapsed:.0f} s; Python "
-        f"{sys.version.split()[0]}, numpy {np.__version__}). Time per call: the median over "
-        "repeated rounds of the library function the command calls, in process (scipy already "
-        "imported); vectorised: per input, over 10^5 inputs in one numpy call (for the fit, "
-        "per peak of one 10^5-peak record); n/a: the program has no vectorised path for it. "
-        "Error: the largest relative error over the inputs against mpmath at 30 digits from "
-        "the same float inputs (pendulum: 12 amplitudes from 5 to 150 deg; shell: 7 from 5 "
-        "to 85 deg; rolling: 10 bodies with and without spin, flat and sloped; fit: 5 noisy "
-        "records of 6 to 30 peaks, against each fit's exact least-squares minimiser).",
+        f"{header} ({elapsed:.0f} s; numpy {np.__version__}). Time per call, in process: the "
+        "median over repeated rounds of the library function the command calls (scipy "
+        "already imported). One-off: the wall time of the whole command line as a process, "
+        "start-up included (`dyncalc ... --method M --rtol R --value NAME`, one representative "
+        "input each, the column below; the median of the runs, the rows' runs interleaved). "
+        "Vectorised: per input, over 10^5 inputs in one numpy call (for the fit, per peak of "
+        "one 10^5-peak record); n/a: the program has no vectorised path for it. "
+        "Error: the largest relative error over the inputs against mpmath at 30 digits (40 "
+        "for forced-response) from the same float inputs (pendulum: 12 amplitudes from 5 to "
+        "150 deg; shell: 7 from 5 to 85 deg; rolling: 10 bodies with and without spin, flat "
+        "and sloped; fit: 5 noisy records of 6 to 30 peaks, against each fit's exact "
+        "least-squares minimiser; frame-brace-damper: y_max at zeta 1e-4 to 0.9; "
+        "forced-response: X, phi and TR at eta = 1 - 1e-12, 1, 1 + 1e-12, 1 - 1e-6, 0.5, 2, "
+        "1e3, 1e-3, each with zeta = 1e-9, 1e-6, 0.05, 0.7, 2; it has one method, and "
+        "`--rtol` does not change its model).",
         "",
-        "| command | method | rtol | time per call | vectorised, per input | achieved max rel "
-        "error |",
-        "| --- | --- | ---: | ---: | ---: | ---: |",
+        "| command | method | rtol | time per call | one-off (process) | vectorised, per input "
+        "| achieved max rel error |",
+        "| --- | --- | ---: | ---: | ---: | ---: | ---: |",
     ]
     for row in rows:
-        lines.append(f"| {row['command']} | {row['method']} | {row['rtol']:g} | "
-                     f"{time_text(row['seconds'])} | {time_text(row['vector'])} | "
-                     f"{error_text(row)} |")
+        rtol = "-" if row["rtol"] is None else f"{row['rtol']:g}"
+        lines.append(f"| {row['command']} | {row['method']} | {rtol} | "
+                     f"{time_text(row['seconds'])} | {time_text(row.get('one_off'))} | "
+                     f"{time_text(row['vector'])} | {error_text(row)} |")
+    lines += ["", "The one-off command lines:", ""]
+    lines += [f"* {command}: `dyncalc {' '.join(shell_word(w) for w in make('M', 'R'))}`"
+              for command, make in CLI.items()]
     lines += [
         "",
         "## The pendulum's kernels: what `auto` weighs",
@@ -379,7 +541,9 @@ def write_table(rows: list[dict], kernels: list[str], elapsed: float) -> Path:
 
 SHORT = {"natural-frequency (pendulum)": "pendulum",
          "natural-frequency (half-cylinder-shell)": "half-cylinder shell",
-         "rolling-onset": "rolling-onset", "damping-ratio (--amplitudes)": "damping fit"}
+         "rolling-onset": "rolling-onset", "damping-ratio (--amplitudes)": "damping fit",
+         "natural-frequency (frame-brace-damper)": "frame-brace-damper",
+         "forced-response": "forced-response"}
 
 
 def write_plot(rows: list[dict]) -> Path:
@@ -391,7 +555,9 @@ def write_plot(rows: list[dict]) -> Path:
     fig, ax = plt.subplots(figsize=(9.5, 6.5))
     colours = {"natural-frequency (pendulum)": "tab:blue",
                "natural-frequency (half-cylinder-shell)": "tab:green",
-               "rolling-onset": "tab:red", "damping-ratio (--amplitudes)": "tab:purple"}
+               "rolling-onset": "tab:red", "damping-ratio (--amplitudes)": "tab:purple",
+               "natural-frequency (frame-brace-damper)": "tab:orange",
+               "forced-response": "tab:brown"}
     markers = ["o", "s", "^", "D"]
     seen: dict[str, int] = {}
     for (command, method) in dict.fromkeys((r["command"], r["method"]) for r in rows):
@@ -425,17 +591,25 @@ def write_plot(rows: list[dict]) -> Path:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats (a rough table)")
-    rounds = 3 if parser.parse_args().quick else 7
+    quick = parser.parse_args().quick
+    rounds = 3 if quick else 7
+    header = (f"{machine()}; command: `python benchmarks/speed_accuracy.py"
+              f"{' --quick' if quick else ''}`")
     start = time.perf_counter()
     rows = []
+    print(header)
     print("timing (median time per call, achieved max relative error):")
     rows += bench_pendulum(rounds)
     rows += bench_shell(rounds)
     rows += bench_rolling(rounds)
     rows += bench_fit(rounds)
+    rows += bench_frame(rounds)
+    rows += bench_forced(rounds)
     kernels = kernel_costs(rounds)
+    print(f"one-off command lines ({len(rows)}, {2 if quick else 5} runs each) ...", flush=True)
+    one_offs(rows, 2 if quick else 5)
     elapsed = time.perf_counter() - start
-    table = write_table(rows, kernels, elapsed)
+    table = write_table(rows, kernels, elapsed, header)
     picture = write_plot(rows)
     print(f"wrote {table.relative_to(ROOT)} and {picture.relative_to(ROOT)} in {elapsed:.0f} s")
 

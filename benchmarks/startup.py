@@ -48,6 +48,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 BIN = Path(sys.executable).parent
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from _timing import child_env as shared_env, quartiles, spawn  # noqa: E402
 FLOOR = ("import pint, numpy; u = pint.UnitRegistry(cache_folder=':auto:'); "
          "print((u.Quantity(100, 'N/m') / u.Quantity(2, 'kg')) ** 0.5)")
 FLOOR_NAME = "floor: python -c 'import pint, numpy; registry; one quantity'"
@@ -134,10 +137,8 @@ def commands(before: str | None = None) -> dict[str, list[str]]:
 
 
 def child_env() -> dict[str, str]:
-    env = dict(os.environ)
-    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    env = shared_env(NO_COLOR="1")
     env.pop(COMPLETE_VAR, None)
-    env["NO_COLOR"] = "1"
     return env
 
 
@@ -147,26 +148,13 @@ def run_once(argv, env: dict[str, str]) -> tuple[float, float]:
     if isinstance(argv, tuple):
         argv, extra = argv
         env = {**env, **resolved(extra)}
-    start = time.perf_counter()
-    pid = os.posix_spawn(argv[0], argv, env, file_actions=[
-        (os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0),
-        (os.POSIX_SPAWN_OPEN, 2, os.devnull, os.O_WRONLY, 0)])
-    _pid, status, usage = os.wait4(pid, 0)
-    wall = time.perf_counter() - start
-    code = os.waitstatus_to_exitcode(status)
-    if code != 0:
-        raise SystemExit(f"{' '.join(argv)} exited {code}")
-    return wall, usage.ru_utime + usage.ru_stime
+    sample = spawn(argv, env)
+    return sample.wall, sample.cpu
 
 
 def resolved(extra: dict) -> dict[str, str]:
     """Extra environment variables, a callable value called now (a fresh folder a run)."""
     return {name: value() if callable(value) else value for name, value in extra.items()}
-
-
-def quartiles(values: list[float]) -> tuple[float, float, float]:
-    q1, q2, q3 = statistics.quantiles(values, n=4, method="inclusive")
-    return q1, statistics.median(values), q3
 
 
 LOAD = [0.0]

@@ -845,7 +845,65 @@ def r_frame_brace_damper(v):
     return out
 
 
+def s_block_disk_springs(d):
+    d.positive("M", "kg"), d.positive("m", "kg"), d.positive("r", "m"), d.positive("k", "N/m")
+
+
+def r_block_disk_springs(v):
+    """SCENES.md's form as printed; its minus root cancels when M and m are far apart (up to
+    1e600 here), so it is evaluated with 1300 digits."""
+    with mpmath.workdps(1300):
+        big, m, k = v["M"], v["m"], v["k"]
+        root = mpmath.sqrt(4 * big ** 2 - 4 * big * m + 17 * m ** 2)
+        lam1 = k * (2 * big + 5 * m - root) / (2 * m * (3 * big + m))
+        lam2 = k * (2 * big + 5 * m + root) / (2 * m * (3 * big + m))
+        return {**periodic_ref(mpmath.sqrt(lam1), "_1"),
+                **periodic_ref(mpmath.sqrt(lam2), "_2")}
+
+
+def s_spring_coupled_pendulums(d):
+    """Moderate magnitudes (the equilibrium is a float bisection, its cosine conditioned by
+    tan(phi2_0)); the spring's free length up to the rods' length."""
+    m = d.positive("m", "kg", -3, 3)
+    l_ = d.positive("l", "m", -3, 3)
+    d.positive("k", "N/m", -3, 3), d.positive("g", "m/s^2", -1, 1)
+    d.add("b", l_ * d.rng.choice([0.0, d.rng.uniform(0.0, 1.0)]), "m")
+    del m
+
+
+def r_spring_coupled_pendulums(v):
+    m, l_, k, b, g = v["m"], v["l"], v["k"], v["b"], v["g"]
+    with mpmath.workdps(60):
+        if b == 0:
+            phi = mpmath.mpf(0)
+        else:
+            f = lambda p: m * g * mpmath.sin(p) + k * (2 * l_ * mpmath.sin(p) - b) * mpmath.cos(p)
+            lo, hi = mpmath.mpf(0), mpmath.pi / 2     # f(0) < 0 < f(pi/2): bisect to 60 digits
+            while hi - lo > mpmath.mpf(10) ** -58 * hi:
+                mid = (lo + hi) / 2
+                lo, hi = (lo, mid) if f(mid) > 0 else (mid, hi)
+            phi = (lo + hi) / 2
+        c = mpmath.cos(phi)
+        out = {**periodic_ref(mpmath.sqrt(g * c / l_), "_1"),
+               **periodic_ref(mpmath.sqrt(g / (l_ * c) + 2 * k * c ** 2 / m), "_2")}
+    out["phi2_0"] = phi
+    return out
+
+
+def s_pendulum_on_sliding_block(d):
+    d.positive("m1", "kg"), d.positive("m2", "kg"), d.positive("l", "m")
+    d.positive("g", "m/s^2")
+
+
+def r_pendulum_on_sliding_block(v):
+    return ref_oscillator(mpmath.sqrt((v["m1"] + v["m2"]) * v["g"] / (v["m1"] * v["l"])))
+
+
 SCENES = {
+    "block-disk-springs": (s_block_disk_springs, r_block_disk_springs, None),
+    "spring-coupled-pendulums": (s_spring_coupled_pendulums, r_spring_coupled_pendulums, None),
+    "pendulum-on-sliding-block": (s_pendulum_on_sliding_block, r_pendulum_on_sliding_block,
+                                  None),
     "mass-spring": (s_mass_spring, r_mass_spring, None),
     "torsional": (s_torsional, r_torsional, None),
     "pendulum": (s_pendulum, r_pendulum, "elliptic"),

@@ -29,7 +29,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
     labels = {case[0] for case in CASES}
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
-                      "coriolis"}
+                      "coriolis", "forced-response"}
 
 
 @pytest.mark.parametrize("as_json", [False, True], ids=["csv", "json"])

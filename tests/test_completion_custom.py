@@ -44,7 +44,7 @@ def test_scene_names_only_those_the_command_takes(monkeypatch, capsys):
     assert values("dyncalc natural-frequency --scene ", monkeypatch, capsys) == scene_names()
     assert values("dyncalc natural-frequency --scene pend", monkeypatch, capsys) == [
         "pendulum", "pendulum-accelerating-support", "pendulum-on-rotating-disk",
-        "pendulum-spring-dashpot"]
+        "pendulum-spring-dashpot", "pendulum-on-sliding-block"]
     assert values("dyncalc damping-ratio --scene ", monkeypatch, capsys) == DAMPED
     assert values("dyncalc damping-ratio --scene pend", monkeypatch, capsys) == [
         "pendulum-spring-dashpot"]
@@ -101,7 +101,7 @@ def test_files(line, monkeypatch, capsys):
 
 def test_scenes_command_option_and_zsh_protocol(monkeypatch, capsys):
     assert values("dyncalc scenes --command ", monkeypatch, capsys) == [
-        "natural-frequency", "damping-ratio", "forced-response", "eom"]
+        "natural-frequency", "damping-ratio", "forced-response", "modes", "eom"]
     assert complete("dyncalc damping-ratio --scene rod", monkeypatch, capsys, "zsh") == [
         ("plain", "rod-in-fluid")]
 

@@ -17,7 +17,7 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 COMPLETE_VAR = "_DYNCALC_COMPLETE"
 COMMANDS = {"spring-series", "spring-parallel", "natural-frequency", "damping-ratio",
-            "rolling-onset", "coriolis", "forced-response", "scenes"}
+            "rolling-onset", "coriolis", "forced-response", "modes", "scenes"}
 HEAVY = ("pint", "numpy", "scipy", "rich")
 BIN_DIR = Path(sys.executable).parent
 

@@ -62,10 +62,10 @@ BASE = ("--k", "40kN/m", "--m", "40kg")
      "undamped at resonance (Omega = omega = 10 rad/s): the steady state does not exist, the "
      "amplitude grows without bound; give damping (zeta, c or Q), another excitation "
      "frequency, or a time t for the growing response"),
-    (("--scene", "mass-spring", "k=1N/m", "m=1kg"),
-     "forced-response --scene takes a forced scene: quarter-car, frame-brace-damper, "
-     "mass-spring-given-response, rolling-wheel-moving-ground; mass-spring has no excitation "
-     "(natural-frequency computes it)"),
+    (("--scene", "coupled-blocks", "m1=1kg", "m2=1kg", "k1=1N/m", "k2=1N/m", "k3=1N/m"),
+     "forced-response --scene takes a scene with one degree of freedom; coupled-blocks has "
+     "more than one (modes gives its frequencies and mode shapes), so it has no single effective mass "
+     "and stiffness to drive"),
     (("--scene", "quarter-car", "k=40kN/m", "m=400kg", "L=10m", "U0=2cm", "v0=20m/s", "--F0",
       "1N"),
      "--F0 does not go with --scene quarter-car: the scene has its own forcing; its "

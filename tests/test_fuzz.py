@@ -52,6 +52,7 @@ from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from dyncalc.cli import cli
+from dyncalc.physics.inertia import BODY_DIMENSIONS, DENSITY_KIND
 from dyncalc.scenes import get_scene, scene_names
 
 #: The project root (the folder of pyproject.toml), wherever this file sits.
@@ -66,11 +67,12 @@ ALARM = 20.0
 REFUSAL_LIMIT = 1.0
 
 COMMANDS = ["spring-series", "spring-parallel", "natural-frequency", "damping-ratio",
-            "rolling-onset", "coriolis", "scenes"]
+            "rolling-onset", "coriolis", "inertia", "scenes"]
 
-#: Examples per command in CI (7 commands: about 3000 cases with the mixed-command test).
+#: Examples per command in CI (8 commands: about 3000 cases with the mixed-command test).
 CI_EXAMPLES = {"spring-series": 350, "spring-parallel": 250, "natural-frequency": 450,
-               "damping-ratio": 400, "rolling-onset": 350, "coriolis": 350, "scenes": 100}
+               "damping-ratio": 400, "rolling-onset": 350, "coriolis": 350, "inertia": 250,
+               "scenes": 100}
 CI_MIXED_EXAMPLES = 300
 
 SCENES = list(scene_names())
@@ -685,6 +687,40 @@ def recipe_coriolis(draw) -> list[Piece]:
     return pieces
 
 
+DENSITY_UNITS = {"linear": ["kg/m", "g/cm", "lb/ft"], "areal": ["kg/m^2", "g/cm^2", "lb/in^2"],
+                 "volume": ["kg/m^3", "g/cm^3", "lb/ft^3"]}
+AXES = ["z", "x", "-y", "(1, 1, 0)", "[0, 0, 2]", "z through (0.1, 0, 0) m",
+        "(1e300, 1e-300, 0) through (1e300, 0, 0) m", "x through [0, 1e-320, 2] in"]
+
+
+def recipe_inertia(draw) -> list[Piece]:
+    """One to three bodies (a fifth of them holes), each with its mass or density, its
+    dimensions, and perhaps at= and along=; sometimes --axis."""
+    pieces: list[Piece] = []
+    for _ in range(draw(st.integers(1, 3))):
+        kind = draw(st.sampled_from(sorted(BODY_DIMENSIONS)))
+        args = []
+        if kind == "point" or draw(PERCENT) < 70:
+            args.append(f"m={value(draw, 'mass')}")
+        else:
+            unit = draw(st.sampled_from(DENSITY_UNITS[DENSITY_KIND[kind]]))
+            args.append(f"rho={draw(st.sampled_from(PLAIN + EXTREME))} {unit}")
+        args += [f"{d}={value(draw, 'length')}" for d in BODY_DIMENSIONS[kind]]
+        for key, dim, unit in (("at", "length", True), ("along", "pure number", False)):
+            if draw(PERCENT) < 50:
+                comps = ", ".join(draw(st.sampled_from(["0", "1", "-1", "2.5", "1e-300",
+                                                        "1e300", "-3"])) for _ in range(3))
+                shown = draw(st.sampled_from(UNITS_BY_DIM["length"])) if unit else ""
+                args.append(f"{key}=({comps}) {shown}".rstrip())
+        if draw(PERCENT) < 15:
+            args.append(f"along={draw(st.sampled_from(['x', 'y', 'z', '-x']))}")
+        sign = "-" if draw(PERCENT) < 20 else ""
+        pieces.append(Piece([f"{sign}{kind}({', '.join(draw(st.permutations(args)))})"]))
+    if draw(PERCENT) < 40:
+        pieces.append(opt("--axis", draw(st.sampled_from(AXES))))
+    return pieces
+
+
 #: Textbook example ids: those the scenes cite (one scene or several) and one none cites.
 EXAMPLE_IDS = sorted({e for name in SCENES for e in get_scene(name).examples}) + ["E9.99"]
 
@@ -763,6 +799,12 @@ SPECS: dict[str, Spec] = {
          "a_centripetal"],
         {"a_c_mag": "acceleration", "F_c_mag": "force", "a_mag": "acceleration"},
         words=False),
+    "inertia": Spec(
+        recipe_inertia, {"--axis": None},
+        ["m", "r_c", "J_O", "J_C", "J_1", "J_2", "J_3", "axis_1", "J_axis",
+         "radius_of_gyration"],
+        {"m": "mass", "J_1": "mass moment of inertia", "J_axis": "mass moment of inertia",
+         "radius_of_gyration": "length"}),
     "scenes": Spec(recipe_scenes, {"--command": None}, [], flags=["--json"]),
 }
 

@@ -18,6 +18,7 @@ import pytest
 
 from dyncalc.result import encode
 from dyncalc.scenes import catalog
+from dyncalc.scenes.sdof import COORDINATES, forced_example
 from dyncalc.units import registry
 from helpers import invoke
 
@@ -47,13 +48,25 @@ COMMANDS = {
     "coriolis-scalar": "coriolis --omega 2rad/s --vr 3m/s --r 1m --alpha 1rad/s^2 --mass 2kg",
     "coriolis-vector": 'coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m"',
     "coriolis-earth": 'coriolis --latitude 45deg --speed "180 km/h" --heading 0deg',
+    "inertia": 'inertia "rod(m=2kg, l=1m, along=x, at=(0.5, 0, 0) m)" "-point(m=0.1kg)" '
+               '--axis "z through (0, 0.1, 0) m"',
+    "inertia-density": 'inertia "plate(rho=7.8 kg/m^2, a=40cm, b=20cm)" '
+                       '"-disk(rho=7.8 kg/m^2, r=5cm, at=(0.1, 0, 0) m)"',
     "eom-typed": "eom --coords x --T \"m*x'^2/2\" --V \"k*x^2/2\" m=2kg k=200N/m x=1cm",
     "eom-symbolic": "eom --coords phi --T \"m*l^2*phi'^2/2\" --V \"m*g*l*(1 - cos(phi))\" "
                     "m=1kg",
     "eom-scene": "eom --scene block-disk-springs M=3kg m=1kg r=10cm k=100N/m x=1cm phi=0",
 }
+#: Cases whose quantities sit inside words (inertia's bodies): the uncertain form as typed.
+UNCERTAIN_FORMS = {
+    "inertia": 'inertia "rod(m=2kg ± 1%, l=1m, along=x, at=(0.5, 0, 0) m)" "-point(m=0.1kg)" '
+               '--axis z',
+    "inertia-density": 'inertia "plate(rho=7.8 kg/m^2 ± 1%, a=40cm, b=20cm)"',
+}
 CASES = {**{f"scene-{name}": scene.example.removeprefix("dyncalc ")
-            for name, scene in catalog().items()}, **COMMANDS}
+            for name, scene in catalog().items()},
+         **{f"driven-{name}": forced_example(name).removeprefix("dyncalc ")
+            for name in COORDINATES}, **COMMANDS}
 #: Cases whose quantities are all vectors or peak lists (which take no uncertainty) get a
 #: scalar option for the uncertain form.
 SCALAR_ADDED = {"coriolis-vector": ["--mass", "2kg"], "damping-amplitudes": ["--omega", "25rad/s"]}
@@ -148,7 +161,10 @@ def test_object_with_checks_is_valid(case):
 
 @pytest.mark.parametrize("case", PROPAGATING_CASES)
 def test_object_with_an_uncertain_input_is_valid(case):
-    args = with_uncertainty(words(case) + SCALAR_ADDED.get(case, []))
+    if case in UNCERTAIN_FORMS:
+        args = shlex.split(UNCERTAIN_FORMS[case])
+    else:
+        args = with_uncertainty(words(case) + SCALAR_ADDED.get(case, []))
     data = json_object(*args)
     assert_valid(data)
     uncertain = [n for n, item in data["inputs"].items() if "uncertainty" in item]

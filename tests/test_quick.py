@@ -160,13 +160,15 @@ def test_spring_networks_read_as_the_full_path_reads_them(how):
     assert answered > 100
 
 
-def test_declines_on_a_terminal_and_when_width_or_colour_is_set(monkeypatch):
+def test_declines_on_a_dumb_terminal_and_when_width_or_colour_is_set(monkeypatch):
+    """(A terminal rich draws on: tests/test_quick_terminal.py.)"""
     args = ["natural-frequency", "--k", "100 N/m", "--m", "2 kg"]
 
     class Terminal(io.StringIO):
         def isatty(self):
             return True
 
+    monkeypatch.setenv("TERM", "dumb")
     with contextlib.redirect_stdout(Terminal()):
         assert answer(args) is None
         assert answer(args + ["--json"]) is not None  # --json is the same on a terminal

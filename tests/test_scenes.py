@@ -24,6 +24,7 @@ SCENES_MD = {
     "coupled-blocks", "pendulum-accelerating-support", "pendulum-on-rotating-disk",
     "bead-on-rotating-ring", "quarter-car", "rod-in-fluid", "frame-brace-damper",
     "mass-spring-given-response", "rolling-wheel-moving-ground",
+    "block-disk-springs", "spring-coupled-pendulums", "pendulum-on-sliding-block",
 }
 
 SCENES = list(catalog().values())

@@ -280,8 +280,38 @@ def _example(scene, result) -> list[str]:
     return lines
 
 
+def _refused_scene(scene, error) -> list[str]:
+    """A scene whose example is refused on purpose (no equilibrium): its card and the refusal."""
+    return [f"## {scene.name}", "",
+            _sentence(_cell(scene.summary)), "",
+            f"**Figure.** {_sentence(_cell(scene.figure))}", "",
+            f"* Equation of motion: {_code(scene.equation)}",
+            f"* Formula: {_code(scene.formula)}", "",
+            "**Parameters** (`NAME=QUANTITY`):", "", *_parameters(scene), "",
+            *_rules(scene), "", "**Example** (refused, exit status 2):", "",
+            "```sh", scene.example, "```", "", f"says: {_code('Error: ' + str(error))}"]
+
+
+def _driven(scene) -> list[str]:
+    """How ``forced-response --scene`` drives a single-degree-of-freedom scene."""
+    from dyncalc.scenes.sdof import COORDINATES, forced_example
+
+    coordinate = COORDINATES.get(scene.name)
+    if coordinate is None:
+        return []
+    added = (f" It takes the mass {_code('m')} ({coordinate.mass}) besides the parameters "
+             "above." if coordinate.mass else "")
+    return ["", f"**Driven** (`forced-response`): {_sentence(_cell(coordinate.sentence()))}"
+            f"{added}", "", "```sh", forced_example(scene.name), "```"]
+
+
 def _scene(scene) -> list[str]:
-    result, added = run_example(scene)
+    from dyncalc.errors import PhysicsError
+
+    try:
+        result, added = run_example(scene)
+    except PhysicsError as error:
+        return _refused_scene(scene, error)
     return [f"## {scene.name}", "",
             _sentence(_cell(scene.summary)), "",
             f"**Figure.** {_sentence(_cell(scene.figure))}", "",
@@ -291,7 +321,7 @@ def _scene(scene) -> list[str]:
             *_rules(scene), "",
             "**Results** (those of the example command, and those a `zeta` adds; other "
             "inputs may give others):", "", *_results(result, added), "",
-            *_example(scene, result)]
+            *_example(scene, result), *_driven(scene)]
 
 
 def render_catalog(scenes) -> str:

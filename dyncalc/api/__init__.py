@@ -10,7 +10,7 @@
 
 Parameters are keywords named as on the command line (``k=``, ``m=``, ``scene=``,
 ``method=``); a scene's parameters are further keywords (``J=``, ``a=``), a spring network's
-elements positional arguments and its shared values keywords (``EI=``). A value may be a
+elements (or ``inertia``'s bodies) positional arguments and its shared values keywords (``EI=``). A value may be a
 pint Quantity of *any* registry, a str as typed on the command line, or a plain number in
 the canonical unit (the SI unit of its dimension, as a bare number on the command line).
 Arrays (numpy, and Dask or xarray arrays) are computed elementwise, through the column kernels
@@ -38,7 +38,7 @@ from .results import ArrayResult, Result
 __all__ = ["Result", "ArrayResult", "CommandFunction", "InputError", "PhysicsError",
            "command_function", "function_names",
            "spring_series", "spring_parallel", "natural_frequency", "damping_ratio",
-           "rolling_onset", "coriolis", "forced_response", "eom"]
+           "rolling_onset", "coriolis", "forced_response", "modes", "inertia", "eom"]
 
 
 class CommandFunction(Protocol):
@@ -59,7 +59,13 @@ if TYPE_CHECKING:  # made on first use by __getattr__ below; declared here for t
     rolling_onset: CommandFunction
     coriolis: CommandFunction
     forced_response: CommandFunction
+    modes: CommandFunction
+    inertia: CommandFunction
     eom: CommandFunction
+
+
+#: The records' free words taken as positional arguments (a network's elements, bodies).
+POSITIONAL_WORDS = ("ELEMENT...", "BODY...")
 
 
 def _records() -> dict[str, Any]:
@@ -133,13 +139,13 @@ def command_function(record) -> CommandFunction:
     function.__doc__ = _doc(record)
     kinds = inspect.Parameter
     signature = []
-    if record.words == "ELEMENT...":
+    if record.words in POSITIONAL_WORDS:
         signature.append(kinds("elements", kinds.VAR_POSITIONAL))
     signature += [kinds(p.name, kinds.KEYWORD_ONLY, default=None) for p in record.parameters
                   if p.kind != "after"]
     signature += [kinds("rtol", kinds.KEYWORD_ONLY, default=None),
                   kinds("strict_units", kinds.KEYWORD_ONLY, default=False)]
-    if record.words is not None:
+    if record.words is not None and record.words != "BODY...":
         signature.append(kinds("parameters", kinds.VAR_KEYWORD))
     function.__signature__ = inspect.Signature(signature)  # type: ignore[attr-defined]
     function.record = record  # type: ignore[attr-defined]
@@ -151,12 +157,14 @@ def _doc(record) -> str:
     lines = [record.summary, "", "Parameters (keywords, as the command line's options)", ""]
     if record.words == "ELEMENT...":
         lines.append("*elements : the network's elements, as on the command line")
+    elif record.words == "BODY...":
+        lines.append("*elements : the bodies, as on the command line ('rod(m=2kg, l=1m)')")
     for p in record.parameters:
         if p.kind == "after":
             continue
         unit = f" [{p.dim.si}]" if p.dim is not None and p.dim.si else ""
         lines.append(f"{p.name}{unit} : {p.help}")
-    if record.words is not None:
+    if record.words is not None and record.words != "BODY...":
         lines.append("**parameters : scene parameters (NAME=QUANTITY) or shared values")
     lines += ["", "Results (Quantities in their canonical unit)", ""]
     lines += [f"{r.name} [{r.unit}] : {r.description}" if r.unit else

@@ -17,7 +17,7 @@ def _sort(record, elements: tuple, parameters: dict[str, object]):
     value; wrong keywords raise TypeError, as a Python function's would."""
     fname = record.name.replace("-", "_")
     by_name = {p.name: p for p in record.parameters}
-    if elements and record.words != "ELEMENT...":
+    if elements and record.words not in ("ELEMENT...", "BODY..."):
         raise TypeError(f"{fname}() takes keyword arguments only")
     settings: dict[str, str | None] = {}
     slots: list[Slot] = []

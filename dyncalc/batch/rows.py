@@ -245,6 +245,18 @@ def ForcedRows(*, scene: str | None = None, rtol: float | None = None,
                       example="k [N/m],m [kg],zeta,F0 [N],Omega [rad/s]")
 
 
+def ModesRows(*, scene: str | None = None, normalize: str | None = None,
+              strict: bool = False) -> RecordRows:
+    """``modes``: one system per row, its matrices as quoted cells (``M``, ``K``, ``C``);
+    with ``--scene``, that scene's parameters instead."""
+    from ..commands.modes import COMMAND
+    from ..scenes import get_scene
+
+    words = tuple(p.name for p in get_scene(scene).params) if scene is not None else ()
+    return RecordRows(COMMAND, {"scene": scene, "normalize": normalize}, scene_words=words,
+                      strict=strict, example='M,K')
+
+
 def EomRows(*, scene: str | None = None, about: str | None = None,
             rtol: float | None = None, strict: bool = False) -> RecordRows:
     """``eom --scene NAME``: columns are the scene's parameters and the state (``x``,

@@ -11,7 +11,8 @@ COMMAND_MODULES = {
     "spring-series": "springs", "spring-parallel": "springs",
     "natural-frequency": "natural_frequency", "damping-ratio": "damping_ratio",
     "rolling-onset": "rolling_onset", "coriolis": "coriolis",
-    "forced-response": "forced_response", "eom": "eom", "scenes": "scenes",
+    "forced-response": "forced_response", "modes": "modes", "inertia": "inertia",
+    "eom": "eom", "scenes": "scenes",
 }
 
 

@@ -183,6 +183,8 @@ COMMON_UNITS: dict[str, tuple[str, ...]] = {
     "m/s^2": ("m/s^2", "mm/s^2", "ft/s^2"),
     "N": ("N", "kN", "lbf"),
     "rad": ("rad", "deg"),
+    "kg": ("kg", "g", "t", "lb"),
+    "kg*m^2": ("kg*m^2", "g*cm^2", "kg*mm^2", "lb*ft^2", "lb*in^2"),
 }
 
 
@@ -230,13 +232,14 @@ def _complete_words(words):
     return complete
 
 
-def build_command(record, *, rows=None, after=None):
+def build_command(record, *, rows=None, after=None, cls=None):
     """The click command of a :class:`dyncalc.commands.record.Command`: an option per
     parameter, in the record's order (a ``choice``, or a setting with fixed words, validated
     by click; words given as a function only completed), the free words as an argument, the
     shared output options. The callback runs ``record.compute`` on the texts as typed, or
     with ``--batch`` the row adapter ``rows(settings, out)`` over the file's rows; ``after``
-    acts on the result before it is shown (``--plot``)."""
+    acts on the result before it is shown (``--plot``); ``cls`` a subclass of
+    :class:`Command` that reads the command line its own way."""
 
     def callback(out, words=(), **values):
         if out.batch is not None:
@@ -270,7 +273,7 @@ def build_command(record, *, rows=None, after=None):
                                  help=parameter.help, **extra)(decorated)
     if record.words is not None:
         decorated = click.argument("words", nargs=-1, metavar=record.words)(decorated)
-    command = click.command(record.name, cls=Command, help=record.help,
+    command = click.command(record.name, cls=cls or Command, help=record.help,
                             short_help=record.summary)(decorated)
     command.record = record
     return command

@@ -199,10 +199,14 @@ def plot_forced(result: Result, path: str) -> str:
     ph.grid(True, which="both", alpha=0.3)
     if history:
         ax = fig.add_subplot(rows, 1, 3)
-        ax.plot(history[0], history[1], color="tab:blue", label="x(t): transient + steady")
+        coordinate = result.extra.get("coordinate", {})   # a scene driven on its own
+        sym = coordinate.get("name", "x")
+        unit = "rad" if coordinate.get("kind") == "angle" else "m"
+        ax.plot(history[0], history[1], color="tab:blue",
+                label=f"{sym}(t): transient + steady")
         ax.axhline(0.0, color="black", linewidth=0.6)
         ax.set_xlabel("time t (s)")
-        ax.set_ylabel("x (m)")
+        ax.set_ylabel(f"{sym} ({unit})")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8, loc="upper right")
     fig.suptitle(f"forced-response ({curves.kind}): ζ = {format_number(curves.zeta, 4)}",

@@ -77,6 +77,17 @@ def _describe_param(p) -> dict:
             "default": p.default, "required": required, "description": p.description}
 
 
+def _driven_lines(name: str) -> list[str]:
+    """A single-degree-of-freedom scene: its coordinate and forced-response example."""
+    from ..scenes.sdof import COORDINATES, forced_example
+
+    coordinate = COORDINATES.get(name)
+    if coordinate is None:
+        return []
+    added = f" (adds m: {coordinate.mass})" if coordinate.mass else ""
+    return [f"forced-response: {coordinate.sentence()}{added}", f"example: {forced_example(name)}"]
+
+
 def _complete_command(ctx, param, incomplete):
     return [n for n in scene_commands() if n.startswith(incomplete)]
 
@@ -132,6 +143,7 @@ def scenes(name, command, as_json, debug):
                   f"examples: {', '.join(scene.examples) or 'none'}",
                   f"commands: {', '.join(_commands_of(scene.name, commands))}",
                   f"example: {scene.example}"]
+        lines += _driven_lines(scene.name)
         click.echo("\n".join(lines))
         return 0
     listed = list(catalog().values())

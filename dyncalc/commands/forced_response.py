@@ -66,14 +66,54 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
         texts[name], labels[name] = text, f"{name}="
     if scene is not None:
         chosen = forced_scene(scene)
+        _check_driven(chosen, options, texts)
         for name in options:
             if options[name] is not None and chosen.param(name) is None:
-                raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: the "
-                                 f"scene has its own forcing; its parameters are "
-                                 f"{chosen.signature()}")
+                why = ("it is driven by --F0 on its coordinate" if _is_driven(chosen)
+                       else "the scene has its own forcing")
+                raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: "
+                                 f"{why}; its parameters are {chosen.signature()}")
         return ForcedInputs(chosen, texts, labels, rtol, strict)
     _check_forms(texts, labels)
     return ForcedInputs(OSCILLATOR, texts, labels, rtol, strict)
+
+
+def _is_driven(chosen) -> bool:
+    """Whether ``chosen`` is a catalog scene driven on its coordinate (dyncalc.scenes.sdof)."""
+    from ..scenes.sdof import COORDINATES
+
+    return chosen.name in COORDINATES and chosen.param("F0") is not None
+
+
+def _check_driven(chosen, options: dict, texts: dict) -> None:
+    """Refuse what a scene driven on its coordinate does not take: another excitation than
+    ``--F0``, a damping where the scene has its own, ``--Omega`` where ``Omega=`` is the
+    scene's own spin, an inverse problem."""
+    from ..scenes.runner import is_inverse
+    from ..scenes.sdof import COORDINATES, has_spin, refuse_excitation
+
+    coordinate = COORDINATES.get(chosen.name)
+    if coordinate is None or chosen.param("F0") is None:
+        return
+    for name in ("base", "base_accel", "unbalance"):
+        if options.get(name) is not None or name in texts:
+            raise refuse_excitation(chosen.name, _flag(name))
+    if coordinate.damped:
+        for name in _DAMPINGS:
+            if options.get(name) is not None or name in texts:
+                raise InputError(f"{_flag(name)} does not go with --scene {chosen.name}: its "
+                                 "damping is its own (its parameters give zeta)")
+    if options.get("Omega") is not None and has_spin(chosen.name):
+        raise InputError(f"--Omega does not go with --scene {chosen.name}: its Omega= is the "
+                         "spin of the set-up; give the excitation frequency as --f-exc")
+    if "amplitude" in texts:
+        raise InputError(f"amplitude= does not go with forced-response --scene "
+                         f"{chosen.name}: the driven response is linear (small motion about "
+                         "the equilibrium); natural-frequency takes an amplitude")
+    if is_inverse(chosen, texts):
+        raise InputError(f"forced-response --scene {chosen.name} runs forward only: give "
+                         "every parameter (an inverse problem works on the mass-spring-damper "
+                         "itself, --k --m without --scene)")
 
 
 def _shown(names, labels) -> str:
@@ -124,6 +164,7 @@ def compute(inputs: ForcedInputs) -> Result:
 
     result = compute_scene(inputs.scene, inputs.texts, labels=inputs.labels,
                            rtol=inputs.rtol, strict=inputs.strict, command="forced-response")
+    _coordinate_entries(result)
     kind = next((_KINDS[n] for n in _EXCITATIONS if n in inputs.texts), None)
     if inputs.scene is OSCILLATOR and kind is not None:
         from .forced_slips import forced_slips
@@ -133,6 +174,45 @@ def compute(inputs: ForcedInputs) -> Result:
         for name, slips in forced_slips(values, kind).items():
             result.slips.setdefault(name, {}).update(slips)
     return result
+
+
+#: For a scene driven on an angle: the results that are angles, moments, inertias.
+_ROTATION = {"X": "ANGLE", "X_res": "ANGLE", "X_peak": "ANGLE", "x": "ANGLE",
+             "F_T": "TORQUE", "m_eff": "INERTIA", "k_eff": "TORSIONAL_STIFFNESS"}
+_ROTATION_WORDS = {"X": "steady amplitude of {s}", "X_res": "steady amplitude of {s} at "
+                   "Omega = omega", "X_peak": "largest steady amplitude of {s} over Omega",
+                   "x": "total {s} at time t", "F_T": "amplitude of the moment on the support",
+                   "m_eff": "effective moment of inertia in {s}",
+                   "k_eff": "effective torsional stiffness in {s}"}
+
+
+def _coordinate_entries(result: Result) -> None:
+    """A scene driven on its coordinate (:mod:`dyncalc.scenes.sdof`): the coordinate named
+    in ``extra`` and in the amplitudes' descriptions; for an angle, the amplitudes in rad, the
+    force on the support a moment, ``m_eff`` and ``k_eff`` rotational."""
+    from ..scenes.sdof import COORDINATES
+
+    coordinate = COORDINATES.get(result.scene)
+    if coordinate is None or "m_eff" not in result.results:
+        return
+    from .. import units
+    from ..result.entries import Entry
+
+    result.extra["coordinate"] = {"name": coordinate.symbol, "is": coordinate.what,
+                                  "F0": coordinate.drive,
+                                  "kind": "angle" if coordinate.rotation else "displacement"}
+    sym = coordinate.symbol
+    for name, entry in list(result.results.items()):
+        if name not in _ROTATION:
+            continue
+        if coordinate.rotation:
+            dim = getattr(units, _ROTATION[name])
+            unit = dim.si.replace("**", "^")
+            words = _ROTATION_WORDS[name].format(s=sym)
+            result.results[name] = Entry(name, entry.si, dim, unit=unit, symbol=entry.symbol,
+                                         description=words)
+        elif name in ("X", "X_res", "X_peak", "x", "m_eff", "k_eff"):
+            entry.description = f"{entry.description} ({sym}: {coordinate.what})"
 
 
 def forced_response(options: dict[str, str | None], words=(), *, scene: str | None = None,
@@ -159,19 +239,19 @@ def columns(given: dict, settings: dict):
 
     ``given`` maps the columns of the block (the record's input names: ``k``, ``m``,
     ``zeta``, ``F0``, ``Omega``, ...) to float64 SI arrays; ``settings`` holds ``scene``.
-    Without a scene, for the forms :func:`read` accepts (no result given to solve from), each
-    row goes through :func:`dyncalc.physics.forced.forced_response` on plain SI floats (no
-    parsing, no pint, no Result): the very function the one-off calls, so its numbers are the
-    one-off's to the bit. A row is exact when every input is finite and positive (``x0``,
+    Without a scene, for the forms :func:`read` accepts (no result given to solve from), the
+    columns go through :func:`dyncalc.physics.forced_columns.forced_columns`, the one-off's
+    float operations on whole arrays with its exact roundings reproduced (bit for bit); the
+    rows it leaves go through :func:`dyncalc.physics.forced.forced_response` on plain SI
+    floats (no parsing, no pint, no Result), the very function the one-off calls. A row is exact when every input is finite and positive (``x0``,
     ``v0`` finite), it raises and warns nothing and every result is finite and non-zero.
     A result that exists on some rows only (``isolation``, ``bandwidth``, the peak) is NaN
     on the others: the batch splits a block by the results its rows have
     (``Columns.optional``).
     """
-    from ..errors import PhysicsError
     from ..lazy import numpy as np
     from ..physics.columns import Columns
-    from ..physics.forced import forced_response as physics
+    from ..physics.forced_columns import forced_columns
 
     keys = set(given)
     if settings.get("scene") is not None or not keys or keys - _COLUMN_NAMES:
@@ -182,32 +262,46 @@ def columns(given: dict, settings: dict):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     n = len(next(iter(arrays.values())))
-    rows: list[dict | None] = []
-    names: dict[str, None] = {}
-    for i in range(n):
-        row = {name: float(array[i]) for name, array in arrays.items()}
-        if not all(math.isfinite(v) and (v > 0.0 or name in _SIGNED)
-                   for name, v in row.items()):
-            rows.append(None)
-            continue
-        try:
-            out = physics(**row)
-        except (InputError, PhysicsError, ArithmeticError, ValueError):
-            rows.append(None)
-            continue
-        values = out.values
-        if out.warnings or not all(isinstance(v, float) and math.isfinite(v) and v != 0.0
-                                   for v in values.values()):
-            rows.append(None)
-            continue
-        rows.append(values)
-        names.update(dict.fromkeys(values))
+    kernel = forced_columns(arrays)
+    values, exact = kernel if kernel is not None else ({}, np.zeros(n, dtype=bool))
+    names = dict.fromkeys(name for name in values if name != "isolation"
+                          or not np.all(np.isnan(values[name])))
+    rows = {}
+    for i in np.flatnonzero(~exact).tolist():
+        row = _one_row({name: float(array[i]) for name, array in arrays.items()})
+        if row is not None:
+            rows[i] = row
+            names.update(dict.fromkeys(row))
     order = [name for name in _RESULT_ORDER if name in names]
-    values = {name: np.array([r.get(name, math.nan) if r is not None else math.nan
-                              for r in rows], dtype=float) for name in order}
-    exact = np.array([r is not None for r in rows], dtype=bool)
-    return Columns(values, exact=exact, model="linear", method="closed-form",
-                   optional=True)
+    out = {name: np.array(values[name]) if name in values else np.full(n, math.nan)
+           for name in order}
+    for i, row in rows.items():
+        for name in order:
+            out[name][i] = row.get(name, math.nan)
+    exact = exact.copy()
+    exact[list(rows)] = True
+    return Columns(out, exact=exact, model="linear", method="closed-form", optional=True)
+
+
+def _one_row(row: dict) -> dict | None:
+    """One row through :func:`dyncalc.physics.forced.forced_response` on SI floats (the rows
+    the column kernel leaves: outside its domain, a rounding it could not certify, a form it
+    does not take); ``None`` where the one-off would refuse, warn or give a value that is not
+    finite and non-zero."""
+    from ..errors import PhysicsError
+    from ..physics.forced import forced_response as physics
+
+    if not all(math.isfinite(v) and (v > 0.0 or name in _SIGNED) for name, v in row.items()):
+        return None
+    try:
+        out = physics(**row)
+    except (InputError, PhysicsError, ArithmeticError, ValueError):
+        return None
+    values = out.values
+    if out.warnings or not all(isinstance(v, float) and math.isfinite(v) and v != 0.0
+                               for v in values.values()):
+        return None
+    return values
 
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:

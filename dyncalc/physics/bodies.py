@@ -3,6 +3,12 @@
 Shared by the rolling scenes and the ``rolling-onset`` command.
 """
 
-#: Shape factor of each named body: thin shells and hoops carry all their mass at the radius.
-KAPPA = {"solid-sphere": 0.4, "hollow-sphere": 2 / 3, "solid-cylinder": 0.5,
-         "hollow-cylinder": 1.0, "hoop": 1.0}
+from .inertia import AXIAL_FACTOR
+
+#: Shape factor of each named body: thin shells and hoops carry all their mass at the radius
+#: (a hollow cylinder here is a thin tube, the ring's factor), from
+#: :data:`dyncalc.physics.inertia.AXIAL_FACTOR`.
+KAPPA = {"solid-sphere": float(AXIAL_FACTOR["solid-sphere"]),
+         "hollow-sphere": float(AXIAL_FACTOR["hollow-sphere"]),
+         "solid-cylinder": float(AXIAL_FACTOR["solid-cylinder"]),
+         "hollow-cylinder": float(AXIAL_FACTOR["ring"]), "hoop": float(AXIAL_FACTOR["ring"])}

@@ -25,13 +25,15 @@ from ..units import ACCELERATION, LENGTH, MASS, STIFFNESS, TORSIONAL_STIFFNESS
 from ..lazy import numpy as np
 from .columns import Columns, TypedColumn, column_kernel
 from .face import check_units, magnitude
+from .inertia import disk_about_axis, disk_about_parallel_axis, rod_about_end
 from .numerics import Wide, finite_nonzero
 from .numerics_arrays import WideArray
 from .outcome import Outcome, periodic, periodic_arrays
 
 __all__ = ["rolling_disk_spring", "rolling_in_track", "drum_block_spring", "board_on_drums",
            "clock_pendulum", "pulley_block_spring", "disk_torsion_offset_mass",
-           "wheel_on_moving_beam", "angled_member", "ANGLED_MEMBER_FACTOR"]
+           "wheel_on_moving_beam", "angled_member", "ANGLED_MEMBER_FACTOR", "rolling_inertia",
+           "drum_block_inertia", "pulley_block_inertia", "wheel_beam_inertia"]
 
 #: ``sqrt(sqrt(65) / 14)``, correctly rounded (mpmath: 0.758864647647982349822...): the
 #: angled member's ``omega / sqrt(g / l)``.
@@ -58,6 +60,37 @@ def _outcome(omega_squared: Wide, **extra) -> Outcome:
         for name, (value, unit) in extra.items():
             values[name] = Q_(float(value), unit)
     return Outcome(values)
+
+
+# The effective masses of the translating scenes: the kinetic energy is ``m_eff x'^2 / 2`` in
+# the scene's coordinate. The frequencies below divide the stiffness by them, and
+# forced-response drives the same coordinate with them (dyncalc.physics.sdof): one source.
+# Each works on Wide numbers and on WideArray columns alike.
+
+def rolling_inertia(mass, kappa):
+    """``(1 + kappa) m``, a body rolling without slipping, its centre's displacement the
+    coordinate (translation plus rotation at ``x'/r``)."""
+    return mass + kappa * mass
+
+
+def drum_block_inertia(m, M):
+    """``m + M/2``: the block's displacement the coordinate, the drum (a disk) turning at
+    ``x'/R``."""
+    return (M + 2.0 * m) * 0.5
+
+
+def pulley_block_inertia(m, M):
+    """``4 m + 3 M/2``: the pulley centre's displacement ``x`` the coordinate, the block
+    moving ``2x``, the pulley (a disk) rolling on its fixed strand."""
+    return 4.0 * m + 1.5 * M
+
+
+def wheel_beam_inertia(m, M, kappa):
+    """``m (kappa m + M + kappa M)/(kappa m + M)``: the wheel centre's displacement the
+    coordinate, the free beam's motion eliminated by its momentum balance
+    ``M X'' = kappa m (x'' - X'')``."""
+    coupled = kappa * m + M
+    return m * (coupled + kappa * M) / coupled
 
 
 def _kappa_allowed(kappa):
@@ -112,7 +145,7 @@ def rolling_disk_spring(k, m, kappa: float = 0.5) -> Outcome:
     """
     kappa = _check_kappa(kappa)
     mass = _si(m, "kg")
-    return _outcome(_si(k, "N/m") / (mass + kappa * mass))
+    return _outcome(_si(k, "N/m") / rolling_inertia(mass, kappa))
 
 
 @column_kernel(rolling_disk_spring)
@@ -120,7 +153,7 @@ def _rolling_disk_spring_columns(k, m, kappa=0.5) -> Columns:
     """:func:`rolling_disk_spring` on columns: ``k`` in N/m, ``m`` in kg, ``kappa`` an array;
     the one-off's :class:`Wide` steps on :class:`WideArray` (bit for bit)."""
     mass = WideArray(m)
-    return _columns(WideArray(k) / (mass + kappa * mass), _kappa_allowed(kappa))
+    return _columns(WideArray(k) / rolling_inertia(mass, kappa), _kappa_allowed(kappa))
 
 
 @check_units(R=LENGTH, r=LENGTH, g=ACCELERATION)
@@ -255,13 +288,13 @@ def drum_block_spring(k, m, M) -> Outcome:
     >>> round(out.values["omega"].magnitude, 12)  # sqrt(4000 / 18) rad/s
     14.907119849999
     """
-    return _outcome(2.0 * _si(k, "N/m") / (_si(M, "kg") + 2.0 * _si(m, "kg")))
+    return _outcome(_si(k, "N/m") / drum_block_inertia(_si(m, "kg"), _si(M, "kg")))
 
 
 @column_kernel(drum_block_spring)
 def _drum_block_spring_columns(k, m, M) -> Columns:
     """:func:`drum_block_spring` on columns: ``k`` in N/m, ``m``, ``M`` in kg (bit for bit)."""
-    return _columns(2.0 * WideArray(k) / (WideArray(M) + 2.0 * WideArray(m)))
+    return _columns(WideArray(k) / drum_block_inertia(WideArray(m), WideArray(M)))
 
 
 @check_units(a=LENGTH, g=ACCELERATION)
@@ -374,7 +407,7 @@ def clock_pendulum(m, l, M, r, a, g) -> Outcome:
     """
     m_, l_, M_ = _si(m, "kg"), _si(l, "m"), _si(M, "kg")
     r_, a_ = _si(r, "m"), _si(a, "m")
-    inertia = m_ * l_ * l_ / 3.0 + M_ * (r_ * r_ + 2.0 * a_ * a_) / 2.0
+    inertia = rod_about_end(m_, l_) + disk_about_parallel_axis(M_, r_, a_)
     moment = (m_ * l_ + 2.0 * M_ * a_) * _si(g, "m/s**2")
     return _outcome(moment / (2.0 * inertia), J_A=(inertia, "kg*m**2"))
 
@@ -384,7 +417,7 @@ def _clock_pendulum_columns(m, l, M, r, a, g) -> Columns:
     """:func:`clock_pendulum` on columns (SI: kg, m, m/s^2), with ``J_A`` (bit for bit)."""
     m_, l_, M_ = WideArray(m), WideArray(l), WideArray(M)
     r_, a_ = WideArray(r), WideArray(a)
-    inertia = m_ * l_ * l_ / 3.0 + M_ * (r_ * r_ + 2.0 * a_ * a_) / 2.0
+    inertia = rod_about_end(m_, l_) + disk_about_parallel_axis(M_, r_, a_)
     moment = (m_ * l_ + 2.0 * M_ * a_) * WideArray(g)
     return _columns(moment / (2.0 * inertia), J_A=inertia)
 
@@ -421,13 +454,13 @@ def pulley_block_spring(k, m, M) -> Outcome:
     >>> round(out.values["omega"].magnitude, 12)  # sqrt(1000 / 18) rad/s
     7.453559924999
     """
-    return _outcome(_si(k, "N/m") / (4.0 * _si(m, "kg") + 1.5 * _si(M, "kg")))
+    return _outcome(_si(k, "N/m") / pulley_block_inertia(_si(m, "kg"), _si(M, "kg")))
 
 
 @column_kernel(pulley_block_spring)
 def _pulley_block_spring_columns(k, m, M) -> Columns:
     """:func:`pulley_block_spring` on columns: ``k`` in N/m, ``m``, ``M`` in kg."""
-    return _columns(WideArray(k) / (4.0 * WideArray(m) + 1.5 * WideArray(M)))
+    return _columns(WideArray(k) / pulley_block_inertia(WideArray(m), WideArray(M)))
 
 
 @check_units(M=MASS, R=LENGTH, m=MASS, r=LENGTH, a=LENGTH, kt=TORSIONAL_STIFFNESS, g=ACCELERATION)
@@ -484,7 +517,7 @@ def disk_torsion_offset_mass(M, R, m, r, a, kt, g) -> Outcome:
     if not stiffness.m:
         raise PhysicsError("with kt = 0 and a = 0 nothing pulls the disk back (neutral "
                            "equilibrium): it does not oscillate")
-    inertia = M_ * R_ * R_ / 2.0 + m_ * (r_ * r_ / 2.0 + a_ * a_)
+    inertia = disk_about_axis(M_, R_) + disk_about_parallel_axis(m_, r_, a_)
     return _outcome(stiffness / inertia, J_A=(inertia, "kg*m**2"))
 
 
@@ -495,7 +528,7 @@ def _disk_torsion_offset_mass_columns(M, R, m, r, a, kt, g) -> Columns:
     M_, R_, m_ = WideArray(M), WideArray(R), WideArray(m)
     r_, a_, kt_ = WideArray(r), WideArray(a), WideArray(kt)
     stiffness = kt_ + m_ * WideArray(g) * a_
-    inertia = M_ * R_ * R_ / 2.0 + m_ * (r_ * r_ / 2.0 + a_ * a_)
+    inertia = disk_about_axis(M_, R_) + disk_about_parallel_axis(m_, r_, a_)
     return _columns(stiffness / inertia, stiffness.m != 0.0, J_A=inertia)
 
 

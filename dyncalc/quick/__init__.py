@@ -10,8 +10,10 @@ and ``spring-parallel`` of plain stiffnesses typed in one unit (or all bare numb
 * every quantity is a plain ``NUMBER UNIT`` whose unit is in the table generated from pint
   (:mod:`dyncalc.quick.table`, ``tools/gen_unit_table.py``), or a bare number (SI);
 * the other options are only ``--value NAME`` (repeatable), ``--json`` and ``--digits N``;
-* the human table is printed only when stdout is not a terminal (no rich), ``FORCE_COLOR``
-  and ``COLUMNS`` are not set and the output encoding is UTF-8;
+* the human table is printed plain when stdout is not a terminal, and at a terminal in the
+  form rich draws (:func:`.forms.terminal`: bold title, boxed table, dim inputs; rich itself
+  is not imported) when it fits the terminal's width; ``FORCE_COLOR`` and ``COLUMNS`` are
+  not set and the output encoding is UTF-8;
 * every input is positive and finite and every result finite and non-zero (no warnings).
 
 Anything else (another option or command, a repeated option, an error, a quantity the
@@ -45,29 +47,51 @@ def answer(args: list[str]) -> str | None:
         if args[0] == "natural-frequency":
             from .natural import natural_frequency
 
-            return natural_frequency(args[1:], _human_ok)
+            return natural_frequency(args[1:], _human_form)
         from .springs import spring_network
 
-        return spring_network(args[0].partition("-")[2], args[1:], _human_ok)
+        return spring_network(args[0].partition("-")[2], args[1:], _human_form)
     except Exception:  # any surprise is the full path's to report
         return None
 
 
-def _human_ok() -> bool:
-    """Whether the full path would print the plain table, unfitted, in UTF-8."""
+def _human_form():
+    """The human form the full path would print, when the quick path can print it too:
+    ``"plain"`` (not a terminal, or ``DYNCALC_PLAIN``: the plain table, unfitted), the width
+    of the terminal (rich's table, :func:`.forms.terminal`), or ``None`` (the full path's to
+    print: ``FORCE_COLOR`` or ``COLUMNS`` set, an output encoding other than UTF-8, a
+    terminal rich would not draw on as a terminal (``TTY_COMPATIBLE`` set, ``TERM`` dumb or
+    unknown))."""
     import codecs
 
     stdout = sys.stdout
-    if stdout is None or os.environ.get("FORCE_COLOR"):
-        return False
-    columns = os.environ.get("COLUMNS", "").strip()
+    environ = os.environ
+    if stdout is None or environ.get("FORCE_COLOR"):
+        return None
+    columns = environ.get("COLUMNS", "").strip()
     if columns.isdigit() and int(columns) > 0:
-        return False
+        return None
     try:
-        encoding = codecs.lookup(stdout.encoding or "utf-8").name
-        return encoding == "utf-8" and not stdout.isatty()
+        if codecs.lookup(stdout.encoding or "utf-8").name != "utf-8":
+            return None
+        if environ.get("DYNCALC_PLAIN") or not stdout.isatty():
+            return "plain"
     except (AttributeError, LookupError, ValueError):
-        return False
+        return None
+    if ("TTY_COMPATIBLE" in environ or "COLUMNS" in environ
+            or environ.get("TERM", "").lower() in ("dumb", "unknown")):
+        return None
+    return _terminal_width()
+
+
+def _terminal_width() -> int:
+    """The terminal's width as the full path's rich console takes it
+    (``shutil.get_terminal_size`` without ``COLUMNS``, then 80)."""
+    try:
+        width = os.get_terminal_size(sys.__stdout__.fileno()).columns
+    except (AttributeError, ValueError, OSError):
+        width = 0
+    return width if width > 0 else 80
 
 
 def main(argv=None):

@@ -44,9 +44,9 @@ _SCENES = {
 RESULTS = {"omega": ("ω", "rad/s"), "f": ("f", "Hz"), "T": ("T", "s")}
 
 
-def natural_frequency(args: list[str], human_ok) -> str | None:
-    """The stdout of ``dyncalc natural-frequency ARGS`` (``human_ok()``: whether the plain
-    table may be printed), or ``None``."""
+def natural_frequency(args: list[str], human_form) -> str | None:
+    """The stdout of ``dyncalc natural-frequency ARGS`` (``human_form()``: the human form
+    it may print, :func:`dyncalc.quick.forms.human`), or ``None``."""
     options = read_options(args, PARAMETERS, RESULTS)
     if options is None:
         return None
@@ -76,7 +76,8 @@ def natural_frequency(args: list[str], human_ok) -> str | None:
         return forms.values(results, names)
     if as_json:
         return forms.json_text("natural-frequency", scene, "linear", inputs.values(), results)
-    if human_ok is None or not human_ok():
+    form = None if human_form is None else human_form()
+    if form is None:
         return None
     title = ["natural-frequency", f"scene: {scene}", "model: linear", "method: closed-form"]
-    return forms.table(title, results, inputs.values(), digits)
+    return forms.human(form, title, results, inputs.values(), digits)

@@ -39,7 +39,7 @@ def _element(name: str, text: str):
     return None
 
 
-def spring_network(how: str, args: list[str], human_ok) -> str | None:
+def spring_network(how: str, args: list[str], human_form) -> str | None:
     """The stdout of ``dyncalc spring-HOW ARGS``, or ``None``."""
     options = read_options(args, (), ("k_eq",), words=True)
     if options is None:
@@ -72,8 +72,9 @@ def spring_network(how: str, args: list[str], human_ok) -> str | None:
         return forms.values(results, names)
     if as_json:
         return forms.json_text(f"spring-{how}", None, how, inputs, results)
-    if human_ok is None or not human_ok():
+    form = None if human_form is None else human_form()
+    if form is None:
         return None
     title = [f"spring-{how}", f"model: {how}", "method: closed-form"]
-    return forms.table(title, results, inputs, digits)
+    return forms.human(form, title, results, inputs, digits)
 

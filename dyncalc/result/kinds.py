@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DECAY_RATE, DIMENSIONLESS, FORCE,
-                     INERTIA, LENGTH, LINEAR_DRAG, TIME, VELOCITY, Dim)
+                     INERTIA, LENGTH, LINEAR_DRAG, MASS, STIFFNESS, TIME, VELOCITY, Dim)
 from ..records import Frozen
 
 __all__ = ["ResultKind", "result_kind", "DECAY_RATE", "LINEAR_DRAG"]
@@ -35,6 +35,7 @@ _FIXED = {
     "zeta": ResultKind(DIMENSIONLESS, "", "ζ", "damping ratio"),
     "xi": ResultKind(DECAY_RATE, "1/s", "ξ", "decay rate (amplitude ~ exp(-xi t))"),
     "phi_0": ResultKind(ANGLE, "deg", "φ0", "equilibrium angle"),
+    "phi2_0": ResultKind(ANGLE, "deg", "φ2,0", "half the opening angle at rest"),
     "theta_eq": ResultKind(ANGLE, "deg", "θeq", "stable equilibrium angle"),
     "J_A": ResultKind(INERTIA, "kg*m^2", "J_A", "moment of inertia about the pivot"),
     "v_crit": ResultKind(VELOCITY, "m/s", "v_crit", "critical (resonance) speed"),
@@ -64,6 +65,9 @@ _FIXED = {
     "bandwidth": ResultKind(ANGULAR_RATE, "rad/s", "Δω", "half-power bandwidth (exact)"),
     "Q": ResultKind(DIMENSIONLESS, "", "Q", "quality factor 1/(2 zeta)"),
     "x": ResultKind(LENGTH, "m", "x", "total displacement at time t"),
+    "m_eff": ResultKind(MASS, "kg", "m_eff", "effective mass in the driven coordinate"),
+    "k_eff": ResultKind(STIFFNESS, "N/m", "k_eff", "effective stiffness in the driven "
+                                                    "coordinate"),
     "F": ResultKind(FORCE, "N", "F", "force at time t"),
     "H_max": ResultKind(FORCE, "N", "H_max", "largest contact friction force"),
     "mu0": ResultKind(DIMENSIONLESS, "", "μ0", "least static friction coefficient"),

@@ -25,7 +25,7 @@ __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "
 #: Modules whose import registers scenes.
 CATALOG_MODULES: tuple[str, ...] = (
     "dyncalc.scenes.basic", "dyncalc.scenes.rigid", "dyncalc.scenes.rotating",
-    "dyncalc.scenes.damped", "dyncalc.scenes.forced",
+    "dyncalc.scenes.damped", "dyncalc.scenes.forced", "dyncalc.scenes.lagrange",
 )
 
 
@@ -82,12 +82,15 @@ class Scene(Frozen):
     the formula lines in LaTeX, ``$name`` for a parameter or result (strings or
     :class:`dyncalc.result.explain.Formula`, used only when its condition holds); ``sizes``
     functions of the SI values by name (and ``method``) that say how large an assumption's error
-    is at these inputs (a sentence, or None).
+    is at these inputs (a sentence, or None). ``matrices``, on a scene with several degrees
+    of freedom, is a function of the SI values by name giving its
+    :class:`~dyncalc.physics.lagrange.Linearised` mass and stiffness matrices (what ``modes
+    --scene`` solves); a scene with no equilibrium gives a function that raises.
     """
 
     __slots__ = ("name", "summary", "figure", "params", "compute", "equation", "formula",
                  "reference", "example", "example_result", "constraints", "one_of", "methods",
-                 "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes")
+                 "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes", "matrices")
 
     def __init__(self, name: str, summary: str, figure: str, params: tuple[Param, ...],
                  compute: Any, equation: str, formula: str, reference: str, example: str,
@@ -95,10 +98,12 @@ class Scene(Frozen):
                  one_of: tuple[tuple[str, ...], ...] = (), methods: tuple[str, ...] = (),
                  accepts_zeta: bool = True,
                  no_zeta_because: str = "its damping comes from its own parameters",
-                 assumptions: tuple[str, ...] = (), latex: tuple = (), sizes: tuple = ()):
+                 assumptions: tuple[str, ...] = (), latex: tuple = (), sizes: tuple = (),
+                 matrices: Any = None):
         _set_all(self, name, summary, figure, params, compute, equation, formula, reference,
                  example, {} if example_result is None else example_result, constraints,
-                 one_of, methods, accepts_zeta, no_zeta_because, assumptions, latex, sizes)
+                 one_of, methods, accepts_zeta, no_zeta_because, assumptions, latex, sizes,
+                 matrices)
 
     def replace(self, **changes) -> Scene:
         """A copy with ``changes`` (what ``dataclasses.replace`` does)."""

@@ -14,11 +14,12 @@ from ..physics.forced import SQRT_HALF, forced_response
 from ..physics.forced_scenes import (frame_brace_forced, mass_spring_given_response,
                                      quarter_car_forced, rolling_wheel_moving_ground)
 from ..result.explain import Formula
-from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, FORCE,
-                     LENGTH, MASS, STIFFNESS, TIME, UNBALANCE, VELOCITY)
+from ..units import (ACCELERATION, ANGULAR_RATE, DIMENSIONLESS, FORCE, LENGTH, MASS,
+                     STIFFNESS, TIME, UNBALANCE, VELOCITY)
 from . import Param, Scene, register
 from .basic import gravity
 from .damped import FRAME_FIGURE, FRAME_PARAMS
+from .forced_parts import _STEADY_LATEX, _damping, _frequency
 from .rigid import body, kappa
 
 __all__ = ["OSCILLATOR", "DRIVEN", "EXCITATION_PARAMS", "forced_scene"]
@@ -26,66 +27,6 @@ __all__ = ["OSCILLATOR", "DRIVEN", "EXCITATION_PARAMS", "forced_scene"]
 #: The excitation parameters, one of which the oscillator takes.
 EXCITATION_PARAMS = ("F0", "base", "base_accel", "unbalance")
 
-
-def _damping() -> tuple[Param, ...]:
-    return (Param("zeta", DIMENSIONLESS, "damping ratio (default 0: undamped)", default="0",
-                  constraint="nonnegative"),
-            Param("c", DAMPING, "viscous damping coefficient", optional=True,
-                  constraint="nonnegative"),
-            Param("Q", DIMENSIONLESS, "quality factor 1/(2 zeta)", optional=True))
-
-
-def _frequency() -> tuple[Param, ...]:
-    return (Param("Omega", ANGULAR_RATE, "excitation angular frequency", optional=True,
-                  constraint="nonnegative"),
-            Param("f_exc", CYCLE_RATE, "excitation frequency", optional=True,
-                  constraint="nonnegative", symbol=r"f_{\mathrm{exc}}"))
-
-
-def _has(name: str):
-    return lambda v: name in v
-
-
-#: D = sqrt((1 - eta^2)^2 + (2 zeta eta)^2) in the templates.
-_D = r"\sqrt{(1 - $eta^2)^2 + (2\,$zeta\,$eta)^2}"
-_NUM = r"\sqrt{1 + (2\,$zeta\,$eta)^2}"
-
-_STEADY_LATEX = (
-    r"$omega = \sqrt{\frac{$k}{$m}}",
-    r"$eta = \frac{$Omega}{$omega}",
-    r"$eta = \frac{2\pi\,$f_exc}{$omega}",
-    r"$zeta = \frac{$c}{2\,\sqrt{$k\,$m}}",
-    Formula(r"$V = \frac{1}{" + _D + "}", lambda v: "F0" in v or "base_accel" in v),
-    Formula(r"$V = \frac{$eta^2}{" + _D + "}", _has("unbalance")),
-    Formula(r"$V = \frac{" + _NUM + "}{" + _D + "}", _has("base")),
-    r"$X = \frac{$F0}{$k}\,$V",
-    r"$X = $base\,$V",
-    r"$X = \frac{$base_accel}{$omega^2}\,$V",
-    r"$X = \frac{$unbalance}{$m}\,$V",
-    Formula(r"$phi = \mathrm{atan2}\left(2\,$zeta\,$eta,\ 1 - $eta^2\right)",
-            lambda v: "base" not in v),
-    Formula(r"$phi = \mathrm{atan2}\left(2\,$zeta\,$eta^3,\ 1 - $eta^2 + (2\,$zeta\,$eta)^2"
-            r"\right)", _has("base")),
-    r"$TR = \frac{" + _NUM + "}{" + _D + "}",
-    r"$F_T = $TR\,$F0",
-    r"$F_T = $TR\,$unbalance\,$Omega^2",
-    r"$F_T = $m\,$Omega^2\,$X",
-    r"$F_T = $TR\,$m\,$base_accel",
-    r"$Z = \frac{$base\,$eta^2}{" + _D + "}",
-    r"$Z = $X",
-    Formula(r"$V_res = \frac{\sqrt{1 + 4\,$zeta^2}}{2\,$zeta}", _has("base")),
-    r"$V_res = \frac{1}{2\,$zeta}",
-    Formula(r"$Omega_peak = $omega\,\sqrt{\frac{2}{1 + \sqrt{1 + 8\,$zeta^2}}}", _has("base")),
-    Formula(r"$Omega_peak = \frac{$omega}{\sqrt{1 - 2\,$zeta^2}}", _has("unbalance")),
-    r"$Omega_peak = $omega\,\sqrt{1 - 2\,$zeta^2}",
-    Formula(r"$V_peak = \frac{1}{2\,$zeta\,\sqrt{1 - $zeta^2}}", lambda v: "base" not in v),
-    r"$Omega_iso = \sqrt{2}\,$omega",
-    r"$isolation = 1 - $TR",
-    Formula(r"$bandwidth = $omega\,\left(\sqrt{1 - 2\,$zeta^2 + 2\,$zeta\,\sqrt{1 - $zeta^2}}"
-            r" - \sqrt{1 - 2\,$zeta^2 - 2\,$zeta\,\sqrt{1 - $zeta^2}}\right)",
-            lambda v: "F0" in v or "base_accel" in v),
-    r"$Q = \frac{1}{2\,$zeta}",
-)
 
 _ASSUMPTIONS = ("linear viscous damping (a force c x' against the velocity)",)
 
@@ -245,9 +186,12 @@ register(Scene(
 
 
 def forced_scene(name: str) -> Scene:
-    """The scene ``forced-response --scene NAME`` runs: a driven variant (:data:`DRIVEN`) or a
-    forced scene of the catalog; refuses any other with the list."""
-    from . import catalog, get_scene
+    """The scene ``forced-response --scene NAME`` runs: a driven variant (:data:`DRIVEN`), a
+    forced scene of the catalog, or a single-degree-of-freedom scene driven by ``F0`` on its
+    coordinate (:func:`dyncalc.scenes.sdof.driven_variant`); refuses any other (several
+    degrees of freedom) with the reason."""
+    from . import get_scene
+    from .sdof import COORDINATES, driven_variant
 
     if name in DRIVEN:
         return DRIVEN[name]
@@ -256,17 +200,20 @@ def forced_scene(name: str) -> Scene:
         return DRIVEN[scene.name]
     if scene.compute.__module__ == "dyncalc.physics.forced_scenes":
         return scene
-    names = [*DRIVEN, *(n for n, s in catalog().items()
-                        if s.compute.__module__ == "dyncalc.physics.forced_scenes")]
+    if scene.name in COORDINATES:
+        return driven_variant(scene.name)
     from ..errors import InputError
 
-    raise InputError(f"forced-response --scene takes a forced scene: {', '.join(names)}; "
-                     f"{scene.name} has no excitation (natural-frequency computes it)")
+    raise InputError(f"forced-response --scene takes a scene with one degree of freedom; "
+                     f"{scene.name} has more than one (modes gives its frequencies and mode shapes), so "
+                     "it has no single effective mass and stiffness to drive")
 
 
 def forced_scene_names() -> list[str]:
-    """The scenes forced-response --scene takes (for completion and help)."""
+    """The scenes forced-response --scene takes (for completion and help), in catalog
+    order after the driven variants."""
     from . import catalog
+    from .sdof import COORDINATES
 
-    return [*DRIVEN, *(n for n, s in catalog().items()
-                       if s.compute.__module__ == "dyncalc.physics.forced_scenes")]
+    return [*DRIVEN, *(n for n, s in catalog().items() if n not in DRIVEN and (
+        s.compute.__module__ == "dyncalc.physics.forced_scenes" or n in COORDINATES))]

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from ..physics.coupled import coupled_blocks
+from ..physics.lagrange import coupled_blocks_matrices
 from ..physics.nonlinear import half_cylinder_shell, rod_torsion_spring
 from ..physics.rotating import (bead_on_rotating_ring, pendulum_accelerating_support,
                                 pendulum_on_rotating_disk, quarter_car)
@@ -105,6 +106,7 @@ register(Scene(
                     "f_2": "2.10542199673896195 Hz", "T_2": "0.47496416468949038 s"},
     accepts_zeta=False,
     no_zeta_because="it has two modes, and one damping ratio for both would be ambiguous",
+    matrices=lambda v: coupled_blocks_matrices(v["m1"], v["m2"], v["k1"], v["k2"], v["k3"]),
 ))
 
 register(Scene(

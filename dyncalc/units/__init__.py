@@ -4,10 +4,11 @@ checks, angles included (:mod:`.dimensions`), and the strict quantity grammar
 from __future__ import annotations
 
 from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, AREA,
+                         COUPLING_DAMPING, COUPLING_MASS, COUPLING_STIFFNESS,
                          CYCLE_RATE, DAMPING, DECAY_RATE, DIMENSIONLESS, FORCE, INERTIA, LENGTH,
                          LINEAR_DRAG, MASS, MODULUS, RIGIDITY, SECOND_MOMENT, STIFFNESS, TIME,
-                         TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS, UNBALANCE, VELOCITY,
-                         Dim)
+                         TORQUE, TORSIONAL_DAMPING, TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS,
+                         UNBALANCE, VELOCITY, Dim)
 from .grammar import (MAX_DEPTH, MAX_TEXT, Parsed, ReadError, convert, format_quantity,
                       parse_quantity, parse_unit, parse_vector, to_si)
 from .registry import Q_, registry
@@ -19,4 +20,5 @@ __all__ = [
     "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
     "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION", "DECAY_RATE",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "UNBALANCE",
+    "COUPLING_MASS", "COUPLING_STIFFNESS", "TORSIONAL_DAMPING", "COUPLING_DAMPING", "TORQUE",
 ]

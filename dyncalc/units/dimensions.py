@@ -10,7 +10,8 @@ __all__ = [
     "Dim", "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "AREA",
     "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
     "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS", "DECAY_RATE",
-    "UNBALANCE",
+    "UNBALANCE", "COUPLING_MASS", "COUPLING_STIFFNESS", "TORSIONAL_DAMPING", "COUPLING_DAMPING",
+    "TORQUE",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "angle_power", "angle_exponent",
 ]
 
@@ -56,6 +57,17 @@ VELOCITY = Dim("velocity", "[length]/[time]", "[length]/[time]", "m/s")
 ACCELERATION = Dim("acceleration", "[length]/[time]^2", "[length]/[time]**2", "m/s^2")
 FORCE = Dim("force", "[force]", "[force]", "N")
 UNBALANCE = Dim("unbalance", "[mass]*[length]", "[mass]*[length]", "kg*m")
+# The entries of a mass, stiffness or damping matrix that couple a translation with a rotation
+# (``modes``), and a rotation's damping.
+COUPLING_MASS = Dim("translation-rotation mass coupling", "[mass]*[length]",
+                    "[mass]*[length]", "kg*m")
+COUPLING_STIFFNESS = Dim("translation-rotation stiffness coupling", "[force]/[angle]",
+                         "[force]", "N/rad", angles=(-1, 0))
+TORSIONAL_DAMPING = Dim("torsional damping coefficient", "[force]*[length]*[time]/[angle]",
+                        "[force]*[length]*[time]", "N*m*s/rad", angles=(-1, 0))
+COUPLING_DAMPING = Dim("translation-rotation damping coupling", "[force]*[time]/[angle]",
+                       "[force]*[time]", "N*s/rad", angles=(-1, 0))
+TORQUE = Dim("torque", "[force]*[length]", "[force]*[length]", "N*m")
 MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
 DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
               "N*s/m")

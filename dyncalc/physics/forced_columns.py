@@ -1,0 +1,264 @@
+""":func:`dyncalc.physics.forced.forced_response` on whole columns (the batch kernel of
+``forced-response``), bit for bit the one-off on every row it answers.
+
+The one-off forms the two differences that cancel near resonance and near the peak's limits in
+exact rational arithmetic and rounds them once: ``1 - eta^2 = (k - m Omega^2)/k`` (or
+``(omega^2 - Omega^2)/omega^2``), ``1 - 2 zeta^2`` and ``1 - 8 zeta^2 + 8 zeta^4``. Here the
+same exact values come from error-free transformations on arrays
+(:mod:`~dyncalc.physics.numerics_arrays`): each square and product is split by Dekker's
+product into two floats whose sum is exact, so every difference is an exact sum of a few
+floats; ``math.fsum``'s twin (:func:`fsum_rows`) rounds a sum correctly, which is the
+one-off's rounding of the same rational. The quotient by ``k`` (or ``omega^2``) is a
+double-double (the numerator's correctly rounded residual kept, then :func:`dd_div`) whose
+rounding is certified (:func:`round_certified`: no rounding boundary within its error bound);
+a row where it is not (about one in 2^47), or whose inputs lie outside
+:data:`DOMAIN` (where a Dekker product could overflow or its error underflow), is left to the
+one-off code. Everything else is the one-off's float operations in its order; ``hypot``,
+``atan2`` and ``x**2`` are CPython's, called row by row (:func:`elementwise`), where numpy's
+own round differently.
+"""
+from __future__ import annotations
+
+import math
+
+from ..lazy import numpy as np
+from .numerics import sqrt_ratio_array
+from .numerics_arrays import dd_div, elementwise, fsum_rows, round_certified, two_product_array
+
+__all__ = ["DOMAIN", "forced_columns", "resonance_gap_columns", "one_minus_two_z2_columns",
+           "half_power_product_columns"]
+
+#: Inputs (SI, positive) within which every Dekker product here is exact: squares and
+#: products stay far inside float64, their error terms far above the subnormals.
+DOMAIN = (1e-50, 1e50)
+#: The double-double quotient's relative error bound (2^-103 from dd_div, 2^-106 from the
+#: numerator's residual, with room).
+_DD_BOUND = 2.0 ** -100
+_SQRT2, _SQRT8, _TWO_PI = math.sqrt(2.0), math.sqrt(8.0), 2.0 * math.pi
+
+
+def _hypot(a, b):
+    return elementwise(math.hypot, a, b)
+
+
+def _square(x):
+    return elementwise(lambda v: v ** 2, x)
+
+
+def _residual_pair(terms):
+    """``(hi, lo, ok)``: the correctly rounded sum of each row of ``terms`` (exact floats)
+    and the correctly rounded residual ``sum - hi``: a double-double within ``2^-106``."""
+    hi, ok = fsum_rows(terms)
+    lo, ok2 = fsum_rows(np.column_stack([terms, -hi]))
+    return hi, lo, ok & ok2
+
+
+def resonance_gap_columns(W, *, k=None, m=None, omega=None):
+    """``(gap, certain)``: ``1 - eta^2`` as :func:`dyncalc.physics.forced.resonance_gap` rounds
+    the exact ``(k - m W^2)/k`` (or ``(omega^2 - W^2)/omega^2``), and where that is certain.
+
+    >>> import numpy as np
+    >>> gap, ok = resonance_gap_columns(np.array([1.000000000001]), omega=np.array([1.0]))
+    >>> gap.tolist(), ok.tolist()  # resonance_gap(1.000000000001, omega=1.0)
+    ([-2.000177801165682e-12], [True])
+    """
+    p, e = two_product_array(W, W)
+    if k is not None:
+        q1, f1 = two_product_array(m, p)
+        q2, f2 = two_product_array(m, e)
+        hi, lo, ok = _residual_pair(np.column_stack([k, -q1, -f1, -q2, -f2]))
+        dh, dl = k, np.zeros_like(k)
+    else:
+        a, b = two_product_array(omega, omega)
+        hi, lo, ok = _residual_pair(np.column_stack([a, b, -p, -e]))
+        dh, dl = a, b
+    with np.errstate(all="ignore"):
+        qh, ql = dd_div(hi, lo, dh, dl)
+        gap, certain = round_certified(qh, ql, _DD_BOUND)
+    return gap, certain & ok
+
+
+def one_minus_two_z2_columns(zeta):
+    """``1 - 2 zeta^2`` correctly rounded (the one-off's exact rational), with ``ok``."""
+    p, e = two_product_array(zeta, zeta)
+    ones = np.ones_like(zeta)
+    return fsum_rows(np.column_stack([ones, -2.0 * p, -2.0 * e]))
+
+
+def half_power_product_columns(zeta):
+    """``1 - 8 zeta^2 + 8 zeta^4`` correctly rounded, with ``ok``: ``zeta^2 = p + e`` exactly,
+    ``zeta^4 = p^2 + 2 p e + e^2``, each product split again."""
+    p, e = two_product_array(zeta, zeta)
+    q1, f1 = two_product_array(p, p)
+    q2, f2 = two_product_array(2.0 * p, e)
+    q3, f3 = two_product_array(e, e)
+    ones = np.ones_like(zeta)
+    return fsum_rows(np.column_stack([ones, -8.0 * p, -8.0 * e, 8.0 * q1, 8.0 * f1, 8.0 * q2,
+                                      8.0 * f2, 8.0 * q3, 8.0 * f3]))
+
+
+_KINDS = {"F0": "force", "base": "base", "base_accel": "base-accel", "unbalance": "unbalance"}
+
+
+def forced_columns(given: dict):
+    """``(values, exact)`` for the rows of one block, or ``None`` when the block's form gives
+    no row a full answer here (undamped, no mass where the amplitude needs it, initial
+    conditions).
+
+    ``given``: SI float64 arrays by the oscillator's parameter names (``k``, ``m`` or
+    ``omega``; ``zeta``, ``c`` or ``Q``; one excitation; ``Omega`` or ``f_exc``). ``exact``
+    marks the rows answered bit for bit as the one-off answers them, with no warning (inputs
+    finite, positive and within :data:`DOMAIN`, damped below the peak's and the bandwidth's
+    limits, the roundings certified, every result finite and non-zero); ``values`` holds the
+    results by name (``isolation`` NaN where ``TR >= 1``), NaN on the other rows.
+    """
+    names = set(given)
+    excitation = [n for n in _KINDS if n in names]
+    if len(excitation) != 1 or names & {"x0", "v0", "t"} or not names & {"zeta", "c", "Q"}:
+        return None
+    kind, amp = _KINDS[excitation[0]], given[excitation[0]]
+    m = given.get("m")
+    if kind in ("base", "base-accel", "unbalance") and m is None:
+        return None
+    if kind == "force" and "k" not in names and m is None:
+        return None
+    a = {n: np.asarray(v, dtype=float) for n, v in given.items()}
+    low, high = DOMAIN
+    ok = np.ones(len(amp), dtype=bool)
+    for value in a.values():
+        ok &= (value >= low) & (value <= high)
+    with np.errstate(all="ignore"):
+        values, exact = _steady(kind, a, m, ok)
+    for name, value in values.items():
+        good = np.isfinite(value) & (value != 0.0)
+        exact &= (good | np.isnan(value)) if name == "isolation" else good
+    nan = np.nan
+    return {n: np.where(exact, v, nan) for n, v in values.items()}, exact
+
+
+def _steady(kind, a, m, ok):
+    """The one-off's steps (forced_response, _steady, peak, half_power) on columns."""
+    k = a.get("k")
+    if k is not None:
+        w = sqrt_ratio_array(k, m)
+        k_ = k
+    else:
+        w = a["omega"]
+        k_ = m * w * w if m is not None else None
+    if "c" in a:
+        c = a["c"]
+        zeta = c / (2.0 * np.sqrt(k_) * np.sqrt(m)) if k_ is not None else c / (2.0 * m * w)
+    elif "Q" in a:
+        zeta = 0.5 / a["Q"]
+    else:
+        zeta = a["zeta"]
+    W = a["Omega"] if "Omega" in a else _TWO_PI * a["f_exc"]
+    amp = a[{"force": "F0", "base": "base", "base-accel": "base_accel",
+             "unbalance": "unbalance"}[kind]]
+    if k is not None:       # rows outside the domain give what they give: not exact
+        gap, certain = resonance_gap_columns(W, k=k, m=m)
+    else:
+        gap, certain = resonance_gap_columns(W, omega=w)
+    ok &= certain & (zeta >= DOMAIN[0]) & (zeta <= DOMAIN[1])
+    eta = W / w
+    static = {"force": lambda: amp / k_, "base": lambda: amp,
+              "base-accel": lambda: amp / w / w, "unbalance": lambda: amp / m}[kind]()
+    two_ze = 2.0 * zeta * eta
+    TR = _hypot(np.ones_like(two_ze), two_ze) / _hypot(gap, two_ze)
+    if kind == "base":
+        V = TR
+        phi = elementwise(math.atan2, two_ze * eta * eta, gap + two_ze * two_ze)
+    else:
+        d = _hypot(gap, 2.0 * zeta * eta)
+        V = eta / (d / eta) if kind == "unbalance" else 1.0 / d
+        phi = elementwise(math.atan2, two_ze, gap)
+    X = static * V
+    values = {"omega": w, "zeta": zeta, "eta": eta, "X": X, "phi": phi, "V": V, "TR": TR}
+    if kind == "force":
+        values["F_T"] = amp * TR
+    elif kind == "unbalance":
+        values["F_T"] = amp * W * W * TR
+    elif kind == "base":
+        values["F_T"] = m * W * W * X
+    else:
+        values["F_T"] = m * amp * TR
+    if kind == "base":
+        values["Z"] = amp * eta * (eta / _hypot(gap, 2.0 * zeta * eta))
+    elif kind == "base-accel":
+        values["Z"] = X
+    two_z = 2.0 * zeta * 1.0
+    if kind == "base":
+        V_res = _hypot(np.ones_like(two_z), two_z) / _hypot(np.zeros_like(two_z), two_z)
+    else:
+        d_res = _hypot(np.zeros_like(two_z), two_z)
+        V_res = 1.0 / (d_res / 1.0) if kind == "unbalance" else 1.0 / d_res
+    values["X_res"] = static * V_res
+    values["V_res"] = V_res
+    eta_peak, V_peak, peak_ok = _peak(kind, zeta)
+    values["Omega_peak"] = eta_peak * w
+    values["X_peak"] = static * V_peak
+    values["V_peak"] = V_peak
+    values["Omega_iso"] = _SQRT2 * w
+    values["isolation"] = np.where(TR < 1.0, 1.0 - TR, np.nan)
+    width, width_ok = _half_power(kind, zeta)
+    values["bandwidth"] = width * w
+    values["Q"] = 0.5 / zeta
+    return values, ok & peak_ok & width_ok
+
+
+def _peak(kind, zeta):
+    """:func:`dyncalc.physics.forced.peak` on columns: ``(eta_peak, V_peak, exists)``."""
+    if kind == "base":
+        r = _hypot(np.ones_like(zeta), _SQRT8 * zeta)
+        s = 2.0 / (1.0 + r)
+        w = _square(_SQRT8 * zeta / (1.0 + r))
+        eta = np.sqrt(s)
+        two_ze = 2.0 * zeta * eta
+        return eta, _hypot(np.ones_like(two_ze), two_ze) / _hypot(w, two_ze), \
+            np.ones(len(zeta), dtype=bool)
+    s, ok = one_minus_two_z2_columns(zeta)
+    exists = ok & (s > 0.0)
+    v = 1.0 / (2.0 * zeta * np.sqrt((1.0 - zeta) * (1.0 + zeta)))
+    root = np.sqrt(s)
+    return (root if kind != "unbalance" else 1.0 / root), v, exists
+
+
+def _half_power(kind, zeta):
+    """``(bandwidth/omega, exists)`` as :func:`dyncalc.physics.forced.half_power` gives it
+    (rows where it gives none, with a warning, do not exist)."""
+    if kind == "base":
+        return _half_power_base(zeta)
+    s, ok = one_minus_two_z2_columns(zeta)
+    root = np.sqrt((1.0 - zeta) * (1.0 + zeta))
+    plus = s + 2.0 * zeta * root
+    product, ok2 = half_power_product_columns(zeta)
+    exists = ok & ok2 & (s > 0.0) & (product > 0.0)
+    minus = product / plus
+    spread = 4.0 * zeta * root
+    if kind != "unbalance":
+        low = np.sqrt(minus)
+        return spread / (np.sqrt(plus) + low), exists
+    return spread / ((np.sqrt(plus) + np.sqrt(minus)) * np.sqrt(product)), exists
+
+
+def _half_power_base(zeta):
+    """The base-motion half-power bandwidth (:func:`dyncalc.physics.forced._half_power_base`,
+    ``zeta >= 1e-100``: :data:`DOMAIN` keeps to it)."""
+    a = 4.0 * zeta * zeta
+    r = _hypot(np.ones_like(zeta), _SQRT8 * zeta)
+    s = 2.0 / (1.0 + r)
+    w = _square(_SQRT8 * zeta / (1.0 + r))
+    den = w * w + a * s
+    p = (1.0 + a * s) / den
+    n = 2.0 * (1.0 + a) * w * w + a * (1.0 - 2.0 * w) + a * a * s
+    lin = a * (p - 2.0)
+    disc = np.sqrt(lin * lin + 4.0 * p * n / den)
+    q = lin + np.copysign(disc, lin)
+    w1 = q / (2.0 * p)
+    w2 = -n / (den * p * w1)
+    w_pos = np.where(w2 > w1, w2, w1)
+    w_neg = np.where(w2 < w1, w2, w1)
+    high = np.sqrt(1.0 - w_neg)
+    exists = 1.0 - w_pos > 0.0
+    low = np.sqrt(1.0 - w_pos)
+    return (disc / p) / (high + low), exists

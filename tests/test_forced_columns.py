@@ -1,0 +1,157 @@
+"""The forced-response column kernel (dyncalc.physics.forced_columns) against the one-off
+(dyncalc.physics.forced.forced_response) bit for bit, row by row: every form (k and m, or
+omega with m; zeta, c or Q; the four excitations; Omega or f_exc) over random rows spanning
+many decades, rows a hair from resonance (eta = 1 +- 1e-12 and closer, zeta down to 1e-12),
+near the peak's and the bandwidth's limits (zeta about 1/sqrt 2 and 0.38268), and rows outside
+the kernel's domain (left to the one-off)."""
+import math
+import random
+import struct
+
+import numpy as np
+import pytest
+
+from dyncalc.errors import InputError, PhysicsError
+from dyncalc.physics.forced import forced_response, resonance_gap
+from dyncalc.physics.forced_columns import (forced_columns, half_power_product_columns,
+                                            one_minus_two_z2_columns, resonance_gap_columns)
+
+
+def bits(x: float) -> int:
+    return struct.unpack("<q", struct.pack("<d", x))[0]
+
+
+def one_off(row: dict):
+    """The one-off's values for the row, or None where it refuses, warns, or gives a value
+    that is not finite and non-zero (what the batch adapter takes from it)."""
+    try:
+        out = forced_response(**row)
+    except (InputError, PhysicsError, ArithmeticError, ValueError):
+        return None
+    if out.warnings or not all(math.isfinite(v) and v != 0.0 for v in out.values.values()):
+        return None
+    return out.values
+
+
+def _log(rng, lo, hi):
+    return math.exp(rng.uniform(math.log(lo), math.log(hi)))
+
+
+FORMS = [(nat, damp, exc, freq) for nat in ("km", "omega-m") for damp in ("zeta", "c", "Q")
+         for exc in ("F0", "base", "base_accel", "unbalance") for freq in ("Omega", "f_exc")]
+
+
+def rows_for(form, rng, n, near=False):
+    nat, damp, exc, freq = form
+    rows = []
+    for _ in range(n):
+        k, m = _log(rng, 1e-3, 1e9), _log(rng, 1e-4, 1e5)
+        omega = math.sqrt(k / m)
+        zeta = _log(rng, 1e-12, 0.38) if rng.random() < 0.8 else rng.uniform(0.36, 0.72)
+        if near:
+            eta = 1.0 + rng.choice([-1, 1]) * _log(rng, 1e-16, 1e-9)
+            zeta = _log(rng, 1e-12, 1e-6)
+        else:
+            eta = _log(rng, 1e-3, 1e3)
+        W = eta * omega
+        row = {"k": k, "m": m} if nat == "km" else {"omega": omega, "m": m}
+        if damp == "zeta":
+            row["zeta"] = zeta
+        elif damp == "c":
+            row["c"] = 2.0 * zeta * math.sqrt(k * m)
+        else:
+            row["Q"] = 0.5 / zeta
+        row[exc] = _log(rng, 1e-6, 1e6)
+        if freq == "Omega":
+            row["Omega"] = W
+        else:
+            row["f_exc"] = W / (2 * math.pi)
+        rows.append(row)
+    return rows
+
+
+def check(rows):
+    """Kernel against the one-off row by row; returns how many rows the kernel answered."""
+    given = {name: np.array([r[name] for r in rows]) for name in rows[0]}
+    values, exact = forced_columns(given)
+    answered = 0
+    for i, row in enumerate(rows):
+        ref = one_off(row)
+        if exact[i]:
+            answered += 1
+            assert ref is not None, row
+            got = {n: float(v[i]) for n, v in values.items() if not math.isnan(v[i])}
+            assert set(got) == set(ref), row
+            for name, value in ref.items():
+                assert bits(got[name]) == bits(value), (name, row, got[name], value)
+    return answered
+
+
+@pytest.mark.parametrize("form", FORMS, ids=["-".join(f) for f in FORMS])
+def test_random_rows_bit_for_bit(form):
+    rng = random.Random("-".join(form))
+    rows = rows_for(form, rng, 400)
+    answered = check(rows)
+    expected = sum(one_off(r) is not None for r in rows)
+    assert answered == expected     # every row the one-off answers, the kernel answers
+    assert answered > 250
+
+
+@pytest.mark.parametrize("form", FORMS[::5], ids=["-".join(f) for f in FORMS[::5]])
+def test_near_resonance_rows_bit_for_bit(form):
+    rng = random.Random("near" + "-".join(form))
+    rows = rows_for(form, rng, 300, near=True)
+    answered = check(rows)
+    assert answered == sum(one_off(r) is not None for r in rows) and answered > 200
+
+
+def test_resonance_gap_is_the_exact_rational_rounded():
+    """The gap on 20000 rows around resonance, against Fraction (resonance_gap) bit for bit."""
+    rng = random.Random(7)
+    W, k, m, om = [], [], [], []
+    for _ in range(20000):
+        kk, mm = _log(rng, 1e-30, 1e30), _log(rng, 1e-30, 1e30)
+        w = math.sqrt(kk / mm)
+        W.append(w * (1 + rng.choice([-1, 1]) * _log(rng, 1e-17, 1e-1)))
+        k.append(kk), m.append(mm), om.append(w)
+    W, k, m, om = map(np.array, (W, k, m, om))
+    gap, ok = resonance_gap_columns(W, k=k, m=m)
+    gap2, ok2 = resonance_gap_columns(W, omega=om)
+    assert ok.mean() > 0.999 and ok2.mean() > 0.999
+    for i in range(len(W)):
+        if ok[i]:
+            assert bits(gap[i]) == bits(resonance_gap(W[i], k=k[i], m=m[i]))
+        if ok2[i]:
+            assert bits(gap2[i]) == bits(resonance_gap(W[i], omega=om[i]))
+
+
+def test_exact_polynomials_of_zeta():
+    from fractions import Fraction
+
+    rng = random.Random(11)
+    z = np.array([_log(rng, 1e-40, 1e40) for _ in range(5000)]
+                 + [math.sqrt(0.5) * (1 + d * 1e-15) for d in range(-20, 21)]
+                 + [0.3826834323650898 * (1 + d * 1e-15) for d in range(-20, 21)])
+    s, ok = one_minus_two_z2_columns(z)
+    p, ok2 = half_power_product_columns(z)
+    assert ok.all() and ok2.all()
+    for i, x in enumerate(z.tolist()):
+        f = Fraction(x) ** 2
+        assert bits(s[i]) == bits(float(1 - 2 * f))
+        assert bits(p[i]) == bits(float(1 - 8 * f + 8 * f * f))
+
+
+def test_outside_the_domain_is_left_to_the_one_off():
+    rows = [{"k": 1e200, "m": 1.0, "zeta": 0.1, "F0": 1.0, "Omega": 1.0},
+            {"k": 100.0, "m": 1.0, "zeta": 0.1, "F0": 1.0, "Omega": 3.0}]
+    given = {n: np.array([r[n] for r in rows]) for n in rows[0]}
+    values, exact = forced_columns(given)
+    assert exact.tolist() == [False, True]
+    assert math.isnan(values["X"][0])
+
+
+def test_forms_the_kernel_does_not_take():
+    base = {"k": np.array([1.0]), "m": np.array([1.0]), "F0": np.array([1.0]),
+            "Omega": np.array([2.0])}
+    assert forced_columns(base) is None                                  # undamped: warns
+    assert forced_columns({**base, "zeta": np.array([0.1]), "t": np.array([1.0])}) is None
