@@ -132,7 +132,7 @@ def test_help_of_every_command_loads_nothing_heavy():
     code = ("import sys\nfrom dyncalc.cli import cli\n"
             "commands = list(cli.commands.values())\n"
             "assert len(commands) >= 7, commands\n"
-            "print(sorted(m for m in ('pint', 'numpy', 'scipy', 'rich') if m in sys.modules))")
+            "print(sorted(m for m in ('pint', 'numpy', 'scipy', 'rich', 'sympy') if m in sys.modules))")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           timeout=60, env={**os.environ, "PYTHONPATH": str(ROOT)})
     assert proc.returncode == 0, proc.stderr

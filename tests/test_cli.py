@@ -14,7 +14,8 @@ from dyncalc.cli import cli
 
 ROOT = Path(__file__).resolve().parents[1]
 COMMANDS_ALL = ["spring-series", "spring-parallel", "natural-frequency", "damping-ratio",
-         "rolling-onset", "coriolis", "forced-response", "modes", "inertia", "scenes"]
+         "rolling-onset", "coriolis", "forced-response", "modes", "inertia", "eom",
+         "scenes"]
 
 
 def run(*args, env=None):
@@ -380,7 +381,8 @@ def test_scenes_lists_the_catalog():
     assert len(lines) == 3 * len(catalog())
     assert lines[0].split()[0] == "mass-spring"
     assert lines[1].strip() == "k [force]/[length], m [mass], zeta dimensionless?"
-    assert lines[2].strip() == "examples: E5.11, E5.19, E5.26; commands: natural-frequency, forced-response"
+    assert lines[2].strip() == ("examples: E5.11, E5.19, E5.26; commands: natural-frequency, "
+                                "forced-response, eom")
 
 
 def test_scenes_reads_the_registry(monkeypatch):

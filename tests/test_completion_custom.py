@@ -101,7 +101,7 @@ def test_files(line, monkeypatch, capsys):
 
 def test_scenes_command_option_and_zsh_protocol(monkeypatch, capsys):
     assert values("dyncalc scenes --command ", monkeypatch, capsys) == [
-        "natural-frequency", "damping-ratio", "forced-response", "modes"]
+        "natural-frequency", "damping-ratio", "forced-response", "modes", "eom"]
     assert complete("dyncalc damping-ratio --scene rod", monkeypatch, capsys, "zsh") == [
         ("plain", "rod-in-fluid")]
 

@@ -40,7 +40,8 @@ def test_scenes_id_shows_the_scene_that_reproduces_it():
 def test_scenes_id_of_several_scenes_lists_them():
     blocks = _listing("E3.44")
     assert [b[0].split()[0] for b in blocks] == ["physical-pendulum", "angled-member"]
-    assert blocks[0][2].strip() == "examples: E3.44, E5.15; commands: natural-frequency, forced-response"
+    assert blocks[0][2].strip() == ("examples: E3.44, E5.15; commands: natural-frequency, "
+                                    "forced-response, eom")
 
 
 def test_scenes_unknown_id_is_refused():
@@ -91,10 +92,13 @@ def test_the_list_shows_examples_and_commands():
     blocks = _listing()
     assert len(blocks) == len(catalog())
     shown = {b[0].split()[0]: b[2].strip() for b in blocks}
-    assert shown["mass-spring"] == "examples: E5.11, E5.19, E5.26; commands: natural-frequency, forced-response"
-    assert shown["torsional"] == "examples: none; commands: natural-frequency, forced-response"
+    assert shown["mass-spring"] == ("examples: E5.11, E5.19, E5.26; commands: "
+                                    "natural-frequency, forced-response, eom")
+    assert shown["torsional"] == ("examples: none; commands: natural-frequency, "
+                                  "forced-response, eom")
     assert shown["rod-in-fluid"] == (
-        "examples: E5.14; commands: natural-frequency, damping-ratio, forced-response")
+        "examples: E5.14; commands: natural-frequency, damping-ratio, forced-response, "
+        "eom")
     for scene in catalog().values():  # the command of its example is among them
         assert scene.example.split()[1] in shown[scene.name].rpartition("commands: ")[2]
 
@@ -103,7 +107,7 @@ def test_the_json_list_has_examples_and_commands():
     scenes = {s["name"]: s for s in json_of("scenes")["scenes"]}
     assert scenes["rolling-in-track"]["examples"] == ["E4.9", "E5.17"]
     assert scenes["frame-brace-damper"]["commands"] == ["natural-frequency", "damping-ratio",
-                                                        "forced-response"]
+                                                        "forced-response", "eom"]
 
 
 def test_command_filter():
@@ -118,11 +122,11 @@ def test_command_filter():
 @pytest.mark.parametrize("args, message", [
     (["--command", "spring-series"], "Error: spring-series takes no scene; the commands with "
                                      "scenes are natural-frequency, damping-ratio, "
-                                     "forced-response, modes"),
+                                     "forced-response, modes, eom"),
     (["--command", "natral-frequency"], "Error: there is no command 'natral-frequency' (did "
                                         "you mean 'natural-frequency'?); the commands with "
                                         "scenes are natural-frequency, damping-ratio, "
-                                        "forced-response, modes"),
+                                        "forced-response, modes, eom"),
     (["mass-spring", "--command", "damping-ratio"], "Error: give a scene NAME or --command, "
                                                     "not both"),
 ])

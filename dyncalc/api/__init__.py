@@ -38,7 +38,7 @@ from .results import ArrayResult, Result
 __all__ = ["Result", "ArrayResult", "CommandFunction", "InputError", "PhysicsError",
            "command_function", "function_names",
            "spring_series", "spring_parallel", "natural_frequency", "damping_ratio",
-           "rolling_onset", "coriolis", "forced_response", "modes", "inertia"]
+           "rolling_onset", "coriolis", "forced_response", "modes", "inertia", "eom"]
 
 
 class CommandFunction(Protocol):
@@ -61,6 +61,7 @@ if TYPE_CHECKING:  # made on first use by __getattr__ below; declared here for t
     forced_response: CommandFunction
     modes: CommandFunction
     inertia: CommandFunction
+    eom: CommandFunction
 
 
 #: The records' free words taken as positional arguments (a network's elements, bodies).

@@ -70,13 +70,15 @@ from ..errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
 from ..result.propagate import propagate
 from .fast import FastBlock
 from .header import Column, has_own_unit, read_header, with_header_unit
-from .rows import (CoriolisRows, DampingRows, ForcedRows, ModesRows, NaturalFrequencyRows,
+from .rows import (CoriolisRows, DampingRows, EomRows, ForcedRows, ModesRows,
+                   NaturalFrequencyRows,
                    RollingRows, RowSpec, SpringRows)
 from .source import MAX_LINE, _Reader, open_source
 from .write import _BLANK, _FAST, _Writer
 
 __all__ = ["run_batch", "RowSpec", "NaturalFrequencyRows", "SpringRows", "DampingRows",
-           "RollingRows", "CoriolisRows", "ForcedRows", "ModesRows", "CHUNK_ROWS", "ON_ERROR", "GENERIC_ENV", "MAX_LINE",
+           "RollingRows", "CoriolisRows", "ForcedRows", "ModesRows", "EomRows", "CHUNK_ROWS",
+           "ON_ERROR", "GENERIC_ENV", "MAX_LINE",
            "open_source", "Column", "read_header", "has_own_unit", "with_header_unit",
            "FastBlock"]
 

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import re
 
+from ..errors import InputError
+
 from .fast import _natural_frequency_fast
 from .fast_inverse import inverse_blocks
 
@@ -253,3 +255,23 @@ def ModesRows(*, scene: str | None = None, normalize: str | None = None,
     words = tuple(p.name for p in get_scene(scene).params) if scene is not None else ()
     return RecordRows(COMMAND, {"scene": scene, "normalize": normalize}, scene_words=words,
                       strict=strict, example='M,K')
+
+
+def EomRows(*, scene: str | None = None, about: str | None = None,
+            rtol: float | None = None, strict: bool = False) -> RecordRows:
+    """``eom --scene NAME``: columns are the scene's parameters and the state (``x``,
+    ``x_dot``, ``t``); each row derives once more (sympy), so a file of a few hundred rows
+    takes a few seconds per row at most."""
+    from ..commands.eom import COMMAND
+    from ..scenes.energies import energies
+
+    if scene is None:
+        raise InputError("eom --batch needs --scene NAME: each row gives that scene's "
+                         "parameter values (typed energies are one-offs)")
+    record = energies(scene)
+    state = [*record.coords, *(c + "_dot" for c in record.coords), "t"]
+    words = (*(p.name for p in record.params), *state,
+             *(("body",) if record.param("kappa") is not None else ()))
+    return RecordRows(COMMAND, {"scene": scene, "about": about}, scene_words=words,
+                      rtol=rtol, strict=strict,
+                      example=",".join(p.name for p in record.params[:2]))

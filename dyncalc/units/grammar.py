@@ -1142,3 +1142,44 @@ def convert(si_value, dim: Dim, unit_text: str, *, label: str = "unit", name: st
         article = "an" if dim.name[0] in "aeiou" else "a"
         raise InputError(f"{label}: {unit_text} is not a unit of {dim.display}; {name} is "
                          f"{article} {dim.name}") from exc
+
+
+def is_unit_word(word: str) -> bool:
+    """Whether pint knows ``word`` as a unit (``N``, ``deg``, ``kg``), for the expression
+    grammar (:mod:`dyncalc.units.expression`), which reads a unit only after a number."""
+    return _is_unit(word)
+
+
+def unit_in_base(text: str, *, label: str = "unit") -> tuple[float, dict[str, float]]:
+    """The factor that takes ``text`` (a unit: ``"kN/m"``, ``"deg"``) to SI base units, and
+    its dimensionality as ``{"[mass]": 1, "[time]": -2}`` (angles count as pure numbers, as
+    in pint: ``deg`` gives ``(pi/180, {})``).
+
+    >>> unit_in_base("km/h")
+    (0.2777777777777778, {'[length]': 1.0, '[time]': -1.0})
+    """
+    unit = _read_unit(text, label)[0]
+    base = registry().Quantity(1.0, unit).to_base_units()
+    return float(base.magnitude), {k: float(v) for k, v in base.dimensionality.items()}
+
+
+def quantity_in_base(text: str, *, label: str = "value") -> tuple[float, dict[str, float], str]:
+    """A quantity of any dimension (``"2 kg"``, ``"9.81 m/s^2"``, ``"300 rpm"``): its SI base
+    magnitude, its dimensionality (as :func:`unit_in_base`) and its reading (the text with the
+    parentheses the precedence implies). For the parameters of ``eom``, whose dimension the
+    expressions decide. An uncertainty is refused (``eom`` does not propagate one).
+
+    >>> quantity_in_base("1500 N / 7 mm")[:2]
+    (214285.7142857143, {'[mass]': 1.0, '[time]': -2.0})
+    """
+    if _split_uncertainty(text, label) is not None:
+        raise InputError(f"{label}: an uncertainty is not read here (eom does not propagate "
+                         "one); give the value alone")
+    reading = _evaluate(text, label)
+    if reading.angle_mismatch:
+        raise _refuse(label, text, reading.angle_mismatch)
+    base = reading.quantity.to_base_units()
+    value = float(base.magnitude)
+    if not math.isfinite(value):
+        raise _refuse(label, text, "it is not a finite number")
+    return value, {k: float(v) for k, v in base.dimensionality.items()}, reading.explicit
