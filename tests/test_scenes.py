@@ -167,3 +167,18 @@ def test_default_parameter_can_be_overridden():
     moon = run_scene("pendulum", {"l": "1 m", "g": "1.62 m/s^2"})
     assert moon.results["omega"].si == pytest.approx(math.sqrt(1.62), rel=1e-15)
     assert moon.inputs["g"].value_in() == 1.62
+
+
+def test_catalog_order_does_not_depend_on_which_scene_module_was_imported_first():
+    """A test or command importing dyncalc.scenes.forced before the catalog loads must not move
+    its scenes ahead of the others (docs/scenes.md is generated in catalog order)."""
+    import subprocess
+    import sys
+
+    code = ("import {first}\nfrom dyncalc.scenes import catalog\nprint(','.join(catalog()))")
+    plain = subprocess.run([sys.executable, "-c", code.format(first="dyncalc")],
+                           capture_output=True, text=True, check=True).stdout
+    early = subprocess.run([sys.executable, "-c", code.format(first="dyncalc.scenes.forced")],
+                           capture_output=True, text=True, check=True).stdout
+    assert plain.split(",").index("mass-spring") == 0
+    assert early == plain

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import importlib
 import re
+import sys
 from typing import Any
 
 from ..errors import InputError
@@ -135,6 +136,8 @@ _EXAMPLE_ID = re.compile(r"\bE\d+\.\d+\b")
 
 _SCENES: dict[str, Scene] = {}
 _imported = 0  # how many of CATALOG_MODULES have been imported, in order
+_ORIGIN: dict[str, str] = {}  # scene name -> the module that registered it
+_ordered = False  # whether _SCENES is in catalog order (module order, then registration)
 
 
 def register(scene: Scene) -> Scene:
@@ -152,6 +155,7 @@ def register(scene: Scene) -> Scene:
                      optional=True, constraint="nonnegative")
         scene = scene.replace(params=(*scene.params, zeta))
     _SCENES[scene.name] = scene
+    _ORIGIN[scene.name] = sys._getframe(1).f_globals.get("__name__", "")
     return scene
 
 
@@ -166,8 +170,18 @@ def _load(until: str | None = None) -> None:
 
 
 def catalog() -> dict[str, Scene]:
-    """Every scene, by name, in the order registered."""
+    """Every scene, by name, in catalog order: the order of CATALOG_MODULES, then the order
+    each module registers its scenes — whichever module was imported first (a test or a
+    command may import one of them directly)."""
+    global _ordered
     _load()
+    if not _ordered:
+        rank = {module: i for i, module in enumerate(CATALOG_MODULES)}
+        ordered = sorted(_SCENES.items(),
+                         key=lambda item: rank.get(_ORIGIN[item[0]], len(rank)))  # stable
+        _SCENES.clear()
+        _SCENES.update(ordered)
+        _ordered = True
     return _SCENES
 
 
