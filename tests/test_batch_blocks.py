@@ -160,10 +160,42 @@ def test_simple_quoted_cells_are_read_a_block_at_a_time():
     assert reader.stream is None  # never handed over to the line by line reader
     assert [len(c) for c in chunks] == [1024, 1024, 953]
     assert chunks[-1].row(952) == ["0,0,2999", "2999,1,0"] and chunks[-1].numbers[-1] == 3001
-    assert chunks[0].echo([1]) == ['"0,0,0","0,1,0"'] and chunks[0].written is not None
+    assert chunks[0].echo([1]) == ['"0,0,0","0,1,0"']
+    assert chunks[0].rows is None  # split at commas without the csv module (quotes taken off)
     reader = source._Reader(_stream('a,b\n"1",2\n'))                # quoted without need
     chunk = reader.chunk(10)
     assert reader.stream is None and chunk.written is None and chunk.echo([1]) == ["1,2"]
+
+
+@pytest.mark.parametrize("text, split", [
+    ('"0,0,1","1,1,0"\n"0,0,2","2,1,0"\n', True),           # every cell quoted
+    ('x,"1,2,3",,y\r\n"a,b",2,,"c,d"\r\n', True),            # mixed, an empty cell, CRLF
+    ('",,,",","\n" , ",a\n', True),                          # commas and spaces only
+    ('x,"1,2,3",,"",y\n"a,b",2,"",,"c"\n', False),            # "": csv.writer would not quote
+    ('"1,2","3"\n"4,5",6\n', False),                         # nor "3"
+    ('"1,2",3\n\n"4,5",6\n', False),                        # a blank line (no cell for csv)
+])
+def test_simple_quotes_split_as_the_csv_module_reads(text, split):
+    """Lines in simple quotes are split at commas with their quotes off: their rows, cell
+    counts, columns and echo are the csv module's (and csv.writer's), however they are read."""
+    import csv
+    import io
+
+    records = list(csv.reader(io.StringIO(text), strict=True))
+    chunk = source._Reader(_stream(text)).chunk(100)
+    n = len(records)
+    assert len(chunk) == n and (chunk.rows is None) == split
+    assert [chunk.row(i) for i in range(n)] == records
+    widths = chunk.widths()
+    assert [w + (chunk.rows is None) for w in widths] == list(map(len, records))
+    if len(set(map(len, records))) == 1:
+        columns = [list(c) for c in chunk.table(len(records[0]), None)]
+        assert columns == [list(c) for c in zip(*records)]
+        assert [list(c) for c in chunk.table(len(records[0]), [n - 1])] == \
+            [[c] for c in records[-1]]
+    written = io.StringIO()
+    csv.writer(written, lineterminator="\n").writerows(records)
+    assert "\n".join(chunk.echo(None)) + "\n" == written.getvalue()
 
 
 # --- vectors read a column at a time -------------------------------------------------------------

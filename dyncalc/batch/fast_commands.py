@@ -20,7 +20,7 @@ from ..errors import InputError
 from .columns import (_LEADING_ZERO_RE, _LITERAL_CELL, _converted_to, _plain_floats,
                       _read_column, _unit_info)
 from .fast import FastBlock, _by_columns_given, _input_texts
-from .floats import parse_floats
+from .floats import json_floats, parse_floats
 from .header import Column, with_header_unit
 
 #: A vector cell the vectorised path reads: three plain numbers, comma-separated, no unit.
@@ -30,15 +30,26 @@ _VECTOR_RE = re.compile(rf"[ \t]*({_LITERAL_CELL})[ \t]*,[ \t]*({_LITERAL_CELL})
 
 #: The characters of a column of such cells, joined by commas.
 _VECTOR_CHARS_RE = re.compile(r"[0-9.eE+\- \t,]*")
+#: A column of cells of three numbers each (the characters of numbers, two commas a cell),
+#: joined by line breaks.
+_NUMBER_CHARS = r"[0-9.eE+\- \t]*+"
+_VECTOR_COLUMN_RE = re.compile(rf"(?:{_NUMBER_CHARS},{_NUMBER_CHARS},{_NUMBER_CHARS}\n)*+"
+                               rf"{_NUMBER_CHARS},{_NUMBER_CHARS},{_NUMBER_CHARS}")
 
 
 def _vectors(column: list[str]) -> tuple[np.ndarray, np.ndarray]:
     """``(values (n, 3), ok)`` of a column of vector cells: a column whose every cell is three
     plain numbers (two commas a cell, the characters of numbers, no leading zero, every
-    component one ``float`` reads: what :data:`_VECTOR_RE` matches) is read by one
-    :func:`parse_floats` of its components; any other is read a cell at a time (``ok`` False
-    where a cell is not one)."""
+    component one ``float`` reads: what :data:`_VECTOR_RE` matches) is read at once (its
+    components as JSON numbers, or by one :func:`parse_floats`); any other is read a cell at a
+    time (``ok`` False where a cell is not one)."""
     n = len(column)
+    lined = "\n".join(column)
+    if n and _VECTOR_COLUMN_RE.fullmatch(lined):
+        # JSON refuses a leading zero: what orjson reads needs no search for one
+        flat = json_floats(lined.replace("\n", ","), 3 * n)
+        if flat is not None:
+            return flat.reshape(n, 3), np.ones(n, dtype=bool)
     joined = ",".join(column)
     if (n and _VECTOR_CHARS_RE.fullmatch(joined) and not _LEADING_ZERO_RE.search(joined)
             and list(map(str.count, column, itertools.repeat(","))).count(2) == n):

@@ -123,16 +123,19 @@ _LINE_END_RE = re.compile("\r\n|\r|\n")
 
 class _Chunk:
     """Consecutive records of the CSV: the line each starts on (``numbers``), and either the
-    text lines of a chunk without quotes (``lines``: each is one record, split at commas) or
-    the records the csv module read (``rows``)."""
+    text lines of a chunk without quotes (``lines``: each is one record, split at commas), the
+    lines of a chunk in simple quotes that ``csv.writer`` writes as they are (``lines``, and
+    ``plain``: the same lines without their quotes, each comma inside a quoted cell a NUL, so
+    that they too are split at commas) or the records the csv module read (``rows``)."""
 
-    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written")
+    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written", "plain")
 
     def __init__(self, numbers, *, lines=None, rows=None, suspect: bool = False,
-                 written=None):
+                 written=None, plain=None):
         self.numbers, self.lines, self.rows = numbers, lines, rows
         #: the lines of ``rows`` when they are what ``csv.writer`` writes for them (else None)
         self.written = written
+        self.plain = lines if plain is None else plain
         #: rows refused before reading their cells: index -> why
         self.not_utf8: dict[int, str] = {}
         if suspect:
@@ -146,23 +149,29 @@ class _Chunk:
         return len(self.numbers)
 
     def row(self, i: int) -> list[str]:
-        return self.lines[i].split(",") if self.rows is None else self.rows[i]
+        if self.rows is not None:
+            return self.rows[i]
+        cells = self.plain[i].split(",")
+        return cells if self.plain is self.lines else [c.replace("\0", ",") for c in cells]
 
     def widths(self) -> list[int]:
         """The number of cells of each row (in a chunk without quotes, one more than its
         commas)."""
         if self.rows is not None:
             return list(map(len, self.rows))
-        return list(map(str.count, self.lines, itertools.repeat(",")))
+        return list(map(str.count, self.plain, itertools.repeat(",")))
 
     def table(self, width: int, keep: list[int] | None):
         """The cells column by column, of all rows (``keep`` None) or of the rows ``keep``;
         they all have ``width`` cells."""
         if self.rows is not None:
             return list(zip(*(self.rows if keep is None else [self.rows[i] for i in keep])))
-        lines = self.lines if keep is None else [self.lines[i] for i in keep]
+        lines = self.plain if keep is None else [self.plain[i] for i in keep]
         flat = ",".join(lines).split(",")
-        return [flat[j::width] for j in range(width)]
+        columns = [flat[j::width] for j in range(width)]
+        if self.plain is not self.lines:  # the commas of quoted cells, back
+            columns = [_unquoted(column) for column in columns]
+        return columns
 
     def echo(self, keep: list[int] | None) -> list[str]:
         """The rows (all, or ``keep``) as CSV lines, as ``csv.writer`` writes them."""
@@ -170,6 +179,26 @@ class _Chunk:
             lines = self.lines if self.rows is None else self.written
             return lines if keep is None else [lines[i] for i in keep]
         return _csv_lines(self.rows if keep is None else [self.rows[i] for i in keep])
+
+
+def _unquoted(column: list[str]) -> list[str]:
+    """A column of cells with each NUL (a comma of a quoted cell) a comma again."""
+    joined = "\n".join(column)  # (no cell holds a line break)
+    return joined.replace("\0", ",").split("\n") if "\0" in joined else column
+
+
+def _without_quotes(lines: list[str], text: str) -> list[str] | None:
+    """``lines`` (``text`` joined by line breaks) in simple quotes (each quote opens or closes
+    a whole cell, no quote inside one) without their quotes, each comma inside a quoted cell a
+    NUL (which the text has not), so that splitting a line at commas gives what the csv module
+    reads; ``None`` where a line is empty (the csv module reads no cell there, not one empty
+    cell)."""
+    if "" in lines:
+        return None
+    pieces = text.split('"')  # the odd ones are inside quotes
+    pieces[1::2] = '"'.join(pieces[1::2]).replace(",", "\0").split('"')
+    plain = "".join(pieces).split("\n")
+    return plain if len(plain) == len(lines) else None
 
 
 class _Reader:
@@ -305,6 +334,10 @@ class _Reader:
             # quotes exactly where csv.writer puts them (around cells holding a comma): the
             # lines are the echo
             written = None if _QUOTED_NO_COMMA_RE.search(text) else lines
+            plain = None if written is None else _without_quotes(
+                lines, text if "\r" not in text else "\n".join(lines))
+            if plain is not None:  # split at commas, as a chunk without quotes
+                return _Chunk(numbers, lines=lines, suspect=suspect, plain=plain)
             return _Chunk(numbers, rows=list(csv.reader(lines, strict=True)), suspect=suspect,
                           written=written)
         return _Chunk(numbers, lines=lines, suspect=suspect)
