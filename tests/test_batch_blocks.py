@@ -169,6 +169,11 @@ def test_simple_quoted_cells_are_read_a_block_at_a_time():
 
 @pytest.mark.parametrize("text, split", [
     ('"0,0,1","1,1,0"\n"0,0,2","2,1,0"\n', True),           # every cell quoted
+    ('"0,0,1","1,1,0"\r\n"0, ,2",",x"\r\n', True),             # ... CRLF
+    ('"0,0,1","1,1,0"\n"0,0,2","2,1,0","3,"\n', True),        # ... not as many on each line
+    ('"0,0,1","1"\n"0,0,2","2,1,0"\n', False),               # ... one without a comma
+    ('"0,0,1","1,""1",0"\n', False),                          # ... a quote inside
+    ('"0,0,1"\n', True),                                      # one cell
     ('x,"1,2,3",,y\r\n"a,b",2,,"c,d"\r\n', True),            # mixed, an empty cell, CRLF
     ('",,,",","\n" , ",a\n', True),                          # commas and spaces only
     ('x,"1,2,3",,"",y\n"a,b",2,"",,"c"\n', False),            # "": csv.writer would not quote

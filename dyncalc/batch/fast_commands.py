@@ -101,12 +101,16 @@ def _command_fast(spec, columns: list[Column], table, want_json: bool,
 
 def _stripped(column) -> list[str]:
     """The cells without their surrounding white space (a column with none kept as it is)."""
-    if _SPACE_RE.search("".join(column)):  # what str.strip strips (str.isspace)
+    joined = "".join(column)
+    if (any(map(joined.__contains__, _ASCII_SPACES)) if joined.isascii()
+            else _SPACE_RE.search(joined)):  # what str.strip strips (str.isspace)
         return [c.strip() for c in column]
     return list(column)
 
 
 _SPACE_RE = re.compile(r"\s")
+#: The ASCII characters ``str.isspace`` knows (a search for each is faster than the regex).
+_ASCII_SPACES = tuple(c for c in map(chr, range(128)) if c.isspace())
 
 
 #: The most distinct word combinations (``body``, ``cycles``) a block is split into; beyond,

@@ -126,16 +126,19 @@ class _Chunk:
     text lines of a chunk without quotes (``lines``: each is one record, split at commas), the
     lines of a chunk in simple quotes that ``csv.writer`` writes as they are (``lines``, and
     ``plain``: the same lines without their quotes, each comma inside a quoted cell a NUL, so
-    that they too are split at commas) or the records the csv module read (``rows``)."""
+    that they too are split at commas), the lines of a chunk whose every cell is quoted (and
+    written so by ``csv.writer``) with their cells column by column (``lines`` and
+    ``columns``), or the records the csv module read (``rows``)."""
 
-    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written", "plain")
+    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written", "plain", "columns")
 
     def __init__(self, numbers, *, lines=None, rows=None, suspect: bool = False,
-                 written=None, plain=None):
+                 written=None, plain=None, columns=None):
         self.numbers, self.lines, self.rows = numbers, lines, rows
         #: the lines of ``rows`` when they are what ``csv.writer`` writes for them (else None)
         self.written = written
         self.plain = lines if plain is None else plain
+        self.columns = columns
         #: rows refused before reading their cells: index -> why
         self.not_utf8: dict[int, str] = {}
         if suspect:
@@ -151,14 +154,18 @@ class _Chunk:
     def row(self, i: int) -> list[str]:
         if self.rows is not None:
             return self.rows[i]
+        if self.columns is not None:
+            return [column[i] for column in self.columns]
         cells = self.plain[i].split(",")
         return cells if self.plain is self.lines else [c.replace("\0", ",") for c in cells]
 
     def widths(self) -> list[int]:
-        """The number of cells of each row (in a chunk without quotes, one more than its
-        commas)."""
+        """The number of cells of each row (in a chunk split at commas, one more than its
+        commas: one less than what is given)."""
         if self.rows is not None:
             return list(map(len, self.rows))
+        if self.columns is not None:
+            return [len(self.columns) - 1] * len(self.lines)
         return list(map(str.count, self.plain, itertools.repeat(",")))
 
     def table(self, width: int, keep: list[int] | None):
@@ -166,6 +173,9 @@ class _Chunk:
         they all have ``width`` cells."""
         if self.rows is not None:
             return list(zip(*(self.rows if keep is None else [self.rows[i] for i in keep])))
+        if self.columns is not None:
+            return self.columns if keep is None else [[column[i] for i in keep]
+                                                      for column in self.columns]
         lines = self.plain if keep is None else [self.plain[i] for i in keep]
         flat = ",".join(lines).split(",")
         columns = [flat[j::width] for j in range(width)]
@@ -199,6 +209,31 @@ def _without_quotes(lines: list[str], text: str) -> list[str] | None:
     pieces[1::2] = '"'.join(pieces[1::2]).replace(",", "\0").split('"')
     plain = "".join(pieces).split("\n")
     return plain if len(plain) == len(lines) else None
+
+
+#: A cell without a comma, in a column of cells joined by line breaks (between them).
+_NO_COMMA_RE = re.compile("\n[^,\n]*(?=\n)")
+
+
+def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
+    """The cells of ``text`` (``n`` lines joined by ``\\n``, no NUL, no ``\\r``) column by
+    column where every cell of every line is quoted, each line has as many, and each holds a
+    comma and no quote or line break (so the csv module reads the cells without their quotes,
+    and ``csv.writer`` writes the lines as they are); ``None`` otherwise."""
+    pieces = text.split('"')  # the odd ones are inside quotes
+    if len(pieces) % 2 == 0 or pieces[0] or pieces[-1]:
+        return None
+    between = pieces[2:-1:2]  # what separates the quoted cells: a comma or a line break
+    cells = pieces[1::2]
+    width = len(cells) // n
+    if width * n != len(cells) or not set(between) <= {",", "\n"} \
+            or between.count("\n") != n - 1 or between[width - 1::width].count("\n") != n - 1:
+        return None  # (n - 1 line breaks between cells: none inside one)
+    columns = [cells[j::width] for j in range(width)]
+    for column in columns:
+        if _NO_COMMA_RE.search("\n" + "\n".join(column) + "\n"):
+            return None
+    return columns
 
 
 class _Reader:
@@ -316,7 +351,11 @@ class _Reader:
         text = "\n".join(parts)
         ended = text + "\n"  # every part ends a line (the last may end in "\r", of "\r\n")
         quoted = '"' in text
-        if ((quoted and not _SIMPLE_QUOTES_RE.fullmatch(text))
+        columns = None
+        if quoted and "\0" not in text:  # every cell quoted (vectors): split at the quotes
+            columns = _quoted_columns(text if "\r" not in text
+                                      else ended.replace("\r\n", "\n")[:-1], len(parts))
+        if ((quoted and columns is None and not _SIMPLE_QUOTES_RE.fullmatch(text))
                 or "\r" in text and text.count("\r") != ended.count("\r\n")
                 or max(map(len, parts)) >= MAX_LINE
                 or (_ODD_LINE_BREAK_RE.search(text) if not text.isascii()
@@ -333,6 +372,8 @@ class _Reader:
         if quoted:  # simple quotes: the csv module on the whole block, one record a line
             # quotes exactly where csv.writer puts them (around cells holding a comma): the
             # lines are the echo
+            if columns is not None:
+                return _Chunk(numbers, lines=lines, suspect=suspect, columns=columns)
             written = None if _QUOTED_NO_COMMA_RE.search(text) else lines
             plain = None if written is None else _without_quotes(
                 lines, text if "\r" not in text else "\n".join(lines))
