@@ -9,6 +9,7 @@ import sys
 
 from ..errors import InputError
 from .csvlines import _csv_lines
+from .floats import json_floats
 
 
 def open_source(source: str):
@@ -177,11 +178,17 @@ class _Chunk:
             return self.columns if keep is None else [[column[i] for i in keep]
                                                       for column in self.columns]
         lines = self.plain if keep is None else [self.plain[i] for i in keep]
-        flat = ",".join(lines).split(",")
-        columns = [flat[j::width] for j in range(width)]
-        if self.plain is not self.lines:  # the commas of quoted cells, back
-            columns = [_unquoted(column) for column in columns]
-        return columns
+        if not lines:
+            return [[] for _ in range(width)]
+
+        def split() -> list[list[str]]:
+            flat = ",".join(lines).split(",")
+            columns = [flat[j::width] for j in range(width)]
+            if self.plain is not self.lines:  # the commas of quoted cells, back
+                columns = [_unquoted(column) for column in columns]
+            return columns
+
+        return Table(split, len(lines), width, lines if self.plain is self.lines else None)
 
     def echo(self, keep: list[int] | None) -> list[str]:
         """The rows (all, or ``keep``) as CSV lines, as ``csv.writer`` writes them."""
@@ -189,6 +196,70 @@ class _Chunk:
             lines = self.lines if self.rows is None else self.written
             return lines if keep is None else [lines[i] for i in keep]
         return _csv_lines(self.rows if keep is None else [self.rows[i] for i in keep])
+
+
+class Table:
+    """The cells of a chunk's rows column by column (``table[j]``: a list of texts), split at
+    commas when first asked for; and, where every cell is a plain number, the values of all
+    of them read at once, without a text per cell (:meth:`numbers`)."""
+
+    __slots__ = ("_split", "_columns", "_lines", "_numbers", "n", "width")
+
+    def __init__(self, split, n: int, width: int, lines: list[str] | None):
+        self._split, self._columns, self._lines, self._numbers = split, None, lines, False
+        self.n, self.width = n, width
+
+    def __len__(self) -> int:
+        return self.width
+
+    def __getitem__(self, j: int) -> list[str]:
+        if self._columns is None:
+            self._columns = self._split()
+        return self._columns[j]
+
+    def __iter__(self):
+        return iter([self[j] for j in range(self.width)])
+
+    def numbers(self):
+        """The ``(n, width)`` float64 values of the cells where every one is a plain number
+        (the characters of numbers, each as :func:`~dyncalc.batch.columns._plain_floats`
+        reads it: ``float``'s value, read as JSON, so no leading zero), else ``None``."""
+        if self._numbers is False:
+            self._numbers = None
+            text = None if self._lines is None else "\n".join(self._lines)
+            if text and _PLAIN_TABLE_RE.fullmatch(text):
+                values = json_floats(text.replace("\n", ","), self.n * self.width)
+                if values is not None:
+                    self._numbers = values.reshape(self.n, self.width)
+        return self._numbers
+
+
+    def later(self, j: int) -> "_Later":
+        """Column ``j``, split only if a cell of it is asked for."""
+        return _Later(self, j)
+
+
+class _Later:
+    """A column of a :class:`Table` split only when a cell of it is asked for (a column of
+    plain numbers whose values :meth:`Table.numbers` gave: its texts are rarely needed)."""
+
+    __slots__ = ("table", "j")
+
+    def __init__(self, table: Table, j: int):
+        self.table, self.j = table, j
+
+    def __len__(self) -> int:
+        return self.table.n
+
+    def __getitem__(self, i):
+        return self.table[self.j][i]
+
+    def __iter__(self):
+        return iter(self.table[self.j])
+
+
+#: The characters of a table of plain numbers (:meth:`Table.numbers`).
+_PLAIN_TABLE_RE = re.compile(r"[0-9.eE+\- \t\n,]*")
 
 
 def _unquoted(column: list[str]) -> list[str]:
