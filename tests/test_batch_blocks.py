@@ -254,3 +254,28 @@ def test_quoted_blocks_echo_what_the_csv_writer_writes(pieces, size):
         rows = [chunk.row(i) for i in range(len(chunk))]
         assert chunk.echo(None) == _csv_lines(rows)
         assert chunk.echo([0]) == _csv_lines(rows[:1])
+
+
+@pytest.mark.parametrize("text, plain", [
+    ("1.5,2\n-0,3e2\n 4 ,\t5\n", True),          # -0 (an integer: float gives -0.0), blanks
+    ("1e400,2\n3,4\n", False),                    # beyond float64 (orjson refuses it)
+    ("1,2\n007,3\n", False),                      # a leading zero: the one-off refuses it
+    ("1,2\n+3,4\n", False),                       # + and .5: float reads them, JSON does not
+    ("1,2\n.5,4\n", False),
+    ("1,2\n,4\n", False),                         # an empty cell
+    ("1,2\n3 N,4\n", False),                      # a unit
+])
+def test_table_numbers_are_the_plain_floats_of_each_column(text, plain):
+    """A chunk of plain numbers is read at once, each as ``_plain_floats`` reads its column
+    (bit for bit); any other chunk gives None (and each column is read on its own)."""
+    from dyncalc.batch.columns import _plain_floats
+
+    chunk = source._Reader(_stream(text)).chunk(100)
+    table = chunk.table(2, None)
+    values = table.numbers()
+    assert (values is not None) == plain
+    if plain:
+        for j in range(2):
+            assert values[:, j].view(np.int64).tolist() == \
+                _plain_floats(list(table[j])).view(np.int64).tolist()
+        assert np.signbit(values[1, 0]) and values[2].tolist() == [4.0, 5.0]  # -0 as float

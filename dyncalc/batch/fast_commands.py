@@ -22,6 +22,7 @@ from .columns import (_LEADING_ZERO_RE, _LITERAL_CELL, _converted_to, _plain_flo
 from .fast import FastBlock, _by_columns_given, _input_texts
 from .floats import json_floats, parse_floats
 from .header import Column, with_header_unit
+from .source import Table
 
 #: A vector cell the vectorised path reads: three plain numbers, comma-separated, no unit.
 _VECTOR_RE = re.compile(rf"[ \t]*({_LITERAL_CELL})[ \t]*,[ \t]*({_LITERAL_CELL})[ \t]*,"
@@ -85,17 +86,27 @@ def _command_fast(spec, columns: list[Column], table, want_json: bool,
     columns given); every other row is left to the generic path."""
     if not table or len(columns) > 62:
         return []
-    n = len(table[0])
-    cells = {col.key: _stripped(table[col.index]) for col in columns}
-    present = [np.ones(n, dtype=bool) if "" not in cells[col.key]
-               else np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
-               for col in columns]
+    n = table.n if isinstance(table, Table) else len(table[0])
+    # every cell a plain number: the values at once, the texts made only if needed (JSON)
+    numbers = table.numbers() if isinstance(table, Table) else None
+    plain: dict[str, np.ndarray] = {}
+    if numbers is not None:
+        cells = {col.key: _stripped(table[col.index]) if want_json
+                 else table.later(col.index, _stripped) for col in columns}
+        plain = {col.key: np.ascontiguousarray(numbers[:, col.index]) for col in columns}
+        present = [np.ones(n, dtype=bool) for _col in columns]
+    else:
+        cells = {col.key: _stripped(table[col.index]) for col in columns}
+        present = [np.ones(n, dtype=bool) if "" not in cells[col.key]
+                   else np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
+                   for col in columns]
     blocks = []
     for given, rows in _by_columns_given(columns, present):
         if not given:
             continue
         for subset in _by_words(spec, given, rows, cells):
-            blocks += _blocks(spec, given, subset, cells, want_json, cache)
+            blocks += _blocks(spec, given, subset, cells, want_json, cache,
+                              plain if len(subset) == n else {})
     return blocks
 
 
@@ -138,7 +149,7 @@ def _by_words(spec, given: list[Column], rows: np.ndarray, cells):
             yield np.asarray(members, dtype=np.intp)
 
 
-def _read(spec, col: Column, column: list[str], cache: dict):
+def _read(spec, col: Column, column: list[str], cache: dict, plain=None):
     """``(ok, SI values, shown values, unit JSON, kind)`` of one column of a block, or
     ``None`` where the column cannot be read here (the generic path reads it). For a number
     column the fourth item is whether every cell is a plain number instead."""
@@ -159,9 +170,9 @@ def _read(spec, col: Column, column: list[str], cache: dict):
         return ok, words, None, None, "word"
     if param.dim is None:
         return None
-    if param.kind == "quantity" and (param.metavar != "VEC"
+    if param.kind == "quantity" and (plain is not None or param.metavar != "VEC"
                                      or not any("," in cell for cell in column)):
-        plain = _plain_floats(column)
+        plain = _plain_floats(column) if plain is None else plain
         read = _read_column(column, col.unit, _Param(param.name, param.dim), spec.strict,
                             cache, plain)
         # (for a number, the fourth item says every cell is a plain number: its JSON input
@@ -184,11 +195,11 @@ def _read(spec, col: Column, column: list[str], cache: dict):
 
 
 def _blocks(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
-            cache: dict) -> list[FastBlock]:
+            cache: dict, plain: dict | None = None) -> list[FastBlock]:
     """The blocks of these rows: one, or one per combination of the units their number
     cells were typed in (an adapter may compute in the unit typed; it is told one per
-    column)."""
-    read = _read_rows(spec, given, rows, cells, cache)
+    column). ``plain``: the values of columns of plain numbers, where ``rows`` are all."""
+    read = _read_rows(spec, given, rows, cells, cache, plain)
     if read is None:
         return []
     reads, _arrays, good = read
@@ -219,16 +230,21 @@ def _as_list(block) -> list[FastBlock]:
     return block if isinstance(block, list) else [block]
 
 
-def _read_rows(spec, given: list[Column], rows: np.ndarray, cells, cache: dict):
+def _read_rows(spec, given: list[Column], rows: np.ndarray, cells, cache: dict,
+               plain: dict | None = None):
     """``(reads by key: (read, cells), SI arrays by key, good rows)`` of these rows' columns,
-    or ``None`` where a column cannot be read here."""
+    or ``None`` where a column cannot be read here. ``plain``: the values of columns of
+    plain numbers, where ``rows`` are all."""
     good = np.ones(len(rows), dtype=bool)
     arrays: dict[str, Any] = {}
     reads = {}
     row_list = rows.tolist()
+    plain = plain or {}
     for col in given:
-        column = [cells[col.key][i] for i in row_list]
-        read = _read(spec, col, column, cache)
+        whole = col.key in plain or (len(rows) == len(cells[col.key])
+                                     and (not len(rows) or row_list[-1] == len(rows) - 1))
+        column = cells[col.key] if whole else [cells[col.key][i] for i in row_list]
+        read = _read(spec, col, column, cache, plain.get(col.key))
         if read is None:
             return None
         good &= read[0]
@@ -315,7 +331,9 @@ def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
     units = {}
     for key, ((_ok, _si, shown, info, kind), _column) in reads.items():
         if kind == "number":
-            pairs = {shown.unit_json[i] for i in np.flatnonzero(good).tolist()}
+            typed = shown.unit_json
+            pairs = {typed[0]} if typed and typed.count(typed[0]) == len(typed) else {
+                typed[i] for i in np.flatnonzero(good).tolist()}
         elif kind == "vector":
             pairs = {info.unit_json}
         else:
@@ -393,7 +411,8 @@ class _Vectors:
         unit, assumed = self.info.unit_json
         rows = keep.tolist()
         shown = np.asarray(self.shown, dtype=np.float64)[keep]
-        cells = [self.column[i] for i in rows]
+        cells = list(self.column) if len(rows) == len(self.column) else [
+            self.column[i] for i in rows]  # (keep: sorted rows, all of them or fewer)
         if np.isfinite(shown).all() and "\t" not in "".join(cells):
             suffix = json.dumps(" " + self.header_unit)[1:-1] if self.header_unit else ""
             text = ['"', cells, suffix + '"']  # with_header_unit: "cell unit", nothing to escape

@@ -234,28 +234,33 @@ class Table:
         return self._numbers
 
 
-    def later(self, j: int) -> "_Later":
-        """Column ``j``, split only if a cell of it is asked for."""
-        return _Later(self, j)
+    def later(self, j: int, make=None) -> "_Later":
+        """Column ``j`` (or ``make(column j)``), split only when a cell of it is asked for."""
+        return _Later(lambda: self[j] if make is None else make(self[j]), self.n)
 
 
 class _Later:
-    """A column of a :class:`Table` split only when a cell of it is asked for (a column of
-    plain numbers whose values :meth:`Table.numbers` gave: its texts are rarely needed)."""
+    """A column made only when a cell of it is asked for (a column of plain numbers whose
+    values :meth:`Table.numbers` gave: its texts are rarely needed)."""
 
-    __slots__ = ("table", "j")
+    __slots__ = ("make", "n", "cells")
 
-    def __init__(self, table: Table, j: int):
-        self.table, self.j = table, j
+    def __init__(self, make, n: int):
+        self.make, self.n, self.cells = make, n, None
+
+    def _made(self) -> list[str]:
+        if self.cells is None:
+            self.cells = self.make()
+        return self.cells
 
     def __len__(self) -> int:
-        return self.table.n
+        return self.n
 
     def __getitem__(self, i):
-        return self.table[self.j][i]
+        return self._made()[i]
 
     def __iter__(self):
-        return iter(self.table[self.j])
+        return iter(self._made())
 
 
 #: The characters of a table of plain numbers (:meth:`Table.numbers`).
