@@ -18,7 +18,7 @@ from itertools import chain, repeat
 
 import numpy as np
 
-from .floats import reprs
+from .floats import int_texts, reprs
 
 
 def lines(parts: list, n: int, joined: bool = False):
@@ -34,8 +34,7 @@ def lines(parts: list, n: int, joined: bool = False):
         if isinstance(part, str):
             columns.append(repeat(part))
         elif isinstance(part, np.ndarray):
-            columns.append(list(map(str, part.tolist())) if part.dtype.kind == "i"
-                           else reprs(part))
+            columns.append(int_texts(part) if part.dtype.kind == "i" else reprs(part))
         else:
             columns.append(part)
     if all(isinstance(c, repeat) for c in columns):  # texts only: every line the same

@@ -85,6 +85,15 @@ def reprs(array) -> list[str]:
     return texts
 
 
+def int_texts(array) -> list[str]:
+    """``str`` of each integer of a one-dimensional integer array (line numbers)."""
+    orjson = _orjson()
+    array = np.ascontiguousarray(array, dtype=np.int64)
+    if orjson is None or not len(array):
+        return list(map(str, array.tolist()))
+    return orjson.dumps(array, option=orjson.OPT_SERIALIZE_NUMPY).decode()[1:-1].split(",")
+
+
 def reprs_rows(array) -> list[str]:
     """The rows of a two-dimensional float64 array, each its floats' ``repr`` joined by
     commas (vectors in a CSV cell)."""

@@ -131,11 +131,13 @@ class _Chunk:
     written so by ``csv.writer``) with their cells column by column (``lines`` and
     ``columns``), or the records the csv module read (``rows``)."""
 
-    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written", "plain", "columns")
+    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written", "plain", "columns", "text")
 
     def __init__(self, numbers, *, lines=None, rows=None, suspect: bool = False,
-                 written=None, plain=None, columns=None):
+                 written=None, plain=None, columns=None, text=None):
         self.numbers, self.lines, self.rows = numbers, lines, rows
+        #: the lines joined by line breaks, if the reader has them so (else None)
+        self.text = text
         #: the lines of ``rows`` when they are what ``csv.writer`` writes for them (else None)
         self.written = written
         self.plain = lines if plain is None else plain
@@ -188,7 +190,10 @@ class _Chunk:
                 columns = [_unquoted(column) for column in columns]
             return columns
 
-        return Table(split, len(lines), width, lines if self.plain is self.lines else None)
+        text = None
+        if self.plain is self.lines:
+            text = self.text if keep is None and self.text is not None else "\n".join(lines)
+        return Table(split, len(lines), width, text)
 
     def echo(self, keep: list[int] | None) -> list[str]:
         """The rows (all, or ``keep``) as CSV lines, as ``csv.writer`` writes them."""
@@ -203,10 +208,12 @@ class Table:
     commas when first asked for; and, where every cell is a plain number, the values of all
     of them read at once, without a text per cell (:meth:`numbers`)."""
 
-    __slots__ = ("_split", "_columns", "_lines", "_numbers", "n", "width")
+    __slots__ = ("_split", "_columns", "_text", "_numbers", "n", "width")
 
-    def __init__(self, split, n: int, width: int, lines: list[str] | None):
-        self._split, self._columns, self._lines, self._numbers = split, None, lines, False
+    def __init__(self, split, n: int, width: int, text: str | None):
+        """``split()`` gives the columns; ``text``: the rows' lines joined by line breaks
+        where their cells are split at every comma (else None)."""
+        self._split, self._columns, self._text, self._numbers = split, None, text, False
         self.n, self.width = n, width
 
     def __len__(self) -> int:
@@ -226,8 +233,9 @@ class Table:
         reads it: ``float``'s value, read as JSON, so no leading zero), else ``None``."""
         if self._numbers is False:
             self._numbers = None
-            text = None if self._lines is None else "\n".join(self._lines)
-            if text and _PLAIN_TABLE_RE.fullmatch(text):
+            text = self._text
+            # (what JSON reads without '"[{tfn', json_floats' test, is numbers and blanks)
+            if text:
                 values = json_floats(text.replace("\n", ","), self.n * self.width)
                 if values is not None:
                     self._numbers = values.reshape(self.n, self.width)
@@ -261,10 +269,6 @@ class _Later:
 
     def __iter__(self):
         return iter(self._made())
-
-
-#: The characters of a table of plain numbers (:meth:`Table.numbers`).
-_PLAIN_TABLE_RE = re.compile(r"[0-9.eE+\- \t\n,]*")
 
 
 def _unquoted(column: list[str]) -> list[str]:
@@ -457,7 +461,8 @@ class _Reader:
                 return _Chunk(numbers, lines=lines, suspect=suspect, plain=plain)
             return _Chunk(numbers, rows=list(csv.reader(lines, strict=True)), suspect=suspect,
                           written=written)
-        return _Chunk(numbers, lines=lines, suspect=suspect)
+        return _Chunk(numbers, lines=lines, suspect=suspect,
+                      text=text if lines is parts else None)
 
     def _failed(self, line: int, exc: OSError) -> None:
         self.fatal = f"line {line}: reading the file failed: {exc.strerror or exc}"
