@@ -12,9 +12,9 @@ from ..errors import InputError
 from ..physics.columns import kernel_of
 from ..physics.numerics import finite_nonzero
 from ..physics.outcome import damped_arrays
+from .cells import Table
 from .columns import _plain_floats, _read_column
 from .header import Column
-from .source import Table
 from .inputs import input_parts as _input_texts
 
 

@@ -17,12 +17,12 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .cells import Table
 from .columns import (_LEADING_ZERO_RE, _LITERAL_CELL, _converted_to, _plain_floats,
                       _read_column, _unit_info)
 from .fast import FastBlock, _by_columns_given, _input_texts
 from .floats import json_floats, parse_floats
 from .header import Column, with_header_unit
-from .source import Table
 
 #: A vector cell the vectorised path reads: three plain numbers, comma-separated, no unit.
 _VECTOR_RE = re.compile(rf"[ \t]*({_LITERAL_CELL})[ \t]*,[ \t]*({_LITERAL_CELL})[ \t]*,"
