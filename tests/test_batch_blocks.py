@@ -160,10 +160,47 @@ def test_simple_quoted_cells_are_read_a_block_at_a_time():
     assert reader.stream is None  # never handed over to the line by line reader
     assert [len(c) for c in chunks] == [1024, 1024, 953]
     assert chunks[-1].row(952) == ["0,0,2999", "2999,1,0"] and chunks[-1].numbers[-1] == 3001
-    assert chunks[0].echo([1]) == ['"0,0,0","0,1,0"'] and chunks[0].written is not None
+    assert chunks[0].echo([1]) == ['"0,0,0","0,1,0"']
+    assert chunks[0].rows is None  # split at commas without the csv module (quotes taken off)
     reader = source._Reader(_stream('a,b\n"1",2\n'))                # quoted without need
     chunk = reader.chunk(10)
     assert reader.stream is None and chunk.written is None and chunk.echo([1]) == ["1,2"]
+
+
+@pytest.mark.parametrize("text, split", [
+    ('"0,0,1","1,1,0"\n"0,0,2","2,1,0"\n', True),           # every cell quoted
+    ('"0,0,1","1,1,0"\r\n"0, ,2",",x"\r\n', True),             # ... CRLF
+    ('"0,0,1","1,1,0"\n"0,0,2","2,1,0","3,"\n', True),        # ... not as many on each line
+    ('"0,0,1","1"\n"0,0,2","2,1,0"\n', False),               # ... one without a comma
+    ('"0,0,1","1,""1",0"\n', False),                          # ... a quote inside
+    ('"0,0,1"\n', True),                                      # one cell
+    ('x,"1,2,3",,y\r\n"a,b",2,,"c,d"\r\n', True),            # mixed, an empty cell, CRLF
+    ('",,,",","\n" , ",a\n', True),                          # commas and spaces only
+    ('x,"1,2,3",,"",y\n"a,b",2,"",,"c"\n', False),            # "": csv.writer would not quote
+    ('"1,2","3"\n"4,5",6\n', False),                         # nor "3"
+    ('"1,2",3\n\n"4,5",6\n', False),                        # a blank line (no cell for csv)
+])
+def test_simple_quotes_split_as_the_csv_module_reads(text, split):
+    """Lines in simple quotes are split at commas with their quotes off: their rows, cell
+    counts, columns and echo are the csv module's (and csv.writer's), however they are read."""
+    import csv
+    import io
+
+    records = list(csv.reader(io.StringIO(text), strict=True))
+    chunk = source._Reader(_stream(text)).chunk(100)
+    n = len(records)
+    assert len(chunk) == n and (chunk.rows is None) == split
+    assert [chunk.row(i) for i in range(n)] == records
+    widths = chunk.widths()
+    assert [w + (chunk.rows is None) for w in widths] == list(map(len, records))
+    if len(set(map(len, records))) == 1:
+        columns = [list(c) for c in chunk.table(len(records[0]), None)]
+        assert columns == [list(c) for c in zip(*records)]
+        assert [list(c) for c in chunk.table(len(records[0]), [n - 1])] == \
+            [[c] for c in records[-1]]
+    written = io.StringIO()
+    csv.writer(written, lineterminator="\n").writerows(records)
+    assert "\n".join(chunk.echo(None)) + "\n" == written.getvalue()
 
 
 # --- vectors read a column at a time -------------------------------------------------------------
@@ -217,3 +254,28 @@ def test_quoted_blocks_echo_what_the_csv_writer_writes(pieces, size):
         rows = [chunk.row(i) for i in range(len(chunk))]
         assert chunk.echo(None) == _csv_lines(rows)
         assert chunk.echo([0]) == _csv_lines(rows[:1])
+
+
+@pytest.mark.parametrize("text, plain", [
+    ("1.5,2\n-0,3e2\n 4 ,\t5\n", True),          # -0 (an integer: float gives -0.0), blanks
+    ("1e400,2\n3,4\n", False),                    # beyond float64 (orjson refuses it)
+    ("1,2\n007,3\n", False),                      # a leading zero: the one-off refuses it
+    ("1,2\n+3,4\n", False),                       # + and .5: float reads them, JSON does not
+    ("1,2\n.5,4\n", False),
+    ("1,2\n,4\n", False),                         # an empty cell
+    ("1,2\n3 N,4\n", False),                      # a unit
+])
+def test_table_numbers_are_the_plain_floats_of_each_column(text, plain):
+    """A chunk of plain numbers is read at once, each as ``_plain_floats`` reads its column
+    (bit for bit); any other chunk gives None (and each column is read on its own)."""
+    from dyncalc.batch.columns import _plain_floats
+
+    chunk = source._Reader(_stream(text)).chunk(100)
+    table = chunk.table(2, None)
+    values = table.numbers()
+    assert (values is not None) == plain
+    if plain:
+        for j in range(2):
+            assert values[:, j].view(np.int64).tolist() == \
+                _plain_floats(list(table[j])).view(np.int64).tolist()
+        assert np.signbit(values[1, 0]) and values[2].tolist() == [4.0, 5.0]  # -0 as float

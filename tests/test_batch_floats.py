@@ -186,3 +186,14 @@ def test_strings_of_the_plain_alphabet(cells):
                 min_size=1, max_size=8))
 def test_numbers_of_hypothesis(cells):
     check_parse(cells)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.integers(min_value=-2 ** 63, max_value=2 ** 63 - 1), max_size=50))
+@example([0, -1, 2 ** 63 - 1, -2 ** 63, 10, 100])
+def test_int_texts_are_str_of_each_integer(values):
+    """Line numbers written a column at a time are ``str`` of each, with orjson and without."""
+    def check(ints):
+        assert floats.int_texts(np.array(ints, dtype=np.int64)) == list(map(str, ints))
+
+    both(check)(values)

@@ -3,8 +3,9 @@ bit for bit; rows where the one-off refuses (overflow) or warns (underflow) are 
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
-from dyncalc.errors import PhysicsError
+from dyncalc.errors import InputError, PhysicsError
 from dyncalc.physics.columns import kernel_of
 from dyncalc.physics.frames import relative_acceleration
 
@@ -51,3 +52,45 @@ def test_relative_acceleration_kernel_without_optional_vectors():
     assert "F_c" not in out.values
     assert out.exact.tolist() == [True, False]          # 2e400 overflows: refused
     assert out.values["a"][0].tolist() == [0.0, 12.0, 0.0]
+
+
+@pytest.mark.parametrize("given", [(), ("r",), ("alpha",), ("r", "alpha"), ("a0",), ("a_r",),
+                                   ("m",), ("alpha", "a_r", "m")])
+def test_relative_acceleration_kernel_on_subsets(given):
+    """Terms of vectors not given are not computed (zeros, or ``a_c`` itself): the same bits
+    and the same exact rows as the one-off, with extremes (subnormal, huge, inf, nan, -0.0)."""
+    rng = np.random.default_rng(len(given) * 7 + sum(map(len, given)))
+    n = 600
+
+    def vectors():
+        v = 10.0 ** rng.uniform(-320, 300, (n, 3)) * rng.choice([-1.0, 1.0], (n, 3))
+        v = v * (rng.random((n, 3)) > 0.2)
+        v[rng.random((n, 3)) < 0.01] = np.inf
+        v[rng.random((n, 3)) < 0.01] = np.nan
+        v[rng.random((n, 3)) < 0.05] = -0.0
+        return np.where(rng.random((n, 1)) < 0.5, v, 10.0 ** rng.uniform(-3, 3, (n, 3)))
+
+    Om, v = vectors(), vectors()
+    extra = {name: vectors() for name in given if name != "m"}
+    if "m" in given:
+        extra["m"] = 10.0 ** rng.uniform(-3, 3, n)
+    out = kernel_of(relative_acceleration)(Om, v, **extra)
+    names = ["a_c", "a_euler", "a_centripetal", "a_transport", "a"] + (["F_c"] if "m" in given
+                                                                       else [])
+    assert list(out.values) == names
+    exact = 0
+    for i in range(n):
+        try:
+            with np.errstate(all="ignore"):
+                fa = relative_acceleration(Om[i], v[i], **{k: x[i] for k, x in extra.items()})
+        except (PhysicsError, InputError):
+            assert not out.exact[i], i
+            continue
+        if fa.warnings:
+            assert not out.exact[i], i
+        if out.exact[i]:
+            exact += 1
+            for name in names:
+                assert np.array_equal(getattr(fa, name).view(np.int64),
+                                      out.values[name][i].view(np.int64)), (i, name)
+    assert exact > n // 4

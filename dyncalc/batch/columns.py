@@ -8,7 +8,7 @@ import re
 import numpy as np
 
 from ..errors import InputError
-from .floats import parse_floats
+from .floats import json_floats, parse_floats
 from .header import _LITERAL
 
 #: A unit the vectorised path may read once for a whole column: names, ``*``, ``/``, and
@@ -37,11 +37,16 @@ def _plain_floats(cells) -> np.ndarray | None:
     otherwise (a cell with a unit, an empty cell, anything the one-off reader would read
     differently from ``float``)."""
     joined = "\n".join(cells)
-    if not joined or not _PLAIN_COLUMN_CHARS_RE.fullmatch(joined) \
-            or _LEADING_ZERO_RE.search(joined):
+    if not joined or not _PLAIN_COLUMN_CHARS_RE.fullmatch(joined):
         return None
-    try:
-        return parse_floats(cells)  # float of each cell, a column at a time
+    # JSON refuses a leading zero: what orjson reads needs no search for one
+    values = json_floats(joined.replace("\n", ","), len(cells), cells)
+    if values is not None:
+        return values
+    if _LEADING_ZERO_RE.search(joined):
+        return None
+    try:  # (``+5``, ``.5``: ``float`` of each cell)
+        return np.fromiter(map(float, cells), dtype=np.float64, count=len(cells))
     except ValueError:
         return None
 

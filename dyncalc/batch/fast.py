@@ -12,6 +12,7 @@ from ..errors import InputError
 from ..physics.columns import kernel_of
 from ..physics.numerics import finite_nonzero
 from ..physics.outcome import damped_arrays
+from .cells import Table
 from .columns import _plain_floats, _read_column
 from .header import Column
 from .inputs import input_parts as _input_texts
@@ -53,11 +54,18 @@ def _natural_frequency_fast(spec, columns: list[Column], table, want_json: bool,
     its ``fast`` path); ``table`` holds the chunk's cells column by column."""
     if not table or len(columns) > 62:
         return []
-    n = len(table[0])
+    n = table.n if isinstance(table, Table) else len(table[0])
+    # every cell a plain number: the values at once, the texts split only if needed (JSON)
+    numbers = table.numbers() if isinstance(table, Table) else None
     present: dict[str, np.ndarray] = {}
     cells: dict[str, Any] = {}
     plain: dict[str, np.ndarray | None] = {}
     for col in columns:
+        if numbers is not None:
+            plain[col.key] = np.ascontiguousarray(numbers[:, col.index])
+            present[col.key] = np.ones(n, dtype=bool)
+            cells[col.key] = table[col.index] if want_json else table.later(col.index)
+            continue
         column = table[col.index]
         values = _plain_floats(column)
         plain[col.key] = values

@@ -17,10 +17,11 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .cells import Table
 from .columns import (_LEADING_ZERO_RE, _LITERAL_CELL, _converted_to, _plain_floats,
                       _read_column, _unit_info)
 from .fast import FastBlock, _by_columns_given, _input_texts
-from .floats import parse_floats
+from .floats import json_floats, parse_floats
 from .header import Column, with_header_unit
 
 #: A vector cell the vectorised path reads: three plain numbers, comma-separated, no unit.
@@ -30,15 +31,26 @@ _VECTOR_RE = re.compile(rf"[ \t]*({_LITERAL_CELL})[ \t]*,[ \t]*({_LITERAL_CELL})
 
 #: The characters of a column of such cells, joined by commas.
 _VECTOR_CHARS_RE = re.compile(r"[0-9.eE+\- \t,]*")
+#: A column of cells of three numbers each (the characters of numbers, two commas a cell),
+#: joined by line breaks.
+_NUMBER_CHARS = r"[0-9.eE+\- \t]*+"
+_VECTOR_COLUMN_RE = re.compile(rf"(?:{_NUMBER_CHARS},{_NUMBER_CHARS},{_NUMBER_CHARS}\n)*+"
+                               rf"{_NUMBER_CHARS},{_NUMBER_CHARS},{_NUMBER_CHARS}")
 
 
 def _vectors(column: list[str]) -> tuple[np.ndarray, np.ndarray]:
     """``(values (n, 3), ok)`` of a column of vector cells: a column whose every cell is three
     plain numbers (two commas a cell, the characters of numbers, no leading zero, every
-    component one ``float`` reads: what :data:`_VECTOR_RE` matches) is read by one
-    :func:`parse_floats` of its components; any other is read a cell at a time (``ok`` False
-    where a cell is not one)."""
+    component one ``float`` reads: what :data:`_VECTOR_RE` matches) is read at once (its
+    components as JSON numbers, or by one :func:`parse_floats`); any other is read a cell at a
+    time (``ok`` False where a cell is not one)."""
     n = len(column)
+    lined = "\n".join(column)
+    if n and _VECTOR_COLUMN_RE.fullmatch(lined):
+        # JSON refuses a leading zero: what orjson reads needs no search for one
+        flat = json_floats(lined.replace("\n", ","), 3 * n)
+        if flat is not None:
+            return flat.reshape(n, 3), np.ones(n, dtype=bool)
     joined = ",".join(column)
     if (n and _VECTOR_CHARS_RE.fullmatch(joined) and not _LEADING_ZERO_RE.search(joined)
             and list(map(str.count, column, itertools.repeat(","))).count(2) == n):
@@ -74,28 +86,42 @@ def _command_fast(spec, columns: list[Column], table, want_json: bool,
     columns given); every other row is left to the generic path."""
     if not table or len(columns) > 62:
         return []
-    n = len(table[0])
-    cells = {col.key: _stripped(table[col.index]) for col in columns}
-    present = [np.ones(n, dtype=bool) if "" not in cells[col.key]
-               else np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
-               for col in columns]
+    n = table.n if isinstance(table, Table) else len(table[0])
+    # every cell a plain number: the values at once, the texts made only if needed (JSON)
+    numbers = table.numbers() if isinstance(table, Table) else None
+    plain: dict[str, np.ndarray] = {}
+    if numbers is not None:
+        cells = {col.key: _stripped(table[col.index]) if want_json
+                 else table.later(col.index, _stripped) for col in columns}
+        plain = {col.key: np.ascontiguousarray(numbers[:, col.index]) for col in columns}
+        present = [np.ones(n, dtype=bool) for _col in columns]
+    else:
+        cells = {col.key: _stripped(table[col.index]) for col in columns}
+        present = [np.ones(n, dtype=bool) if "" not in cells[col.key]
+                   else np.fromiter((c != "" for c in cells[col.key]), dtype=bool, count=n)
+                   for col in columns]
     blocks = []
     for given, rows in _by_columns_given(columns, present):
         if not given:
             continue
         for subset in _by_words(spec, given, rows, cells):
-            blocks += _blocks(spec, given, subset, cells, want_json, cache)
+            blocks += _blocks(spec, given, subset, cells, want_json, cache,
+                              plain if len(subset) == n else {})
     return blocks
 
 
 def _stripped(column) -> list[str]:
     """The cells without their surrounding white space (a column with none kept as it is)."""
-    if _SPACE_RE.search("".join(column)):  # what str.strip strips (str.isspace)
+    joined = "".join(column)
+    if (any(map(joined.__contains__, _ASCII_SPACES)) if joined.isascii()
+            else _SPACE_RE.search(joined)):  # what str.strip strips (str.isspace)
         return [c.strip() for c in column]
     return list(column)
 
 
 _SPACE_RE = re.compile(r"\s")
+#: The ASCII characters ``str.isspace`` knows (a search for each is faster than the regex).
+_ASCII_SPACES = tuple(c for c in map(chr, range(128)) if c.isspace())
 
 
 #: The most distinct word combinations (``body``, ``cycles``) a block is split into; beyond,
@@ -123,7 +149,7 @@ def _by_words(spec, given: list[Column], rows: np.ndarray, cells):
             yield np.asarray(members, dtype=np.intp)
 
 
-def _read(spec, col: Column, column: list[str], cache: dict):
+def _read(spec, col: Column, column: list[str], cache: dict, plain=None):
     """``(ok, SI values, shown values, unit JSON, kind)`` of one column of a block, or
     ``None`` where the column cannot be read here (the generic path reads it). For a number
     column the fourth item is whether every cell is a plain number instead."""
@@ -144,9 +170,9 @@ def _read(spec, col: Column, column: list[str], cache: dict):
         return ok, words, None, None, "word"
     if param.dim is None:
         return None
-    if param.kind == "quantity" and (param.metavar != "VEC"
+    if param.kind == "quantity" and (plain is not None or param.metavar != "VEC"
                                      or not any("," in cell for cell in column)):
-        plain = _plain_floats(column)
+        plain = _plain_floats(column) if plain is None else plain
         read = _read_column(column, col.unit, _Param(param.name, param.dim), spec.strict,
                             cache, plain)
         # (for a number, the fourth item says every cell is a plain number: its JSON input
@@ -169,11 +195,11 @@ def _read(spec, col: Column, column: list[str], cache: dict):
 
 
 def _blocks(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
-            cache: dict) -> list[FastBlock]:
+            cache: dict, plain: dict | None = None) -> list[FastBlock]:
     """The blocks of these rows: one, or one per combination of the units their number
     cells were typed in (an adapter may compute in the unit typed; it is told one per
-    column)."""
-    read = _read_rows(spec, given, rows, cells, cache)
+    column). ``plain``: the values of columns of plain numbers, where ``rows`` are all."""
+    read = _read_rows(spec, given, rows, cells, cache, plain)
     if read is None:
         return []
     reads, _arrays, good = read
@@ -204,16 +230,21 @@ def _as_list(block) -> list[FastBlock]:
     return block if isinstance(block, list) else [block]
 
 
-def _read_rows(spec, given: list[Column], rows: np.ndarray, cells, cache: dict):
+def _read_rows(spec, given: list[Column], rows: np.ndarray, cells, cache: dict,
+               plain: dict | None = None):
     """``(reads by key: (read, cells), SI arrays by key, good rows)`` of these rows' columns,
-    or ``None`` where a column cannot be read here."""
+    or ``None`` where a column cannot be read here. ``plain``: the values of columns of
+    plain numbers, where ``rows`` are all."""
     good = np.ones(len(rows), dtype=bool)
     arrays: dict[str, Any] = {}
     reads = {}
     row_list = rows.tolist()
+    plain = plain or {}
     for col in given:
-        column = [cells[col.key][i] for i in row_list]
-        read = _read(spec, col, column, cache)
+        whole = col.key in plain or (len(rows) == len(cells[col.key])
+                                     and (not len(rows) or row_list[-1] == len(rows) - 1))
+        column = cells[col.key] if whole else [cells[col.key][i] for i in row_list]
+        read = _read(spec, col, column, cache, plain.get(col.key))
         if read is None:
             return None
         good &= read[0]
@@ -316,7 +347,9 @@ def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
     units = {}
     for key, ((_ok, _si, shown, info, kind), _column) in reads.items():
         if kind == "number":
-            pairs = {shown.unit_json[i] for i in np.flatnonzero(good).tolist()}
+            typed = shown.unit_json
+            pairs = {typed[0]} if typed and typed.count(typed[0]) == len(typed) else {
+                typed[i] for i in np.flatnonzero(good).tolist()}
         elif kind == "vector":
             pairs = {info.unit_json}
         else:
@@ -394,7 +427,8 @@ class _Vectors:
         unit, assumed = self.info.unit_json
         rows = keep.tolist()
         shown = np.asarray(self.shown, dtype=np.float64)[keep]
-        cells = [self.column[i] for i in rows]
+        cells = list(self.column) if len(rows) == len(self.column) else [
+            self.column[i] for i in rows]  # (keep: sorted rows, all of them or fewer)
         if np.isfinite(shown).all() and "\t" not in "".join(cells):
             suffix = json.dumps(" " + self.header_unit)[1:-1] if self.header_unit else ""
             text = ['"', cells, suffix + '"']  # with_header_unit: "cell unit", nothing to escape

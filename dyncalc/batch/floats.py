@@ -29,6 +29,7 @@ Example::
 from __future__ import annotations
 
 import functools
+import re
 
 import numpy as np
 
@@ -84,6 +85,15 @@ def reprs(array) -> list[str]:
     return texts
 
 
+def int_texts(array) -> list[str]:
+    """``str`` of each integer of a one-dimensional integer array (line numbers)."""
+    orjson = _orjson()
+    array = np.ascontiguousarray(array, dtype=np.int64)
+    if orjson is None or not len(array):
+        return list(map(str, array.tolist()))
+    return orjson.dumps(array, option=orjson.OPT_SERIALIZE_NUMPY).decode()[1:-1].split(",")
+
+
 def reprs_rows(array) -> list[str]:
     """The rows of a two-dimensional float64 array, each its floats' ``repr`` joined by
     commas (vectors in a CSV cell)."""
@@ -98,18 +108,37 @@ def reprs_rows(array) -> list[str]:
 def parse_floats(cells) -> np.ndarray:
     """``float`` of each cell (strings of the characters ``0-9 . e E + -``, spaces and tabs),
     as a float64 array; ``ValueError`` where ``float`` refuses a cell."""
+    values = json_floats(",".join(cells), len(cells), cells)
+    if values is not None:
+        return values
+    return np.fromiter(map(float, cells), dtype=np.float64, count=len(cells))
+
+
+#: An integer ``-0`` (which orjson reads as 0, ``float`` as -0.0): a minus, a zero, no
+#: digit, point or exponent after it.
+_MINUS_ZERO_RE = re.compile(r"-0(?![0-9.eE])")
+
+
+def json_floats(joined: str, n: int, cells=None) -> np.ndarray | None:
+    """The ``n`` numbers of ``joined`` (numbers separated by commas, perhaps spaces and tabs
+    around them) read at once as JSON numbers, each as ``float`` reads it; ``None`` where
+    orjson is absent or refuses them (JSON's number grammar is part of ``float``'s: no ``+``,
+    no leading zero, no ``.5`` or ``5.``), or where they are not ``n``. ``cells``: the
+    numbers as a list, if the caller has it (else ``joined`` is split where needed)."""
     orjson = _orjson()
-    n = len(cells)
-    joined = ",".join(cells)
     # JSON values other than numbers (a string, list, object, true, false, null) need one of
     # these characters; without them, a list of ``n`` values is ``n`` numbers, one a cell
-    if orjson is not None and n and not any(map(joined.__contains__, '"[{tfn')):
-        try:
-            values = np.array(orjson.loads("[" + joined + "]"), dtype=np.float64)
-        except (orjson.JSONDecodeError, OverflowError, TypeError, ValueError):
-            values = None
-        if values is not None and values.shape == (n,):
-            for i in np.flatnonzero(values == 0.0).tolist():  # ``-0``, an integer: 0, not -0.0
-                values[i] = float(cells[i])
-            return values
-    return np.fromiter(map(float, cells), dtype=np.float64, count=n)
+    if orjson is None or not n or any(map(joined.__contains__, '"[{tfn')):
+        return None
+    try:
+        values = np.array(orjson.loads("[" + joined + "]"), dtype=np.float64)
+    except (orjson.JSONDecodeError, OverflowError, TypeError, ValueError):
+        return None
+    if values.shape != (n,):
+        return None
+    if _MINUS_ZERO_RE.search(joined):  # ``-0``, an integer: read as 0, not -0.0
+        cells = joined.split(",") if cells is None else cells
+        zeros = np.flatnonzero((values == 0.0) & ~np.signbit(values)).tolist()
+        for i in [i for i in zeros if "-" in cells[i]]:
+            values[i] = float(cells[i])
+    return values

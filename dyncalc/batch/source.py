@@ -8,6 +8,7 @@ import re
 import sys
 
 from ..errors import InputError
+from .cells import Table, _quoted_columns, _unquoted, _without_quotes
 from .csvlines import _csv_lines
 
 
@@ -123,16 +124,24 @@ _LINE_END_RE = re.compile("\r\n|\r|\n")
 
 class _Chunk:
     """Consecutive records of the CSV: the line each starts on (``numbers``), and either the
-    text lines of a chunk without quotes (``lines``: each is one record, split at commas) or
-    the records the csv module read (``rows``)."""
+    text lines of a chunk without quotes (``lines``: each is one record, split at commas), the
+    lines of a chunk in simple quotes that ``csv.writer`` writes as they are (``lines``, and
+    ``plain``: the same lines without their quotes, each comma inside a quoted cell a NUL, so
+    that they too are split at commas), the lines of a chunk whose every cell is quoted (and
+    written so by ``csv.writer``) with their cells column by column (``lines`` and
+    ``columns``), or the records the csv module read (``rows``)."""
 
-    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written")
+    __slots__ = ("numbers", "lines", "rows", "not_utf8", "written", "plain", "columns", "text")
 
     def __init__(self, numbers, *, lines=None, rows=None, suspect: bool = False,
-                 written=None):
+                 written=None, plain=None, columns=None, text=None):
         self.numbers, self.lines, self.rows = numbers, lines, rows
+        #: the lines joined by line breaks, if the reader has them so (else None)
+        self.text = text
         #: the lines of ``rows`` when they are what ``csv.writer`` writes for them (else None)
         self.written = written
+        self.plain = lines if plain is None else plain
+        self.columns = columns
         #: rows refused before reading their cells: index -> why
         self.not_utf8: dict[int, str] = {}
         if suspect:
@@ -146,23 +155,45 @@ class _Chunk:
         return len(self.numbers)
 
     def row(self, i: int) -> list[str]:
-        return self.lines[i].split(",") if self.rows is None else self.rows[i]
+        if self.rows is not None:
+            return self.rows[i]
+        if self.columns is not None:
+            return [column[i] for column in self.columns]
+        cells = self.plain[i].split(",")
+        return cells if self.plain is self.lines else [c.replace("\0", ",") for c in cells]
 
     def widths(self) -> list[int]:
-        """The number of cells of each row (in a chunk without quotes, one more than its
-        commas)."""
+        """The number of cells of each row (in a chunk split at commas, one more than its
+        commas: one less than what is given)."""
         if self.rows is not None:
             return list(map(len, self.rows))
-        return list(map(str.count, self.lines, itertools.repeat(",")))
+        if self.columns is not None:
+            return [len(self.columns) - 1] * len(self.lines)
+        return list(map(str.count, self.plain, itertools.repeat(",")))
 
     def table(self, width: int, keep: list[int] | None):
         """The cells column by column, of all rows (``keep`` None) or of the rows ``keep``;
         they all have ``width`` cells."""
         if self.rows is not None:
             return list(zip(*(self.rows if keep is None else [self.rows[i] for i in keep])))
-        lines = self.lines if keep is None else [self.lines[i] for i in keep]
-        flat = ",".join(lines).split(",")
-        return [flat[j::width] for j in range(width)]
+        if self.columns is not None:
+            return self.columns if keep is None else [[column[i] for i in keep]
+                                                      for column in self.columns]
+        lines = self.plain if keep is None else [self.plain[i] for i in keep]
+        if not lines:
+            return [[] for _ in range(width)]
+
+        def split() -> list[list[str]]:
+            flat = ",".join(lines).split(",")
+            columns = [flat[j::width] for j in range(width)]
+            if self.plain is not self.lines:  # the commas of quoted cells, back
+                columns = [_unquoted(column) for column in columns]
+            return columns
+
+        text = None
+        if self.plain is self.lines:
+            text = self.text if keep is None and self.text is not None else "\n".join(lines)
+        return Table(split, len(lines), width, text)
 
     def echo(self, keep: list[int] | None) -> list[str]:
         """The rows (all, or ``keep``) as CSV lines, as ``csv.writer`` writes them."""
@@ -287,7 +318,11 @@ class _Reader:
         text = "\n".join(parts)
         ended = text + "\n"  # every part ends a line (the last may end in "\r", of "\r\n")
         quoted = '"' in text
-        if ((quoted and not _SIMPLE_QUOTES_RE.fullmatch(text))
+        columns = None
+        if quoted and "\0" not in text:  # every cell quoted (vectors): split at the quotes
+            columns = _quoted_columns(text if "\r" not in text
+                                      else ended.replace("\r\n", "\n")[:-1], len(parts))
+        if ((quoted and columns is None and not _SIMPLE_QUOTES_RE.fullmatch(text))
                 or "\r" in text and text.count("\r") != ended.count("\r\n")
                 or max(map(len, parts)) >= MAX_LINE
                 or (_ODD_LINE_BREAK_RE.search(text) if not text.isascii()
@@ -304,10 +339,17 @@ class _Reader:
         if quoted:  # simple quotes: the csv module on the whole block, one record a line
             # quotes exactly where csv.writer puts them (around cells holding a comma): the
             # lines are the echo
+            if columns is not None:
+                return _Chunk(numbers, lines=lines, suspect=suspect, columns=columns)
             written = None if _QUOTED_NO_COMMA_RE.search(text) else lines
+            plain = None if written is None else _without_quotes(
+                lines, text if "\r" not in text else "\n".join(lines))
+            if plain is not None:  # split at commas, as a chunk without quotes
+                return _Chunk(numbers, lines=lines, suspect=suspect, plain=plain)
             return _Chunk(numbers, rows=list(csv.reader(lines, strict=True)), suspect=suspect,
                           written=written)
-        return _Chunk(numbers, lines=lines, suspect=suspect)
+        return _Chunk(numbers, lines=lines, suspect=suspect,
+                      text=text if lines is parts else None)
 
     def _failed(self, line: int, exc: OSError) -> None:
         self.fatal = f"line {line}: reading the file failed: {exc.strerror or exc}"

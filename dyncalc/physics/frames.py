@@ -321,80 +321,128 @@ def relative_acceleration(Omega, v_r, r=None, alpha=None, a0=None, a_r=None,
 
 
 class _ScaledRows:
-    """The twin of :class:`_Scaled` for ``n`` vectors at once: mantissas ``m`` (n x 3) and
-    exponents ``e`` (n), each row scaled as :class:`_Scaled` scales its vector."""
+    """The twin of :class:`_Scaled` for ``n`` vectors at once, a component at a time:
+    mantissas ``c`` (three arrays of ``n``: x, y, z) and exponents ``e`` (n), each row scaled
+    as :class:`_Scaled` scales its vector."""
 
-    __slots__ = ("m", "e")
+    __slots__ = ("c", "e")
 
-    def __init__(self, v, e=0):
-        from .numerics_arrays import ldexp_array
-
-        v = np.asarray(v, dtype=float)
-        top = np.max(np.abs(v), axis=1)
+    def __init__(self, columns, e=0):
+        x, y, z = (np.asarray(c, dtype=float) for c in columns)
+        top = np.maximum(np.maximum(np.abs(x), np.abs(y)), np.abs(z))
         _, shift = np.frexp(top)
         shift = shift.astype(np.int64)
         zero = top == 0.0
-        with np.errstate(under="ignore"):
-            self.m = np.where(zero[:, None], 0.0, ldexp_array(v, -shift[:, None]))
-        self.e = np.where(zero, 0, e + shift)
+        down = _exponents(-shift)
+        with np.errstate(over="ignore", under="ignore"):
+            self.c = tuple(np.ldexp(c, down) for c in (x, y, z))
+        self.e = e + shift
+        if zero.any():
+            self.c = tuple(np.where(zero, 0.0, c) for c in self.c)
+            self.e = np.where(zero, 0, self.e)
+
+    @classmethod
+    def of(cls, rows) -> "_ScaledRows":
+        """The scaled vectors of an ``(n, 3)`` array."""
+        rows = np.asarray(rows, dtype=float)
+        return cls((rows[:, 0], rows[:, 1], rows[:, 2]))
 
     def cross(self, other: "_ScaledRows") -> "_ScaledRows":
-        with np.errstate(under="ignore"):
-            return _ScaledRows(np.cross(self.m, other.m), self.e + other.e)
+        """``numpy.cross`` of the mantissas (its products and differences, in its order)."""
+        (a0, a1, a2), (b0, b1, b2) = self.c, other.c
+        with np.errstate(under="ignore", invalid="ignore"):
+            return _ScaledRows((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0),
+                               self.e + other.e)
 
     def times(self, factor) -> "_ScaledRows":
         factor = np.broadcast_to(np.asarray(factor, dtype=float), self.e.shape)
         mant, shift = np.frexp(factor)
-        with np.errstate(under="ignore"):
-            out = _ScaledRows(self.m * mant[:, None], self.e + shift.astype(np.int64))
+        with np.errstate(under="ignore", invalid="ignore"):
+            out = _ScaledRows(tuple(c * mant for c in self.c),
+                              self.e + shift.astype(np.int64))
         still = (factor == 0.0) | ~self.nonzero
-        out.m = np.where(still[:, None], 0.0, out.m)
-        out.e = np.where(still, 0, out.e)
+        if still.any():
+            out.c = tuple(np.where(still, 0.0, c) for c in out.c)
+            out.e = np.where(still, 0, out.e)
         return out
 
     @property
     def nonzero(self):
-        return np.any(self.m != 0.0, axis=1)
+        x, y, z = self.c
+        return (x != 0.0) | (y != 0.0) | (z != 0.0)
 
     def value(self):
-        from .numerics_arrays import ldexp_array
+        """The vectors, ``(n, 3)``: each mantissa times two to its exponent, plus 0.0."""
+        up = _exponents(self.e)
+        out = np.empty((len(self.e), 3))
+        with np.errstate(over="ignore", under="ignore"):
+            for j, c in enumerate(self.c):
+                out[:, j] = np.ldexp(c, up)
+        out += 0.0
+        return out
 
-        return ldexp_array(self.m, self.e[:, None]) + 0.0
+
+def _exponents(e):
+    """Exponents for ``numpy.ldexp`` as :func:`~dyncalc.physics.numerics_arrays.ldexp_array`
+    takes them (clipped far beyond any overflow or underflow, as int32)."""
+    from .numerics_arrays import _EXP_LIMIT
+
+    return np.clip(np.asarray(e, dtype=np.int64), -_EXP_LIMIT, _EXP_LIMIT).astype(np.int32)
+
+
+def _zero_rows(scaled: _ScaledRows, value) -> np.ndarray:
+    """Rows a non-zero scaled product gives as zero (an underflow the one-off warns of)."""
+    return scaled.nonzero & (value[:, 0] == 0.0) & (value[:, 1] == 0.0) & (value[:, 2] == 0.0)
 
 
 @column_kernel(relative_acceleration)
 def _relative_acceleration_columns(Omega, v_r, r=None, alpha=None, a0=None, a_r=None,
                                    m=None) -> Columns:
     """:func:`relative_acceleration` on columns: every vector an ``(n, 3)`` SI array, ``m``
-    an ``(n,)`` array. The same power-of-two scaling (:class:`_ScaledRows`), ``numpy.cross``
-    and sums in the same order, bit for bit; ``values`` are the FrameAcceleration's terms
-    ``a_c``, ``a_euler``, ``a_centripetal``, ``a_transport``, ``a`` (and ``F_c`` with ``m``).
-    Exact where no term overflows (the one-off refuses) or underflows to zero from non-zero
-    factors (it warns)."""
+    an ``(n,)`` array. The same power-of-two scaling (:class:`_ScaledRows`), ``numpy.cross``'s
+    products and sums in the same order, bit for bit; ``values`` are the FrameAcceleration's
+    terms ``a_c``, ``a_euler``, ``a_centripetal``, ``a_transport``, ``a`` (and ``F_c`` with
+    ``m``). Exact where no term overflows (the one-off refuses) or underflows to zero from
+    non-zero factors (it warns). A term of vectors not given is zero (not computed: the
+    cross product of zeros; a non-finite Omega makes ``a_c`` non-finite, so not exact,
+    whatever the other terms)."""
     Om_v = np.asarray(Omega, dtype=float) + 0.0
     v_v = np.asarray(v_r, dtype=float) + 0.0
     zero = np.zeros_like(Om_v)
     r_v, al_v, a0_v, ar_v = (zero if x is None else np.asarray(x, dtype=float) + 0.0
                              for x in (r, alpha, a0, a_r))
-    Om, v, rr, al = (_ScaledRows(x) for x in (Om_v, v_v, r_v, al_v))
-    coriolis = Om.cross(v).times(2.0)
-    euler = al.cross(rr)
-    centripetal = Om.cross(Om.cross(rr))
+    Om = _ScaledRows.of(Om_v)
+    coriolis = Om.cross(_ScaledRows.of(v_v)).times(2.0)
+    scaled = {"a_c": coriolis}
+    if r is not None or alpha is not None:
+        rr = _ScaledRows.of(r_v)
+        scaled["a_euler"] = _ScaledRows.of(al_v).cross(rr)
+        if r is not None:
+            scaled["a_centripetal"] = Om.cross(Om.cross(rr))
     exact = np.ones(len(Om_v), dtype=bool)
     terms = {}
-    for name, scaled in (("a_c", coriolis), ("a_euler", euler),
-                         ("a_centripetal", centripetal)):
-        terms[name] = scaled.value()
-        exact &= ~(scaled.nonzero & ~np.any(terms[name] != 0.0, axis=1))
+    for name in ("a_c", "a_euler", "a_centripetal"):
+        if name not in scaled:
+            terms[name] = np.zeros_like(Om_v)
+            continue
+        terms[name] = scaled[name].value()
+        exact &= ~_zero_rows(scaled[name], terms[name])
+    alone = len(scaled) == 1 and a0 is None and a_r is None
     with np.errstate(over="ignore", invalid="ignore"):
-        terms["a_transport"] = (a0_v + terms["a_euler"]) + terms["a_centripetal"] + 0.0
-        terms["a"] = (terms["a_transport"] + terms["a_c"]) + ar_v + 0.0
+        if alone:  # (0 + 0) + 0 + 0.0 is 0.0, and (0.0 + a_c) + 0 + 0.0 is a_c + 0.0
+            terms["a_transport"] = np.zeros_like(Om_v)
+            terms["a"] = terms["a_c"] + 0.0
+        else:
+            terms["a_transport"] = (a0_v + terms["a_euler"]) + terms["a_centripetal"] + 0.0
+            terms["a"] = (terms["a_transport"] + terms["a_c"]) + ar_v + 0.0
     if m is not None:
         force = coriolis.times(-np.asarray(m, dtype=float))
         terms["F_c"] = force.value()
-        exact &= ~(force.nonzero & ~np.any(terms["F_c"] != 0.0, axis=1))
-    for value in terms.values():
-        exact &= np.all(np.isfinite(value), axis=1)
+        exact &= ~_zero_rows(force, terms["F_c"])
+    with np.errstate(invalid="ignore"):
+        for name, value in terms.items():
+            if (not alone or name in ("a_c", "F_c")) and not np.isfinite(value).all():
+                exact &= np.isfinite(value).all(axis=1)  # (alone: the others are 0 or a_c)
     return Columns(terms, exact=exact, model="vectors")
 
 

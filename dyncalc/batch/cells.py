@@ -1,0 +1,130 @@
+r"""A chunk's lines split into cells column by column, without the csv module where their quotes
+allow it: :class:`Table` (plain numbers read at once, the texts split only when asked for), and
+the splitting of lines whose every cell is quoted (:func:`_quoted_columns`) or whose quotes
+open and close whole cells (:func:`_without_quotes`), to what ``csv.reader`` reads.
+
+Example::
+
+    >>> _quoted_columns('"0,0,1","1,2,0"\n"0,0,2","3,4,0"', 2)
+    [['0,0,1', '0,0,2'], ['1,2,0', '3,4,0']]
+    >>> Table(lambda: [["1", "2"], ["3", "-0"]], 2, 2, "1,3\n2,-0").numbers().tolist()
+    [[1.0, 3.0], [2.0, -0.0]]
+"""
+from __future__ import annotations
+
+import re
+
+from .floats import json_floats
+
+
+class Table:
+    """The cells of a chunk's rows column by column (``table[j]``: a list of texts), split at
+    commas when first asked for; and, where every cell is a plain number, the values of all
+    of them read at once, without a text per cell (:meth:`numbers`)."""
+
+    __slots__ = ("_split", "_columns", "_text", "_numbers", "n", "width")
+
+    def __init__(self, split, n: int, width: int, text: str | None):
+        """``split()`` gives the columns; ``text``: the rows' lines joined by line breaks
+        where their cells are split at every comma (else None)."""
+        self._split, self._columns, self._text, self._numbers = split, None, text, False
+        self.n, self.width = n, width
+
+    def __len__(self) -> int:
+        return self.width
+
+    def __getitem__(self, j: int) -> list[str]:
+        if self._columns is None:
+            self._columns = self._split()
+        return self._columns[j]
+
+    def __iter__(self):
+        return iter([self[j] for j in range(self.width)])
+
+    def numbers(self):
+        """The ``(n, width)`` float64 values of the cells where every one is a plain number
+        (the characters of numbers, each as :func:`~dyncalc.batch.columns._plain_floats`
+        reads it: ``float``'s value, read as JSON, so no leading zero), else ``None``."""
+        if self._numbers is False:
+            self._numbers = None
+            text = self._text
+            # (what JSON reads without '"[{tfn', json_floats' test, is numbers and blanks)
+            if text:
+                values = json_floats(text.replace("\n", ","), self.n * self.width)
+                if values is not None:
+                    self._numbers = values.reshape(self.n, self.width)
+        return self._numbers
+
+
+    def later(self, j: int, make=None) -> "_Later":
+        """Column ``j`` (or ``make(column j)``), split only when a cell of it is asked for."""
+        return _Later(lambda: self[j] if make is None else make(self[j]), self.n)
+
+
+class _Later:
+    """A column made only when a cell of it is asked for (a column of plain numbers whose
+    values :meth:`Table.numbers` gave: its texts are rarely needed)."""
+
+    __slots__ = ("make", "n", "cells")
+
+    def __init__(self, make, n: int):
+        self.make, self.n, self.cells = make, n, None
+
+    def _made(self) -> list[str]:
+        if self.cells is None:
+            self.cells = self.make()
+        return self.cells
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, i):
+        return self._made()[i]
+
+    def __iter__(self):
+        return iter(self._made())
+
+
+def _unquoted(column: list[str]) -> list[str]:
+    """A column of cells with each NUL (a comma of a quoted cell) a comma again."""
+    joined = "\n".join(column)  # (no cell holds a line break)
+    return joined.replace("\0", ",").split("\n") if "\0" in joined else column
+
+
+def _without_quotes(lines: list[str], text: str) -> list[str] | None:
+    """``lines`` (``text`` joined by line breaks) in simple quotes (each quote opens or closes
+    a whole cell, no quote inside one) without their quotes, each comma inside a quoted cell a
+    NUL (which the text has not), so that splitting a line at commas gives what the csv module
+    reads; ``None`` where a line is empty (the csv module reads no cell there, not one empty
+    cell)."""
+    if "" in lines:
+        return None
+    pieces = text.split('"')  # the odd ones are inside quotes
+    pieces[1::2] = '"'.join(pieces[1::2]).replace(",", "\0").split('"')
+    plain = "".join(pieces).split("\n")
+    return plain if len(plain) == len(lines) else None
+
+
+#: A cell without a comma, in a column of cells joined by line breaks (between them).
+_NO_COMMA_RE = re.compile("\n[^,\n]*(?=\n)")
+
+
+def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
+    """The cells of ``text`` (``n`` lines joined by ``\\n``, no NUL, no ``\\r``) column by
+    column where every cell of every line is quoted, each line has as many, and each holds a
+    comma and no quote or line break (so the csv module reads the cells without their quotes,
+    and ``csv.writer`` writes the lines as they are); ``None`` otherwise."""
+    pieces = text.split('"')  # the odd ones are inside quotes
+    if len(pieces) % 2 == 0 or pieces[0] or pieces[-1]:
+        return None
+    between = pieces[2:-1:2]  # what separates the quoted cells: a comma or a line break
+    cells = pieces[1::2]
+    width = len(cells) // n
+    if width * n != len(cells) or not set(between) <= {",", "\n"} \
+            or between.count("\n") != n - 1 or between[width - 1::width].count("\n") != n - 1:
+        return None  # (n - 1 line breaks between cells: none inside one)
+    columns = [cells[j::width] for j in range(width)]
+    for column in columns:
+        if _NO_COMMA_RE.search("\n" + "\n".join(column) + "\n"):
+            return None
+    return columns
