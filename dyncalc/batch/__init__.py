@@ -39,8 +39,8 @@ Two paths give the same numbers:
   also computed by the one-off, whose inputs the JSON lines show and whose results must be
   the adapter's to the bit, or the block takes the generic path.
 
-Rows are read, computed and written in chunks of :data:`CHUNK_ROWS`, so memory stays flat
-however long the file. A bad row is reported on stderr as ``Error: line N: ...`` (its line in
+Rows are read, computed and written in chunks of :data:`CHUNK_ROWS` (JSON lines: sized by
+their width, :func:`chunk_rows`), so memory stays flat however long the file. A bad row is reported on stderr as ``Error: line N: ...`` (its line in
 the file, the header being line 1); with ``--on-error stop`` (the default) the rows before it
 have been written and nothing after it is; with ``--on-error skip`` every bad row gets its own
 line and every good row is written. The exit status is 2 when any row failed.
@@ -85,6 +85,24 @@ __all__ = ["run_batch", "RowSpec", "NaturalFrequencyRows", "SpringRows", "Dampin
 #: Rows read, computed and written at a time; the result columns of CSV output are those of
 #: the first chunk's rows.
 CHUNK_ROWS = 16384
+#: JSON lines: the rows of the first chunk, and the cells (input and result columns times
+#: rows) a later chunk holds at most. A JSON line carries every input and result with its
+#: unit and text (forced-response's run to 1.3 kB), so a wide command takes fewer rows a
+#: chunk and memory stays flat (issue 17: <= 100 MB at 10^7 rows). CSV keeps CHUNK_ROWS:
+#: its columns are fixed by the first chunk's rows, and its lines are short.
+FIRST_JSON_ROWS = 1024
+CHUNK_CELLS = 16384 * 4
+
+
+def chunk_rows(as_json: bool, inputs: int, results: list | None) -> int:
+    """Rows in the next chunk: :data:`CHUNK_ROWS` for CSV; for JSON lines
+    :data:`FIRST_JSON_ROWS` until the results are known, then :data:`CHUNK_CELLS` over the
+    columns (between FIRST_JSON_ROWS and CHUNK_ROWS)."""
+    if not as_json:
+        return CHUNK_ROWS
+    if not results:
+        return FIRST_JSON_ROWS
+    return max(FIRST_JSON_ROWS, min(CHUNK_ROWS, CHUNK_CELLS // (inputs + len(results))))
 ON_ERROR = ("stop", "skip")
 #: Set to "1" to send every row through the generic (one-off) path: for tests and benchmarks.
 GENERIC_ENV = "DYNCALC_BATCH_GENERIC"
@@ -137,9 +155,11 @@ def _run(spec, stream, as_json, units, on_error, debug, out, err, fast) -> int:
                      CHUNK_ROWS)
     failed = False
     cache: dict = {}
-    while (chunk := reader.chunk(CHUNK_ROWS)) is not None:
+    rows = chunk_rows(as_json, len(columns), None)
+    while (chunk := reader.chunk(rows)) is not None:
         row_failed, stopped = _compute(spec, columns, chunk, on_error, debug, fast, writer,
                                        cache)
+        rows = chunk_rows(as_json, len(columns), writer.columns)
         failed |= row_failed
         if stopped:
             return EXIT_BAD_INPUT
