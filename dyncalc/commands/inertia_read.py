@@ -18,6 +18,7 @@ from ..errors import InputError
 from ..lazy import numpy as np
 from ..physics.inertia import BODY_DIMENSIONS, DENSITY_KIND
 from ..units import DIMENSIONLESS, LENGTH, MASS, Dim, parse_quantity, parse_vector
+from ..units.split import split_top
 
 __all__ = ["BodyWord", "read_body", "read_bodies", "read_axis", "DENSITY", "AxisText",
            "MAX_BODIES"]
@@ -55,25 +56,6 @@ class BodyWord:
         self.along_word, self.text = along_word, text
 
 
-def _split(text: str, where: str) -> list[str]:
-    """Split at the commas outside parentheses and brackets."""
-    parts, depth, start = [], 0, 0
-    for i, ch in enumerate(text):
-        if ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-            if depth < 0:
-                raise InputError(f"{where}: a ')' has no matching '('")
-        elif ch == "," and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    if depth != 0:
-        raise InputError(f"{where}: a '(' is not closed")
-    parts.append(text[start:])
-    return parts
-
-
 def _direction(text: str, label: str, strict: bool):
     """A direction: ``x``, ``-y``, or a vector of pure numbers; refuses a zero vector."""
     word = text.strip()
@@ -103,7 +85,7 @@ def read_body(word: str, index: int, strict: bool = False) -> BodyWord:
         raise InputError(f"unknown body {kind!r}; the bodies are {', '.join(BODY_DIMENSIONS)}")
     where = f"{kind}() (body {index})"
     texts: dict[str, str] = {}
-    for part in _split(inner, where) if inner.strip() else ():
+    for part in split_top(inner, ",", where) if inner.strip() else ():
         if not part.strip():
             raise InputError(f"{where}: a parameter is empty; usage: {usage(kind)}")
         pair = _KEY_RE.match(part)

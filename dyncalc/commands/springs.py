@@ -31,6 +31,7 @@ from ..errors import InputError, PhysicsError
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed
 from ..units import (AREA, DIMENSIONLESS, FORCE, LENGTH, MODULUS, RIGIDITY, SECOND_MOMENT,
                      STIFFNESS, TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS, Dim, parse_quantity)
+from ..units.split import split_top
 from .record import Command, ResultName
 
 __all__ = ["SPRING_SERIES", "SPRING_PARALLEL", "ELEMENTS", "network_stiffness", "parse_network",
@@ -119,25 +120,6 @@ _OPEN_RE = re.compile(r"^\s*([A-Za-z][A-Za-z_-]*)\s*\(")
 _SHARED_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
 
 
-def _split_args(text: str, where: str) -> list[str]:
-    """Split at the commas that are not inside parentheses or brackets."""
-    parts, depth, start = [], 0, 0
-    for i, ch in enumerate(text):
-        if ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-            if depth < 0:
-                raise InputError(f"{where}: a ')' has no matching '('")
-        elif ch == "," and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    if depth != 0:
-        raise InputError(f"{where}: a '(' is not closed")
-    parts.append(text[start:])
-    return parts
-
-
 class _Reader:
     def __init__(self, strict: bool):
         self.strict = strict
@@ -159,7 +141,7 @@ class _Reader:
         if call and (call.group(1) in GROUPS or call.group(1) in ELEMENTS):
             fname, body = call.group(1), call.group(2)
             where = f"{fname}(...)"
-            args = _split_args(body, where)
+            args = split_top(body, ",", where)
             if fname in GROUPS:
                 if not any(a.strip() for a in args):
                     raise InputError(f"{fname}() needs at least one element")

@@ -29,6 +29,7 @@ from typing import Any, Callable
 from ..errors import InputError
 from .dimensions import Dim
 from .grammar import _check_characters, _evaluate, _finish, _show
+from .split import split_top
 
 __all__ = ["MatrixText", "parse_matrix", "MAX_ORDER", "MAX_MATRIX_TEXT", "MAX_MATRIX_FILE"]
 
@@ -78,21 +79,6 @@ def _read_cell(text: str, label: str) -> _Cell:
     return _Cell(text, None, reading=reading)
 
 
-def _split_top(text: str, sep: str) -> list[str]:
-    """``text`` split at ``sep`` outside parentheses and brackets."""
-    parts, depth, start = [], 0, 0
-    for k, ch in enumerate(text):
-        if ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-        elif ch == sep and depth == 0:
-            parts.append(text[start:k])
-            start = k + 1
-    parts.append(text[start:])
-    return parts
-
-
 def _closing(text: str, start: int, label: str) -> int:
     """The index of the bracket closing the one at ``start``."""
     depth = 0
@@ -109,15 +95,15 @@ def _closing(text: str, start: int, label: str) -> int:
 def _rows_of_brackets(inner: str, label: str) -> list[list[str]]:
     """The rows inside the outer brackets: ``[a, b], [c, d]`` or ``a, b; c, d``."""
     if "[" not in inner:
-        return [_split_top(row, ",") for row in _split_top(inner, ";")]
+        return [split_top(row, ",") for row in split_top(inner, ";")]
     rows = []
-    for k, part in enumerate(_split_top(inner, ",")):
+    for k, part in enumerate(split_top(inner, ",")):
         part = part.strip()
         if not (part.startswith("[") and part.endswith("]")) \
                 or _closing(part, 0, label) != len(part) - 1:
             raise InputError(f"{label}: row {k + 1} must be written [a, b, ...]; got "
                              f"{_show(part)}")
-        rows.append(_split_top(part[1:-1], ","))
+        rows.append(split_top(part[1:-1], ","))
     return rows
 
 
@@ -289,7 +275,7 @@ def parse_matrix(text: str, *, label: str = "matrix", max_order: int = MAX_ORDER
         plain = _plain_file(lines, label, max_order)
         if plain is not None:
             return MatrixText([], "", stripped, label, plain=plain)
-        rows = [_split_top(line, ",") for line in lines]
+        rows = [split_top(line, ",") for line in lines]
         trailing = ""
         source = stripped
     else:
@@ -305,7 +291,7 @@ def parse_matrix(text: str, *, label: str = "matrix", max_order: int = MAX_ORDER
             rows = _rows_of_brackets(stripped[1:end], label)
         else:
             trailing = ""
-            rows = [_split_top(row, ",") for row in _split_top(stripped, ";")]
+            rows = [split_top(row, ",") for row in split_top(stripped, ";")]
     if not rows or rows == [[""]] or not any(c.strip() for row in rows for c in row):
         raise InputError(f"{label} is empty; give a square matrix, e.g. '2, -1; -1, 2 kN/m'")
     if len(rows) > max_order:
