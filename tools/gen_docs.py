@@ -280,15 +280,20 @@ def _example(scene, result) -> list[str]:
     return lines
 
 
-def _refused_scene(scene, error) -> list[str]:
-    """A scene whose example is refused on purpose (no equilibrium): its card and the refusal."""
+def _card_head(scene) -> list[str]:
+    """A scene card's heading, summary, figure, equation, formula, parameters and rules."""
     return [f"## {scene.name}", "",
             _sentence(_cell(scene.summary)), "",
             f"**Figure.** {_sentence(_cell(scene.figure))}", "",
             f"* Equation of motion: {_code(scene.equation)}",
             f"* Formula: {_code(scene.formula)}", "",
             "**Parameters** (`NAME=QUANTITY`):", "", *_parameters(scene), "",
-            *_rules(scene), "", "**Example** (refused, exit status 2):", "",
+            *_rules(scene), ""]
+
+
+def _refused_scene(scene, error) -> list[str]:
+    """A scene whose example is refused on purpose (no equilibrium): its card and the refusal."""
+    return [*_card_head(scene), "**Example** (refused, exit status 2):", "",
             "```sh", scene.example, "```", "", f"says: {_code('Error: ' + str(error))}"]
 
 
@@ -312,13 +317,7 @@ def _scene(scene) -> list[str]:
         result, added = run_example(scene)
     except PhysicsError as error:
         return _refused_scene(scene, error)
-    return [f"## {scene.name}", "",
-            _sentence(_cell(scene.summary)), "",
-            f"**Figure.** {_sentence(_cell(scene.figure))}", "",
-            f"* Equation of motion: {_code(scene.equation)}",
-            f"* Formula: {_code(scene.formula)}", "",
-            "**Parameters** (`NAME=QUANTITY`):", "", *_parameters(scene), "",
-            *_rules(scene), "",
+    return [*_card_head(scene),
             "**Results** (those of the example command, and those a `zeta` adds; other "
             "inputs may give others):", "", *_results(result, added), "",
             *_example(scene, result), *_driven(scene)]
