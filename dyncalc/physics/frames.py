@@ -350,7 +350,7 @@ class _ScaledRows:
     def cross(self, other: "_ScaledRows") -> "_ScaledRows":
         """``numpy.cross`` of the mantissas (its products and differences, in its order)."""
         (a0, a1, a2), (b0, b1, b2) = self.c, other.c
-        with np.errstate(under="ignore", invalid="ignore"):
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
             return _ScaledRows((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0),
                                self.e + other.e)
 
