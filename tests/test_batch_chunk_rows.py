@@ -9,7 +9,9 @@ from helpers import invoke
 
 def test_chunk_rows_by_output_and_width():
     assert batch.chunk_rows(False, 5, None) == batch.CHUNK_ROWS
-    assert batch.chunk_rows(False, 5, ["x"] * 40) == batch.CHUNK_ROWS  # CSV: fixed
+    assert batch.chunk_rows(False, 5, ["x"] * 40) == batch.CHUNK_ROWS  # CSV: by the command
+    assert batch.chunk_rows(False, 5, None, batch.ForcedRows().csv_rows) == 8192
+    assert batch.CoriolisRows().csv_rows == batch.CHUNK_ROWS
     assert batch.chunk_rows(True, 5, None) == batch.FIRST_JSON_ROWS
     assert batch.chunk_rows(True, 2, ["omega", "f", "T"]) == batch.CHUNK_CELLS // 5
     assert batch.chunk_rows(True, 1, []) == batch.FIRST_JSON_ROWS  # no results yet

@@ -88,21 +88,24 @@ CHUNK_ROWS = 16384
 #: JSON lines: the rows of the first chunk, and the cells (input and result columns times
 #: rows) a later chunk holds at most. A JSON line carries every input and result with its
 #: unit and text (forced-response's run to 1.3 kB), so a wide command takes fewer rows a
-#: chunk and memory stays flat (issue 17: <= 100 MB at 10^7 rows). CSV keeps CHUNK_ROWS:
-#: its columns are fixed by the first chunk's rows, and its lines are short.
+#: chunk and memory stays flat (issue 17: <= 100 MB at 10^7 rows).
 FIRST_JSON_ROWS = 1024
 CHUNK_CELLS = 16384 * 4
 
 
-def chunk_rows(as_json: bool, inputs: int, results: list | None) -> int:
-    """Rows in the next chunk: :data:`CHUNK_ROWS` for CSV; for JSON lines
-    :data:`FIRST_JSON_ROWS` until the results are known, then :data:`CHUNK_CELLS` over the
-    columns (between FIRST_JSON_ROWS and CHUNK_ROWS)."""
+def chunk_rows(as_json: bool, inputs: int, results: list | None, csv_rows: int = CHUNK_ROWS
+               ) -> int:
+    """Rows in the next chunk. CSV: the command's ``csv_rows`` (:attr:`RowSpec.csv_rows`),
+    at most :data:`CHUNK_ROWS`. JSON lines: :data:`FIRST_JSON_ROWS` until the results are
+    known, then :data:`CHUNK_CELLS` over the columns (between FIRST_JSON_ROWS and
+    CHUNK_ROWS)."""
     if not as_json:
-        return CHUNK_ROWS
+        return min(CHUNK_ROWS, csv_rows)
     if not results:
-        return FIRST_JSON_ROWS
-    return max(FIRST_JSON_ROWS, min(CHUNK_ROWS, CHUNK_CELLS // (inputs + len(results))))
+        return min(CHUNK_ROWS, FIRST_JSON_ROWS)
+    return min(CHUNK_ROWS, max(FIRST_JSON_ROWS, CHUNK_CELLS // (inputs + len(results))))
+
+
 ON_ERROR = ("stop", "skip")
 #: Set to "1" to send every row through the generic (one-off) path: for tests and benchmarks.
 GENERIC_ENV = "DYNCALC_BATCH_GENERIC"
@@ -151,15 +154,14 @@ def _run(spec, stream, as_json, units, on_error, debug, out, err, fast) -> int:
         if "".join(row).strip():
             header = (chunk.numbers[0], row)
     columns = read_header(header[0], header[1], spec)
-    writer = _Writer([c.raw for c in columns], as_json, units, on_error, out, err,
-                     CHUNK_ROWS)
+    rows = chunk_rows(as_json, len(columns), None, spec.csv_rows)
+    writer = _Writer([c.raw for c in columns], as_json, units, on_error, out, err, rows)
     failed = False
     cache: dict = {}
-    rows = chunk_rows(as_json, len(columns), None)
     while (chunk := reader.chunk(rows)) is not None:
         row_failed, stopped = _compute(spec, columns, chunk, on_error, debug, fast, writer,
                                        cache)
-        rows = chunk_rows(as_json, len(columns), writer.columns)
+        rows = chunk_rows(as_json, len(columns), writer.columns, spec.csv_rows)
         failed |= row_failed
         if stopped:
             return EXIT_BAD_INPUT
