@@ -19,8 +19,18 @@ from click.testing import CliRunner
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from dyncalc.batch import assemble, source
+from dyncalc.batch import GENERIC_ENV, assemble, source
 from dyncalc.cli import cli
+
+
+def _assert_fast_is_generic(monkeypatch, args: list[str]) -> None:
+    """``dyncalc ARGS`` on the vectorised path and with every row through the generic
+    (one-off) path: the same exit status, stdout and stderr, byte for byte."""
+    fast = CliRunner().invoke(cli, args)
+    monkeypatch.setenv(GENERIC_ENV, "1")
+    generic = CliRunner().invoke(cli, args)
+    assert (fast.exit_code, fast.stdout, fast.stderr) == (
+        generic.exit_code, generic.stdout, generic.stderr)
 
 
 def _stream(text: str):
@@ -105,11 +115,7 @@ def test_hard_cells_read_as_the_one_off_reads_them(tmp_path, monkeypatch, cell, 
         "," not in cell) + ",2\n300,3\n")
     args = ["natural-frequency", "--batch", str(path), "--on-error", "skip"] + (
         ["--json"] if as_json else [])
-    fast = CliRunner().invoke(cli, args)
-    monkeypatch.setenv("DYNCALC_BATCH_GENERIC", "1")
-    generic = CliRunner().invoke(cli, args)
-    assert (fast.exit_code, fast.stdout, fast.stderr) == (
-        generic.exit_code, generic.stdout, generic.stderr)
+    _assert_fast_is_generic(monkeypatch, args)
 
 
 # --- lines assembled a column at a time ----------------------------------------------------------
@@ -219,11 +225,7 @@ def test_hard_vector_cells_read_as_the_one_off_reads_them(tmp_path, monkeypatch,
                     '"0,0,1","-2,0.5,0"\n')
     args = ["coriolis", "--batch", str(path), "--on-error", "skip"] + (
         ["--json"] if as_json else [])
-    fast = CliRunner().invoke(cli, args)
-    monkeypatch.setenv("DYNCALC_BATCH_GENERIC", "1")
-    generic = CliRunner().invoke(cli, args)
-    assert (fast.exit_code, fast.stdout, fast.stderr) == (
-        generic.exit_code, generic.stdout, generic.stderr)
+    _assert_fast_is_generic(monkeypatch, args)
 
 
 @settings(max_examples=200, deadline=None)
