@@ -32,6 +32,7 @@ from ..result.kinds import DECAY_RATE
 from ..units import (ACCELERATION, ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, MASS,
                      STIFFNESS, TIME, Dim, parse_quantity, parse_unit)
 from .record import Command, Parameter, results_from_kinds
+from .words import gather_texts
 
 __all__ = ["COMMAND", "damping_ratio", "read", "compute", "DampingInputs", "SceneTexts",
            "parse_amplitudes", "parse_cycles", "damping_scene_names", "MAX_PEAKS"]
@@ -738,7 +739,6 @@ def _zeta_slope(name: str, value: float):
 def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
     """Check a damping scene and gather its texts (``--k``, ``--m``, ``--g`` and the
     ``NAME=QUANTITY`` words) for :func:`_from_scene`."""
-    from ..result.checks import split_assignment
     from ..scenes import get_scene
 
     scene = get_scene(name)
@@ -747,16 +747,8 @@ def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
         raise InputError(f"damping-ratio --scene takes a scene with a damper: "
                          f"{', '.join(damped)}; {scene.name} has none (natural-frequency "
                          "computes it)")
-    texts: dict[str, str] = {}
-    labels: dict[str, str] = {}
-    for option, text in (("k", k), ("m", m), ("g", g)):
-        if text is not None:
-            texts[option], labels[option] = text, f"--{option}"
-    for word in params:
-        key, text = split_assignment(word, "a scene parameter")
-        if key in texts:
-            raise InputError(f"{key} is given twice ({labels[key]} and {key}=)")
-        texts[key], labels[key] = text, f"{key}="
+    texts, labels = gather_texts({"k": (k, "--k"), "m": (m, "--m"), "g": (g, "--g")}, params,
+                                 "a scene parameter")
     given = _decrement_as_zeta(scene, texts, labels, strict)
     return SceneTexts(scene, texts, labels, method, rtol, strict, given)
 

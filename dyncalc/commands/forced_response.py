@@ -16,6 +16,7 @@ from ..result import Result
 from ..units import (ANGULAR_RATE, CYCLE_RATE, DAMPING, DIMENSIONLESS, FORCE, LENGTH, MASS,
                      STIFFNESS, TIME, UNBALANCE, VELOCITY, ACCELERATION)
 from .record import Command, Parameter, ResultName
+from .words import gather_texts
 
 __all__ = ["COMMAND", "ForcedInputs", "read", "compute", "forced_response"]
 
@@ -51,19 +52,10 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
     """The options as typed (by parameter name) and the ``NAME=QUANTITY`` words ->
     :class:`ForcedInputs`, refusing the combinations that ask for no or several natural
     frequencies, dampings, excitations or excitation frequencies."""
-    from ..result.checks import split_assignment
     from ..scenes.forced import OSCILLATOR, forced_scene
 
-    texts: dict[str, str] = {}
-    labels: dict[str, str] = {}
-    for name, text in options.items():
-        if text is not None:
-            texts[name], labels[name] = text, _flag(name)
-    for word in words:
-        name, text = split_assignment(word, "a parameter")
-        if name in texts:
-            raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
-        texts[name], labels[name] = text, f"{name}="
+    texts, labels = gather_texts({name: (text, _flag(name)) for name, text in options.items()},
+                                 words, "a parameter")
     if scene is not None:
         chosen = forced_scene(scene)
         _check_driven(chosen, options, texts)

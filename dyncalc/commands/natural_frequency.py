@@ -12,6 +12,7 @@ from ..scenes import Scene, get_scene, scene_names
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA,
                      LENGTH, MASS, STIFFNESS, TIME, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
+from .words import gather_texts
 
 __all__ = ["COMMAND", "STANDARD", "INFERENCE", "collect_parameters", "infer_scene", "compute_scene",
            "natural_frequency"]
@@ -25,21 +26,8 @@ INFERENCE = (("mass-spring", {"k", "m"}), ("torsional", {"kt", "J"}), ("pendulum
 
 def collect_parameters(options: dict[str, str | None], words: tuple[str, ...] | list[str]):
     """Standard options and NAME=QUANTITY words -> (texts by parameter, labels by parameter)."""
-    texts: dict[str, str] = {}
-    labels: dict[str, str] = {}
-    for option, param in STANDARD.items():
-        if options.get(option) is not None:
-            texts[param] = options[option]
-            labels[param] = f"--{option}"
-    for word in words:
-        from ..result.checks import split_assignment  # only when words are given (start-up)
-
-        name, text = split_assignment(word, "a scene parameter")
-        if name in texts:
-            raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
-        texts[name] = text
-        labels[name] = f"{name}="
-    return texts, labels
+    flagged = {param: (options.get(option), f"--{option}") for option, param in STANDARD.items()}
+    return gather_texts(flagged, words, "a scene parameter")
 
 
 def method_names(scene: str | None = None) -> list[str]:
