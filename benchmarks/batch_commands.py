@@ -62,6 +62,8 @@ CASES = [
      lambda r: [f"{r.uniform(1e3, 1e6):.6g}", f"{r.uniform(1, 500):.6g}",
                 f"{r.uniform(0.01, 0.3):.6g}", f"{r.uniform(1, 1e3):.6g}",
                 f"{r.uniform(1, 300):.6g}"]),
+    ("inertia one disk a row (extra)", ["inertia"], "b1",
+     lambda r: ['"disk(m=%.6g kg, r=%.6g m)"' % (r.uniform(0.1, 50), r.uniform(0.01, 2))]),
     ("coriolis", ["coriolis"], "omega [rad/s],vr [m/s]",
      lambda r: ['"0,0,%.6g"' % r.uniform(0.1, 5), '"%.6g,%.6g,0"' % (r.uniform(-3, 3),
                                                                    r.uniform(-3, 3))]),
