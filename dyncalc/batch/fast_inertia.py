@@ -14,7 +14,7 @@ import re
 import numpy as np
 
 from ..errors import InputError
-from .columns import _read_column
+from .columns import _LITERAL_CELL, _read_column
 from .fast import FastBlock
 
 __all__ = ["inertia_fast"]
@@ -64,37 +64,71 @@ def _allowed(kind: str, keys: tuple) -> bool:
     return rest == sorted(BODY_DIMENSIONS[kind]) and len(set(keys)) == len(keys)
 
 
+#: A number after ``=`` or a blank (a template whose every number starts a value, after its
+#: ``=`` and blanks, is checked by :data:`_SLOT_RE`; the one-off reads it as this literal).
+_VALUE_RE = re.compile(rf"(?<=[= \t]){_LITERAL_CELL}")
+_SLOT_RE = re.compile(r"^([ \t]*)#([^#]*)$")
+
+
 def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
-    """The rows of this chunk the vectorised path computes, as blocks (one per body and
-    parameters named); every other row is left to the generic path."""
+    """The rows of this chunk the vectorised path computes, as blocks (one per *template*:
+    a body word with its numbers taken out, the same body, parameters, units and spacing);
+    every other row is left to the generic path. The numbers of a template's rows are read
+    in one pass over their cells joined."""
     if not table:
         return []
     bodies = [col for col in columns if spec.is_body(col.key)]
     if len(bodies) != 1 or bodies[0].unit:
         return []
     body = bodies[0]
+    cells = list(table[body.index])
     others = [table[col.index] for col in columns if col is not body]
-    cells = table[body.index]
-    groups: dict[tuple, list[int]] = {}
-    texts: list = [None] * len(cells)
-    for i, cell in enumerate(cells):
-        if any(column[i].strip() for column in others):
-            continue
-        shape = _shape(cell)
+    candidates = range(len(cells))
+    if any("".join(column).strip() for column in others):  # rows with an axis or 2nd body
+        candidates = [i for i in candidates if not any(c[i].strip() for c in others)]
+    if "\n" in "".join(cells):
+        return []
+    picked = cells if len(candidates) == len(cells) else [cells[i] for i in candidates]
+    templates = _VALUE_RE.sub("#", "\n".join(picked)).split("\n")
+    groups: dict[str, list[int]] = {}
+    if templates.count(templates[0]) == len(templates):
+        groups[templates[0]] = list(candidates)
+    else:
+        for i, template in zip(candidates, templates):
+            groups.setdefault(template, []).append(i)
+    blocks = []
+    for template, members in groups.items():
+        shape = _template(template, cache)
         if shape is None:
             continue
-        texts[i] = shape[2]
-        groups.setdefault(shape[:2], []).append(i)
-    blocks = []
-    for (kind, keys), members in groups.items():
-        if not _allowed(kind, keys):
+        kind, keys, slots = shape
+        group = cells if len(members) == len(cells) else [cells[i] for i in members]
+        found = _VALUE_RE.findall("\n".join(group))
+        if len(found) != len(keys) * len(group):
             continue
+        literals = found
         rows = np.asarray(members, dtype=np.intp)
-        block = _block(spec, body, kind, keys, rows, [texts[i] for i in members], cells,
-                       want_json, cache)
+        block = _block(spec, body, kind, keys, slots, rows, literals, cells, want_json, cache)
         if block is not None:
             blocks.append(block)
     return blocks
+
+
+def _template(template: str, cache: dict):
+    """``(kind, keys, (space, unit text) of each value)`` of a template the vectorised path
+    takes (each value one number and a unit), or ``None``."""
+    key = ("inertia-template", template)
+    if key not in cache:
+        shape = _shape(template)
+        slots = [] if shape is not None and _allowed(*shape[:2]) else None
+        for text in shape[2] if slots is not None else ():
+            slot = _SLOT_RE.match(text)
+            if slot is None:
+                slots = None
+                break
+            slots.append((slot.group(1), slot.group(2)))
+        cache[key] = None if slots is None else (shape[0], shape[1], slots)
+    return cache[key]
 
 
 def _dim(kind: str, key: str):
@@ -107,19 +141,21 @@ def _dim(kind: str, key: str):
     return DENSITY[DENSITY_KIND[kind]] if key == "rho" else LENGTH
 
 
-def _block(spec, body, kind, keys, rows, texts, cells, want_json, cache):
+def _block(spec, body, kind, keys, slots, rows, literals, cells, want_json, cache):
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_columns import single_body
 
     n = len(rows)
+    k = len(keys)
     good = np.ones(n, dtype=bool)
     reads = []
     for j, key in enumerate(keys):
-        column = [t[j] for t in texts]
-        read = _read_column(column, "", _Param(key, _dim(kind, key)), spec.strict, cache)
+        column = literals[j::k]
+        unit = slots[j][1].strip()
+        read = _read_column(column, unit, _Param(key, _dim(kind, key)), spec.strict, cache)
         good &= read.ok
-        reads.append((key, read, column))
-    si = {key: np.where(good, read.si, 1.0) for key, read, _c in reads}
+        reads.append((key, read, column, slots[j]))
+    si = {key: np.where(good, read.si, 1.0) for key, read, _c, _s in reads}
     dims = {key: value for key, value in si.items() if key not in ("m", "rho")}
     if kind == "hollow-cylinder":
         good &= dims["ri"] < dims["ro"]
@@ -173,17 +209,21 @@ def _probe_inputs(result) -> str:
 
 def _entries(reads, keep: np.ndarray, lines: int | None):
     """The parts of the JSON input entries ``b1.KEY`` of the kept rows (the value in the unit
-    typed, that unit, the text as typed); with ``lines``, those lines' texts instead."""
+    typed, that unit, the text as typed: the number between the template's spacing and unit
+    text); with ``lines``, those lines' texts instead."""
     from . import assemble
 
     parts: list = []
+    every = len(keep) == len(reads[0][1].shown) if reads else True
     rows = keep.tolist()
-    for key, read, column in reads:
+    for key, read, column, (space, rest) in reads:
         prefix = (", " if parts else "") + json.dumps("b1." + key) + ': {"value": '
-        shown = np.asarray(read.shown, dtype=np.float64)[keep]
-        ends = [f', "unit": {read.unit_json[i][0]}, "text": {json.dumps(column[i])}'
-                f'{read.unit_json[i][1]}}}' for i in rows]
-        parts += [prefix, shown, ends]
+        shown = np.asarray(read.shown, dtype=np.float64)
+        typed = column if every else [column[i] for i in rows]
+        unit, assumed = read.unit_json[rows[0]]  # one unit: the template's
+        parts += [prefix, shown if every else shown[keep],
+                  f', "unit": {unit}, "text": ' + json.dumps(space)[:-1], typed,
+                  json.dumps(rest)[1:] + assumed + "}"]
     if lines is not None:
         return assemble.lines(parts, lines)
     return parts
