@@ -4,7 +4,6 @@
 Table 3.1: ``J_zz = m r^2 / 2`` (dyncalc's order: ``1/2 * m * (r r)``), ``J_xx = J_yy =
 J_zz / 2``; about the centre, at the origin ``J_O = J_C``; principal axes x, y (equal moments)
 and z."""
-import numpy as np
 import polars as pl
 
 from _limit import arguments, csv_line, json_lines, json_result, read, text

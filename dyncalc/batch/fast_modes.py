@@ -121,14 +121,15 @@ def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json):
     if want_json:
         from ..result.encode import _json_inputs
 
-        if _inputs([cells_m[first]], [cells_k[first]], M[[first]], K[[first]])[0] != \
-                json.dumps(_json_inputs(probe.inputs))[1:-1]:
+        from .assemble import lines
+
+        if lines(_inputs([cells_m[first]], [cells_k[first]], M[[first]], K[[first]]), 1)[0] \
+                != json.dumps(_json_inputs(probe.inputs))[1:-1]:
             return None
         head = ('"schema": "dyncalc/2", "command": "modes", "scene": null, '
                 f'"model": {json.dumps(out.model)}, "method": {json.dumps(out.method)}')
-        inputs = [_inputs([cells_m[i] for i in keep.tolist()], [cells_k[i] for i in
-                                                                keep.tolist()],
-                          M[keep], K[keep])]
+        inputs = _inputs([cells_m[i] for i in keep.tolist()],
+                         [cells_k[i] for i in keep.tolist()], M[keep], K[keep])
     return FastBlock(rows[keep], values, dims, head, inputs, extra)
 
 
@@ -153,11 +154,24 @@ def _probe(spec, by_key, cell_m: str, cell_k: str, out, i: int):
     return result
 
 
-def _inputs(cells_m, cells_k, M, K) -> list[str]:
-    """Each row's input entries ``"M": {...}, "K": {...}`` (bare numbers: SI, assumed)."""
-    out = []
-    for cm, ck, m, k in zip(cells_m, cells_k, M.tolist(), K.tolist()):
-        out.append(f'"M": {{"value": {json.dumps(m)}, "unit": "kg", "text": {json.dumps(cm)}, '
-                   f'"assumed_si": true}}, "K": {{"value": {json.dumps(k)}, "unit": "N/m", '
-                   f'"text": {json.dumps(ck)}, "assumed_si": true}}')
-    return out
+def _inputs(cells_m, cells_k, M, K) -> list:
+    """The parts (:func:`dyncalc.batch.assemble.lines`) of each row's input entries
+    ``"M": {...}, "K": {...}`` (bare numbers: SI, assumed), a component column at a time."""
+    from .write import _component
+
+    parts: list = []
+    for name, cells, X, unit in (("M", cells_m, M, "kg"), ("K", cells_k, K, "N/m")):
+        n = X.shape[1]
+        parts.append((", " if parts else "") + f'"{name}": {{"value": [')
+        for i in range(n):
+            parts.append(", [" if i else "[")
+            for j in range(n):
+                parts += [", "] if j else []
+                parts.append(_component(X[:, i, j]))
+            parts.append("]")
+        joined = "".join(cells)
+        plain = joined.isascii() and joined.isprintable() and not ('"' in joined
+                                                                    or "\\" in joined)
+        text = ['"', list(cells), '"'] if plain else [[json.dumps(c) for c in cells]]
+        parts += [f'], "unit": "{unit}", "text": ', *text, ', "assumed_si": true}']
+    return parts
