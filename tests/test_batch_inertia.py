@@ -55,11 +55,15 @@ def _run(path, as_json: bool, fast: bool) -> tuple[int, str, str]:
 @pytest.mark.parametrize("seed", [1, 2])
 def test_the_vectorised_path_is_the_one_off_byte_for_byte(tmp_path, as_json, seed):
     rng = random.Random(seed)
-    rows = ['"' + _body(rng) + '"' for _ in range(300)]
-    rows += ['"disk(m=1kg, r=1m, at=(1, 0, 0) m)"', '"-disk(m=1kg, r=1m)"', '"rod(m=1kg)"',
-             '"disk(m=0kg, r=1m)"', '"disk(m=1 s, r=1m)"', '""']
+    rows = ['"' + _body(rng) + '",,' for _ in range(300)]
+    rows += ['"disk(m=1kg, r=1m, at=(1, 0, 0) m)",,', '"-disk(m=1kg, r=1m)",,',
+             '"rod(m=1kg)",,', '"disk(m=0kg, r=1m)",,', '"disk(m=1 s, r=1m)",,', '"",,']
+    # rows with a second body or an axis: the one-off, row by row
+    rows += [f'"{_body(rng)}","{_body(rng)}",' for _ in range(20)]
+    rows += [f'"{_body(rng)}",,{rng.choice(["x", "z", "(1, 1, 0)"])!s}' for _ in range(20)]
+    rng.shuffle(rows)
     path = tmp_path / "bodies.csv"
-    path.write_text("b1\n" + "\n".join(rows) + "\n")
+    path.write_text("b1,b2,axis\n" + "\n".join(rows) + "\n")
     fast, generic = _run(path, as_json, True), _run(path, as_json, False)
     assert fast == generic
     assert fast[0] == 2 and fast[2].count("Error: line") >= 5
@@ -73,8 +77,9 @@ def test_most_single_body_rows_take_the_vectorised_path(tmp_path):
     rng = random.Random(3)
     cells = [[_body(rng)] for _ in range(200)]
     spec = InertiaRows()
-    columns = read_header(1, ["b1"], spec)
-    blocks = inertia_fast(spec, columns, [[c[0] for c in cells]], False, {})
+    columns = read_header(1, ["b1", "b2", "axis"], spec)
+    blocks = inertia_fast(spec, columns, [[c[0] for c in cells], [""] * 200, [""] * 200],
+                          False, {})
     covered = sum(len(b.rows) for b in blocks)
     simple = sum(1 for (c,) in cells if not c.startswith("half-cylinder")
                  and all(x not in c for x in ("e300", "e-320", "e200")))

@@ -72,15 +72,16 @@ _SLOT_RE = re.compile(r"^([ \t]*)#([^#]*)$")
 
 def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
     """The rows of this chunk the vectorised path computes, as blocks (one per *template*:
-    a body word with its numbers taken out, the same body, parameters, units and spacing);
+    a body word in the first body column, every other cell of the row empty, with its
+    numbers taken out: the same body, parameters, units and spacing);
     every other row is left to the generic path. The numbers of a template's rows are read
     in one pass over their cells joined."""
     if not table:
         return []
     bodies = [col for col in columns if spec.is_body(col.key)]
-    if len(bodies) != 1 or bodies[0].unit:
+    if not bodies or any(col.unit for col in bodies):
         return []
-    body = bodies[0]
+    body = bodies[0]  # the rows whose every other cell (b2, ..., axis) is empty
     cells = list(table[body.index])
     others = [table[col.index] for col in columns if col is not body]
     candidates = range(len(cells))
