@@ -31,6 +31,13 @@ from pathlib import Path
 BIN = Path(sys.executable).parent
 
 #: (label, argv after ``dyncalc``, header, a function of a Random giving one row's cells)
+def _chain(r) -> list[str]:
+    """Two masses, two springs (wall, k1, m1, k2, m2): quoted 2x2 cells of bare numbers."""
+    m1, m2, k1, k2 = (float(f"{r.uniform(lo, hi):.6g}") for lo, hi in
+                      ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4)))
+    return [f'"[[{m1!r},0],[0,{m2!r}]]"', f'"[[{k1 + k2!r},{-k2!r}],[{-k2!r},{k2!r}]]"']
+
+
 CASES = [
     ("natural-frequency mass-spring", ["natural-frequency"], "k [N/m],m [kg]",
      lambda r: [f"{r.uniform(10, 1e4):.6g}", f"{r.uniform(0.1, 50):.6g}"]),
@@ -62,6 +69,9 @@ CASES = [
      lambda r: [f"{r.uniform(1e3, 1e6):.6g}", f"{r.uniform(1, 500):.6g}",
                 f"{r.uniform(0.01, 0.3):.6g}", f"{r.uniform(1, 1e3):.6g}",
                 f"{r.uniform(1, 300):.6g}"]),
+    ("inertia one disk a row (extra)", ["inertia"], "b1",
+     lambda r: ['"disk(m=%.6g kg, r=%.6g m)"' % (r.uniform(0.1, 50), r.uniform(0.01, 2))]),
+    ("modes two-mass chain (extra)", ["modes"], "M,K", lambda r: _chain(r)),
     ("coriolis", ["coriolis"], "omega [rad/s],vr [m/s]",
      lambda r: ['"0,0,%.6g"' % r.uniform(0.1, 5), '"%.6g,%.6g,0"' % (r.uniform(-3, 3),
                                                                    r.uniform(-3, 3))]),

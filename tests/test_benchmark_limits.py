@@ -29,7 +29,8 @@ def test_every_command_of_the_brief_has_a_limit_script():
     labels = {case[0] for case in CASES}
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
-                      "coriolis", "forced-response"}
+                      "coriolis", "forced-response",
+                      "inertia one disk a row (extra)", "modes two-mass chain (extra)"}
 
 
 @pytest.mark.parametrize("as_json", [False, True], ids=["csv", "json"])

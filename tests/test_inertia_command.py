@@ -214,13 +214,18 @@ def test_at_most_200_bodies():
     assert out["J_axis"] == pytest.approx(sum(i * i for i in range(200)), rel=1e-15)
 
 
-def test_batch_is_refused_with_the_reason(tmp_path):
+def test_batch_takes_one_composite_per_row(tmp_path):
+    """A row's body cells are the one-off's words (tests/test_batch_inertia.py has more)."""
     rows = tmp_path / "rows.csv"
-    rows.write_text("m\n1\n")
-    assert error_line(run("--batch", "/dev/zero")) == error_line(run("--batch", str(rows)))
-    assert error_line(run("--batch", str(rows))) == (
-        "Error: inertia does not take --batch: its bodies are words with their own parameters, "
-        "not columns; run one composite per command (or use the Python API, dyncalc.inertia)")
+    rows.write_text('b1,b2,axis\n"rod(m=3kg, l=2m, along=x, at=(1, 0, 0) m)",,z\n'
+                    '"disk(m=4kg, r=0.2m)","-disk(m=0.25kg, r=5cm, at=(0.1, 0, 0) m)",x\n')
+    result = run("--batch", str(rows), "--json")
+    assert (result.exit_code, result.stderr) == (0, "")
+    got = [json.loads(line) for line in result.stdout.splitlines()]
+    assert got[0]["results"]["J_axis"]["value"] == pytest.approx(4.0, rel=1e-15)  # m l^2/3
+    one_off = values("disk(m=4kg, r=0.2m)", "-disk(m=0.25kg, r=5cm, at=(0.1, 0, 0) m)",
+                     "--axis", "x")
+    assert got[1]["results"]["J_axis"]["value"] == one_off["J_axis"]
 
 
 def test_python_api_is_the_cli_to_the_bit():

@@ -319,9 +319,7 @@ def test_batch_on_dev_full(warm_cache):
     assert (result.returncode, error_lines(result.stderr)) == (3, [FULL_MESSAGE])
 
 
-#: inertia refuses --batch itself, before reading anything (its bodies are words, not
-#: columns): tests/test_inertia_command.py.
-@pytest.mark.parametrize("command", [c for c in COMMANDS if c not in ("scenes", "inertia")])
+@pytest.mark.parametrize("command", [c for c in COMMANDS if c != "scenes"])
 def test_batch_from_dev_zero_is_refused_at_once(warm_cache, command):
     """``--batch /dev/zero`` read forever (a line that never ends)."""
     scene = ["--scene", "pendulum"] if command == "eom" else []  # eom batches a scene's rows

@@ -260,8 +260,13 @@ def ModesRows(*, scene: str | None = None, normalize: str | None = None,
     from ..scenes import get_scene
 
     words = tuple(p.name for p in get_scene(scene).params) if scene is not None else ()
-    return RecordRows(COMMAND, {"scene": scene, "normalize": normalize}, scene_words=words,
+    spec = RecordRows(COMMAND, {"scene": scene, "normalize": normalize}, scene_words=words,
                       strict=strict, example='M,K')
+    if scene is None:  # matrices of bare numbers solved on a stack (dyncalc.batch.fast_modes)
+        from .fast_modes import modes_fast
+
+        spec.fast = modes_fast
+    return spec
 
 
 def EomRows(*, scene: str | None = None, about: str | None = None,

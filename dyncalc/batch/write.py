@@ -260,6 +260,18 @@ def _number_parts(array, as_json: bool) -> list:
         return [array]
     if as_json and not np.isfinite(array).all():
         return [[json.dumps(v) for v in array.tolist()]]
+    if array.ndim == 3:  # matrices: rows of components ("a,b;c,d" in CSV, as --value)
+        if as_json:
+            rows = [_number_parts(array[:, i, :], True) for i in range(array.shape[1])]
+            return ["[", *[p for i, row in enumerate(rows) for p in ([", "] if i else []) + row],
+                    "]"]
+        parts = ['"']
+        for i in range(array.shape[1]):
+            parts += [";"] if i else []
+            for j in range(array.shape[2]):
+                parts += [","] if j else []
+                parts.append(_component(array[:, i, j]))
+        return parts + ['"']
     width = array.shape[1]
     opening, between, closing = ("[", ", ", "]") if as_json else ('"', ",", '"')
     if not width:
@@ -267,5 +279,15 @@ def _number_parts(array, as_json: bool) -> list:
     parts: list = [opening]
     for j in range(width):
         parts += [between] if j else []
-        parts.append(np.ascontiguousarray(array[:, j]))
+        parts.append(_component(array[:, j]))
     return parts + [closing]
+
+
+def _component(column):
+    """A component column of vectors or matrices: one text when every row holds the same
+    float, bit for bit (the zeros off a diagonal, an axis), else the column."""
+    column = np.ascontiguousarray(column, dtype=np.float64)
+    bits = column.view(np.int64)
+    if len(bits) and (bits == bits[0]).all():
+        return repr(float(column[0]))
+    return column

@@ -9,7 +9,6 @@ from __future__ import annotations
 import re
 
 from ..commands.inertia import COMMAND
-from ..errors import InputError
 from .command import Command
 from .options import build_command
 
@@ -45,9 +44,9 @@ class BodiesCommand(Command):
 
 
 def _rows(settings, out):
-    raise InputError("inertia does not take --batch: its bodies are words with their own "
-                     "parameters, not columns; run one composite per command (or use the "
-                     "Python API, dyncalc.inertia)")
+    from ..batch.inertia_rows import InertiaRows
+
+    return InertiaRows(strict=out.strict)
 
 
 inertia = build_command(COMMAND, rows=_rows, cls=BodiesCommand)

@@ -1,0 +1,141 @@
+"""``inertia --batch``: one composite per row (body columns b1, b2, ..., axis); the vectorised
+path of one body at the origin (dyncalc/batch/fast_inertia.py) byte for byte the generic
+(one-off) path, on random rows with extremes; values against the textbook formulas."""
+from __future__ import annotations
+
+import io
+import json
+import math
+import random
+
+import pytest
+from click.testing import CliRunner
+
+from dyncalc.batch import run_batch
+from dyncalc.batch.inertia_rows import InertiaRows
+from dyncalc.cli import cli
+
+_UNITS = {"m": ["kg", "g", "t", ""], "len": ["m", "cm", "mm", "ft", ""]}
+_MAGNITUDES = [1.0, 0.2, 3.7, 1e-150, 1e150, 1e-300, 1e300, 7.5e200, 2.5e-320]
+
+
+def _value(rng, kind):
+    x = rng.choice(_MAGNITUDES) * rng.uniform(0.5, 2.0) if rng.random() < 0.3 else \
+        rng.uniform(0.01, 10.0)
+    unit = rng.choice(_UNITS[kind])
+    return f"{x!r}{rng.choice(['', ' '])}{unit}"
+
+
+def _body(rng):
+    kind = rng.choice(["rod", "disk", "ring", "solid-sphere", "hollow-sphere", "point",
+                       "solid-cylinder", "hollow-cylinder", "plate", "half-cylinder-shell"])
+    dims = {"rod": ["l"], "disk": ["r"], "ring": ["r"], "solid-sphere": ["r"],
+            "hollow-sphere": ["r"], "point": [], "solid-cylinder": ["r", "h"],
+            "hollow-cylinder": ["ri", "ro", "h"], "plate": ["a", "b"],
+            "half-cylinder-shell": ["r", "h"]}[kind]
+    parts = [f"m={_value(rng, 'm')}"]
+    if kind == "solid-cylinder" and rng.random() < 0.3:  # J_xx = J_zz: h = sqrt(3) r
+        r = rng.uniform(0.1, 2.0)
+        return f"solid-cylinder(m=2kg, r={r!r} m, h={math.sqrt(3.0) * r!r} m)"
+    parts += [f"{d}={_value(rng, 'len')}" for d in dims]
+    if kind == "rod" and rng.random() < 0.3:
+        parts[0] = f"rho={rng.uniform(0.1, 5.0)!r} kg/m"
+    rng.shuffle(parts)
+    return f"{kind}({', '.join(parts)})"
+
+
+def _run(path, as_json: bool, fast: bool) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    status = run_batch(InertiaRows(), str(path), as_json=as_json, on_error="skip",
+                       out=out, err=err, fast=fast)
+    return status, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+@pytest.mark.parametrize("seed", [1, 2])
+def test_the_vectorised_path_is_the_one_off_byte_for_byte(tmp_path, as_json, seed):
+    rng = random.Random(seed)
+    rows = ['"' + _body(rng) + '",,' for _ in range(300)]
+    rows += ['"disk(m=1kg, r=1m, at=(1, 0, 0) m)",,', '"-disk(m=1kg, r=1m)",,',
+             '"rod(m=1kg)",,', '"disk(m=0kg, r=1m)",,', '"disk(m=1 s, r=1m)",,', '"",,']
+    # rows with a second body or an axis: the one-off, row by row
+    rows += [f'"{_body(rng)}","{_body(rng)}",' for _ in range(20)]
+    rows += [f'"{_body(rng)}",,{rng.choice(["x", "z", "(1, 1, 0)"])!s}' for _ in range(20)]
+    rng.shuffle(rows)
+    path = tmp_path / "bodies.csv"
+    path.write_text("b1,b2,axis\n" + "\n".join(rows) + "\n")
+    fast, generic = _run(path, as_json, True), _run(path, as_json, False)
+    assert fast == generic
+    assert fast[0] == 2 and fast[2].count("Error: line") >= 5
+
+
+def test_most_single_body_rows_take_the_vectorised_path(tmp_path):
+    """The kernel covers the rows it should (else the byte test above proves nothing)."""
+    from dyncalc.batch.fast_inertia import inertia_fast
+    from dyncalc.batch.header import read_header
+
+    rng = random.Random(3)
+    cells = [[_body(rng)] for _ in range(200)]
+    spec = InertiaRows()
+    columns = read_header(1, ["b1", "b2", "axis"], spec)
+    blocks = inertia_fast(spec, columns, [[c[0] for c in cells], [""] * 200, [""] * 200],
+                          False, {})
+    covered = sum(len(b.rows) for b in blocks)
+    simple = sum(1 for (c,) in cells if not c.startswith("half-cylinder")
+                 and all(x not in c for x in ("e300", "e-320", "e200")))
+    assert covered >= 0.9 * simple > 50
+
+
+def test_textbook_values_and_principal_axes(tmp_path):
+    path = tmp_path / "b.csv"
+    path.write_text('b1\n"solid-cylinder(m=12kg, r=1m, h=2m)"\n"disk(m=4 kg, r=20 cm)"\n'
+                    '"plate(rho=7.8 kg/m^2, a=0.4m, b=0.2m)"\n')
+    status, out, err = _run(path, True, True)
+    assert (status, err) == (0, "")
+    cyl, disk, plate = [json.loads(line)["results"] for line in out.splitlines()]
+    # solid cylinder: m (3 r^2 + h^2)/12 = 7 across, m r^2/2 = 6 along its axis (Table 3.1)
+    assert [cyl[f"J_{i}"]["value"] for i in (1, 2, 3)] == [6.0, 7.0, 7.0]
+    assert cyl["axis_1"]["value"] == [0.0, 0.0, 1.0]
+    assert [cyl["axis_2"]["value"], cyl["axis_3"]["value"]] == [[1.0, 0.0, 0.0],
+                                                                 [0.0, 1.0, 0.0]]
+    assert disk["J_3"]["value"] == pytest.approx(4 * 0.2 ** 2 / 2, rel=1e-15)
+    assert disk["J_1"]["value"] == pytest.approx(4 * 0.2 ** 2 / 4, rel=1e-15)
+    m = 7.8 * 0.4 * 0.2
+    assert plate["m"]["value"] == pytest.approx(m, rel=1e-15)
+    assert plate["J_3"]["value"] == pytest.approx(m * (0.4 ** 2 + 0.2 ** 2) / 12, rel=1e-15)
+
+
+def test_composites_and_axis_columns_are_the_one_off(tmp_path):
+    from dyncalc.commands.inertia import inertia
+
+    path = tmp_path / "c.csv"
+    path.write_text('b1,b2,axis\n'
+                    '"rod(m=2kg, l=2m, along=x, at=(1, 0, 0) m)","rod(m=1kg, l=1m, at=(2, 0, 0.5) m)",z\n'
+                    '"disk(m=4kg, r=0.2m)","-disk(m=0.25kg, r=5cm, at=(0.1, 0, 0) m)",\n'
+                    '"rod(m=3kg, l=2m, along=x, at=(1, 0, 0) m)",,z\n')
+    status, out, err = _run(path, True, True)
+    assert (status, err) == (0, "")
+    lines = [json.loads(line) for line in out.splitlines()]
+    # the rod about its end: m l^2 / 3 = 4 kg*m^2 (independent of the code)
+    assert lines[2]["results"]["J_axis"]["value"] == pytest.approx(4.0, rel=1e-15)
+    one_off = inertia(["disk(m=4kg, r=0.2m)", "-disk(m=0.25kg, r=5cm, at=(0.1, 0, 0) m)"])
+    assert lines[1]["results"]["J_C"]["value"] == one_off.results["J_C"].si.tolist()
+    assert "J_axis" not in lines[1]["results"] and list(lines[1]["inputs"])[-1] == "b2.at"
+
+
+def test_bad_rows_and_usage_have_one_line_messages(tmp_path):
+    path = tmp_path / "e.csv"
+    path.write_text("b1,axis\n,z\n")
+    r = CliRunner().invoke(cli, ["inertia", "--batch", str(path)])
+    assert (r.exit_code, r.stdout, r.stderr) == (
+        2, "", "Error: line 2: no body: give at least one body cell (b1, b2, ...)\n")
+    path.write_text("m,r\n1,2\n")
+    r = CliRunner().invoke(cli, ["inertia", "--batch", str(path)])
+    assert (r.exit_code, r.stderr) == (
+        2, "Error: line 1: unknown column 'm'; inertia reads body columns b1, b2, ... (one "
+           "body word a cell, e.g. \"disk(m=4kg, r=0.2m)\") and axis\n")
+    path.write_text('b1\n"disk(m=1kg, r=1m)"\n')
+    r = CliRunner().invoke(cli, ["inertia", "--batch", str(path), "--axis", "z"])
+    assert (r.exit_code, r.stderr) == (
+        2, "Error: --axis and --batch do not go together: with --batch every parameter comes "
+           "from a column of the file\n")

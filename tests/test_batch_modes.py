@@ -1,0 +1,136 @@
+"""``modes --batch`` on its vectorised path (dyncalc/batch/fast_modes.py, a stacked Cholesky
+reduction and eigh) against the one-off row by row: the same rows, columns, refusals and
+texts, the numbers within 1e-12 relative (the documented difference: LAPACK's sygvd rounds
+otherwise), and against the closed form of a two-mass chain."""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import random
+
+import numpy as np
+import pytest
+
+from dyncalc.batch import run_batch
+from dyncalc.batch.header import read_header
+from dyncalc.batch.rows import ModesRows
+
+RTOL = 1e-12
+
+
+def _matrix(rng, n: int, scale: float, style: str) -> str:
+    a = np.array([[rng.uniform(-1, 1) for _ in range(n)] for _ in range(n)])
+    spd = (a @ a.T + n * np.eye(n)) * scale
+    spd = (spd + spd.T) / 2.0
+    rows = [[repr(float(x)) for x in row] for row in spd]
+    if style == "semicolons":
+        return ";".join(",".join(r) for r in rows)
+    return "[" + ", ".join("[" + ", ".join(r) + "]" for r in rows) + "]"
+
+
+def _file(tmp_path, seed: int, count: int = 120, sizes=(1, 2, 3, 4)):
+    rng = random.Random(seed)
+    lines = ["M,K"]
+    for _ in range(count):
+        n = rng.choice(sizes)
+        style = rng.choice(["brackets", "semicolons"])
+        scale_m = rng.choice([1.0, 1e-100, 1e100, 3.5])
+        scale_k = rng.choice([1.0, 1e-90, 1e90, 250.0])
+        lines.append(f'"{_matrix(rng, n, scale_m, style)}","{_matrix(rng, n, scale_k, style)}"')
+    lines += ['"[[1,0],[0,1]]","[[1,0],[0,1]]"',       # repeated frequencies: the one-off's
+              '"[[1,0],[0,1]]","[[1,-1],[-1,1]]"',     # a rigid-body mode: a warning
+              '"[[1,2],[2,1]]","[[1,0],[0,1]]"',       # M not positive definite: refused
+              '"[[1,0],[0,1]]","[[1,5],[0,1]]"',       # K not symmetric: refused
+              '"[[1,0],[0,1]]","[[1e400,0],[0,1]]"']   # beyond float64: refused
+    path = tmp_path / "systems.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def _run(path, as_json: bool, fast: bool, normalize=None):
+    out, err = io.StringIO(), io.StringIO()
+    status = run_batch(ModesRows(normalize=normalize), str(path), as_json=as_json,
+                       on_error="skip", out=out, err=err, fast=fast)
+    return status, out.getvalue(), err.getvalue()
+
+
+def _close(a, b) -> bool:
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(_close(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        return len(a) == len(b) and all(_close(x, y) for x, y in zip(a, b))
+    if isinstance(a, float) and isinstance(b, float):
+        return math.isclose(a, b, rel_tol=RTOL, abs_tol=RTOL * 1e-300) or \
+            abs(a - b) <= RTOL  # a mode component (largest is 1) may be near zero
+    return a == b
+
+
+def _cell(c: str):
+    """A result cell as its floats (``a,b;c,d``), or the text (an input matrix, a name)."""
+    try:
+        return [float(x) for x in c.replace(";", ",").split(",")] if c else c
+    except ValueError:
+        return c
+
+
+def _cells(text: str) -> list:
+    return [[_cell(c) for c in row] for row in csv.reader(io.StringIO(text))]
+
+
+@pytest.mark.parametrize("normalize", [None, "mass"])
+@pytest.mark.parametrize("seed", [1, 2])
+def test_vectorised_rows_are_the_one_off_within_1e_12(tmp_path, seed, normalize):
+    path = _file(tmp_path, seed, sizes=(2,))  # CSV: the first row's columns (two modes)
+    fast, generic = _run(path, False, True, normalize), _run(path, False, False, normalize)
+    assert (fast[0], fast[2]) == (generic[0], generic[2]) and fast[0] == 2
+    assert fast[2].count("Error: line") == 3 and fast[2].count("warning: line") == 1
+    mine, theirs = _cells(fast[1]), _cells(generic[1])
+    assert len(mine) == len(theirs) == 1 + 122
+    for a, b in zip(mine, theirs):
+        assert len(a) == len(b)
+        for x, y in zip(a, b):
+            assert _close(x, y), (x, y)
+    path = _file(tmp_path, seed)  # JSON lines: every size
+    jf, jg = _run(path, True, True, normalize), _run(path, True, False, normalize)
+    assert (jf[0], jf[2]) == (jg[0], jg[2])
+    lines_f, lines_g = jf[1].splitlines(), jg[1].splitlines()
+    assert len(lines_f) == len(lines_g) == 122
+    for a, b in zip(lines_f, lines_g):
+        assert _close(json.loads(a), json.loads(b))
+
+
+def test_most_rows_take_the_vectorised_path(tmp_path):
+    path = _file(tmp_path, 3)
+    rows = list(csv.reader(path.open()))
+    spec = ModesRows()
+    columns = read_header(1, rows[0], spec)
+    blocks = spec.fast(spec, columns, [[r[0] for r in rows[1:]], [r[1] for r in rows[1:]]],
+                       False, {})
+    covered = sum(len(b.rows) for b in blocks)
+    assert covered >= 100  # of 120 well-posed rows (and none of the 5 the one-off answers)
+    assert all(i < 120 for b in blocks for i in b.rows.tolist())
+
+
+def test_a_two_mass_chain_against_its_closed_form(tmp_path):
+    """m, k between walls, m, k, m... : M = m I, K = k [[2, -1], [-1, 2]] gives
+    omega_1 = sqrt(k/m) (in phase) and omega_2 = sqrt(3 k/m) (out of phase)."""
+    rng = random.Random(4)
+    lines = ["M,K"]
+    expected = []
+    for _ in range(50):
+        m, k = rng.uniform(0.1, 10.0), rng.uniform(10.0, 1e4)
+        lines.append(f'"[[{m!r},0],[0,{m!r}]]","[[{2 * k!r},{-k!r}],[{-k!r},{2 * k!r}]]"')
+        expected.append((math.sqrt(k / m), math.sqrt(3.0 * k / m)))
+    path = tmp_path / "chain.csv"
+    path.write_text("\n".join(lines) + "\n")
+    status, out, err = _run(path, True, True)
+    assert (status, err) == (0, "")
+    for line, (w1, w2) in zip(out.splitlines(), expected):
+        results = json.loads(line)["results"]
+        assert results["omega_1"]["value"] == pytest.approx(w1, rel=1e-13)
+        assert results["omega_2"]["value"] == pytest.approx(w2, rel=1e-13)
+        assert results["mode_1"]["value"] == [1.0, 1.0]
+        shape = results["mode_2"]["value"]  # the first largest component is the +1
+        assert shape[0] == 1.0 and shape[1] == pytest.approx(-1.0, rel=1e-13)
