@@ -252,6 +252,18 @@ def ForcedRows(*, scene: str | None = None, rtol: float | None = None,
     return spec
 
 
+def RigidRows(*, scene: str | None = None, rtol: float | None = None,
+              strict: bool = False) -> RecordRows:
+    """``rigid-body``: with ``--scene``, the scene's parameters (and a result to solve one of
+    them from), row by row; without, the Euler mode's ``inertia_tensor``, ``omega`` and
+    ``alpha`` as quoted cells."""
+    from ..commands.rigid_body import COMMAND, rigid_scene
+
+    words = tuple(p.name for p in rigid_scene(scene).params) if scene is not None else ()
+    return RecordRows(COMMAND, {"scene": scene}, scene_words=words, rtol=rtol, strict=strict,
+                      example="inertia_tensor,omega,alpha")
+
+
 def ModesRows(*, scene: str | None = None, normalize: str | None = None,
               strict: bool = False) -> RecordRows:
     """``modes``: one system per row, its matrices as quoted cells (``M``, ``K``, ``C``);
