@@ -21,14 +21,14 @@ TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (a one-of
 
 if TYPE_CHECKING:
     from .api import (ArrayResult, Result, coriolis, damping_ratio, eom, forced_response,
-                      inertia, modes, natural_frequency, rolling_onset, spring_parallel,
-                      spring_series)
+                      inertia, modes, natural_frequency, rigid_body, rolling_onset,
+                      spring_parallel, spring_series)
     from .errors import InputError, PhysicsError
 
 #: The command functions (:mod:`dyncalc.api`), one per command record.
 COMMAND_FUNCTIONS = ("spring_series", "spring_parallel", "natural_frequency", "damping_ratio",
                      "rolling_onset", "coriolis", "forced_response", "modes", "inertia",
-                     "eom")
+                     "rigid_body", "eom")
 
 __all__ = [
     "__version__", *COMMAND_FUNCTIONS, "Result", "ArrayResult", "InputError", "PhysicsError",

@@ -14,8 +14,8 @@ from dyncalc.cli import cli
 
 ROOT = Path(__file__).resolve().parents[1]
 COMMANDS_ALL = ["spring-series", "spring-parallel", "natural-frequency", "damping-ratio",
-         "rolling-onset", "coriolis", "forced-response", "modes", "inertia", "eom",
-         "scenes"]
+         "rolling-onset", "coriolis", "forced-response", "modes", "inertia", "rigid-body",
+         "eom", "scenes"]
 
 
 def run(*args, env=None):

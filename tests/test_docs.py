@@ -15,7 +15,7 @@ import pytest
 from click.testing import CliRunner
 
 from dyncalc.cli import cli
-from dyncalc.result.kinds import result_kind
+from dyncalc.scenes.runner import scene_kind
 from dyncalc.scenes import catalog
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -225,11 +225,11 @@ def test_results_are_what_the_cli_gives(page, scene):
     assert listed == list(data["results"])
     for row in rows:
         name = row[0].strip("`")
-        unit = result_kind(name).dim.si
+        unit = scene_kind(scene, name).dim.si
         assert row[2] == (f"`{unit}`" if unit else "-"), name
     gives = section[section.index("gives ("):].split("\n", 1)[0]
     for name, got in data["results"].items():
-        unit = result_kind(name).dim.si
+        unit = scene_kind(scene, name).dim.si
         if got["unit"] != unit:  # shown in another unit by the CLI (an angle in deg)
             continue
         values = got["value"] if isinstance(got["value"], list) else [got["value"]]

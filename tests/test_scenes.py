@@ -11,8 +11,7 @@ from dyncalc.cli import cli
 from dyncalc.commands.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.scenes import catalog, get_scene
-from dyncalc.result.kinds import result_kind
-from dyncalc.scenes.runner import run_scene
+from dyncalc.scenes.runner import run_scene, scene_kind
 from dyncalc.units import convert, parse_quantity
 
 #: Every scene of ../shared/SCENES.md (natural-frequency and damping tables).
@@ -25,6 +24,9 @@ SCENES_MD = {
     "bead-on-rotating-ring", "quarter-car", "rod-in-fluid", "frame-brace-damper",
     "mass-spring-given-response", "rolling-wheel-moving-ground",
     "block-disk-springs", "spring-coupled-pendulums", "pendulum-on-sliding-block",
+    # rigid-body scenes (the rigid-body command)
+    "drum-two-blocks", "wheel-incline-block", "two-drums-rope-drive", "direct-central-impact",
+    "double-pendulum-impulse",
 }
 
 SCENES = list(catalog().values())
@@ -39,7 +41,8 @@ def run_json(words):
 
 def example_words(scene):
     words = shlex.split(scene.example)
-    assert words[0] == "dyncalc" and words[1] in ("natural-frequency", "forced-response"), \
+    assert words[0] == "dyncalc" and words[1] in ("natural-frequency", "forced-response",
+                                                  "rigid-body"), \
         scene.example
     return words[1:]
 
@@ -56,7 +59,7 @@ def test_scenes_json_lists_every_scene_with_dimensions():
         for p in scene["params"]:
             assert p["dimension"], (scene["name"], p["name"])
         assert scene["example"].startswith(("dyncalc natural-frequency",
-                                            "dyncalc forced-response"))
+                                            "dyncalc forced-response", "dyncalc rigid-body"))
 
 
 @pytest.mark.parametrize("scene", SCENES, ids=IDS)
@@ -74,7 +77,7 @@ def test_example_reproduces_textbook_value(scene):
     data = run_json(example_words(scene))
     assert data["scene"] == scene.name
     for name, text in scene.example_result.items():
-        kind = result_kind(name)
+        kind = scene_kind(scene, name)
         expected = parse_quantity(text, kind.dim, label=name, constraint=None).si
         got = data["results"][name]
         shown = convert(expected, kind.dim, got["unit"]) if got["unit"] != kind.dim.si else expected

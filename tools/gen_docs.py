@@ -90,7 +90,8 @@ def parse_example(example: str) -> tuple[dict[str, str], list[str], str | None, 
     from dyncalc.commands.natural_frequency import STANDARD
 
     words = shlex.split(example)
-    if words[:2] not in (["dyncalc", "natural-frequency"], ["dyncalc", "forced-response"]):
+    if words[:2] not in (["dyncalc", "natural-frequency"], ["dyncalc", "forced-response"],
+                         ["dyncalc", "rigid-body"]):
         raise ValueError(f"not a natural-frequency command: {example!r}")
     options: dict[str, str] = {}
     assignments: list[str] = []
@@ -121,7 +122,12 @@ def run_example(scene):
     from dyncalc.commands.natural_frequency import natural_frequency
 
     options, words, name, method = parse_example(scene.example)
-    result = natural_frequency(options, words, scene=name, method=method)
+    if scene.example.startswith("dyncalc rigid-body"):
+        from dyncalc.commands.rigid_body import rigid_body
+
+        result = rigid_body(options, words, scene=name)
+    else:
+        result = natural_frequency(options, words, scene=name, method=method)
     if result.scene != scene.name:
         raise ValueError(f"{scene.name}'s example runs scene {result.scene!r}: {scene.example}")
     added = None
@@ -240,14 +246,15 @@ def _rules(scene) -> list[str]:
 
 
 def _results(result, added) -> list[str]:
-    from dyncalc.result.kinds import result_kind
+    from dyncalc.scenes import get_scene
+    from dyncalc.scenes.runner import scene_kind
 
     lines = ["| result | symbol | canonical unit | meaning | from |",
              "| --- | --- | --- | --- | --- |"]
     rows = [(name, "the example") for name in result.results]
     rows += [(name, "`zeta=`") for name in added or ()]
     for name, when in rows:
-        kind = result_kind(name)
+        kind = scene_kind(get_scene(result.scene), name)
         unit = _code_cell(kind.dim.si) if kind.dim.si else "-"
         lines.append(f"| {_code_cell(name)} | {_cell(kind.symbol)} | {unit} | "
                      f"{_cell(kind.description)} | {when} |")

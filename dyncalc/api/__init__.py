@@ -38,7 +38,8 @@ from .results import ArrayResult, Result
 __all__ = ["Result", "ArrayResult", "CommandFunction", "InputError", "PhysicsError",
            "command_function", "function_names",
            "spring_series", "spring_parallel", "natural_frequency", "damping_ratio",
-           "rolling_onset", "coriolis", "forced_response", "modes", "inertia", "eom"]
+           "rolling_onset", "coriolis", "forced_response", "modes", "inertia", "rigid_body",
+           "eom"]
 
 
 class CommandFunction(Protocol):
@@ -61,6 +62,7 @@ if TYPE_CHECKING:  # made on first use by __getattr__ below; declared here for t
     forced_response: CommandFunction
     modes: CommandFunction
     inertia: CommandFunction
+    rigid_body: CommandFunction
     eom: CommandFunction
 
 

@@ -71,13 +71,14 @@ from ..result.propagate import propagate
 from .fast import FastBlock
 from .header import Column, has_own_unit, read_header, with_header_unit
 from .rows import (CoriolisRows, DampingRows, EomRows, ForcedRows, ModesRows,
-                   NaturalFrequencyRows,
+                   NaturalFrequencyRows, RigidRows,
                    RollingRows, RowSpec, SpringRows)
 from .source import MAX_LINE, _Reader, open_source
 from .write import _BLANK, _FAST, _Writer
 
 __all__ = ["run_batch", "RowSpec", "NaturalFrequencyRows", "SpringRows", "DampingRows",
-           "RollingRows", "CoriolisRows", "ForcedRows", "ModesRows", "EomRows", "CHUNK_ROWS",
+           "RollingRows", "CoriolisRows", "ForcedRows", "ModesRows", "EomRows", "RigidRows",
+           "CHUNK_ROWS",
            "ON_ERROR", "GENERIC_ENV", "MAX_LINE",
            "open_source", "Column", "read_header", "has_own_unit", "with_header_unit",
            "FastBlock"]

@@ -252,6 +252,38 @@ def ForcedRows(*, scene: str | None = None, rtol: float | None = None,
     return spec
 
 
+def RigidRows(*, scene: str | None = None, rtol: float | None = None,
+              strict: bool = False) -> RecordRows:
+    """``rigid-body``: with ``--scene``, the scene's parameters (and a result to solve one of
+    them from), row by row; without, the Euler mode's ``inertia_tensor``, ``omega`` and
+    ``alpha`` as quoted cells."""
+    from ..commands.rigid_body import COMMAND, rigid_scene
+
+    if scene is None:
+        return RecordRows(COMMAND, {"scene": None}, rtol=rtol, strict=strict,
+                          example="inertia_tensor,omega,alpha")
+    chosen = rigid_scene(scene)
+    spec = RecordRows(COMMAND, {"scene": scene}, rtol=rtol, strict=strict,
+                      targets=tuple(chosen.kinds), example="m1 [kg],m2 [kg]")
+    # every column is a scene word: the scene's alpha is a result to solve from, not --alpha
+    spec.columns = []
+    spec.scene_words = [p.name for p in chosen.params]
+    spec.known = lambda: (f"rigid-body --scene {chosen.name} reads "
+                          f"{', '.join(spec.scene_words)} and a result to solve from "
+                          f"({', '.join(chosen.kinds)})")
+    # the vectorised path: the scene's physics on each row's SI floats (commands/rigid_columns)
+    from ..commands.record import Parameter
+    from ..commands.rigid_columns import scene_columns
+    from .fast_commands import _command_fast
+
+    params = {p.name: Parameter(p.name, p.dim, p.description, kind="choice",
+                                choices=tuple(p.choices)) if p.choices is not None
+              else Parameter(p.name, p.dim, p.description) for p in chosen.params}
+    spec.parameter = params.get
+    spec.adapter, spec.fast = scene_columns, _command_fast
+    return spec
+
+
 def ModesRows(*, scene: str | None = None, normalize: str | None = None,
               strict: bool = False) -> RecordRows:
     """``modes``: one system per row, its matrices as quoted cells (``M``, ``K``, ``C``);

@@ -12,7 +12,7 @@ COMMAND_MODULES = {
     "natural-frequency": "natural_frequency", "damping-ratio": "damping_ratio",
     "rolling-onset": "rolling_onset", "coriolis": "coriolis",
     "forced-response": "forced_response", "modes": "modes", "inertia": "inertia",
-    "eom": "eom", "scenes": "scenes",
+    "rigid-body": "rigid_body", "eom": "eom", "scenes": "scenes",
 }
 
 

@@ -84,7 +84,25 @@ def natural_frequency(options: dict[str, str | None], words: tuple[str, ...] | l
     -> the Result of the scene they name or choose."""
     texts, labels = collect_parameters(options, words)
     name = scene if scene is not None else infer_scene(set(texts))
-    return compute_scene(name, texts, labels=labels, method=method, rtol=rtol, strict=strict)
+    chosen = get_scene(name)
+    refuse_rigid(chosen.name, "natural-frequency")
+    return compute_scene(chosen, texts, labels=labels, method=method, rtol=rtol, strict=strict)
+
+
+def refuse_rigid(name: str, command: str) -> None:
+    """Refuse a rigid-body scene (:mod:`dyncalc.scenes.kinetics`) to another command."""
+    from ..scenes.kinetics import is_kinetics_scene
+
+    if is_kinetics_scene(name):
+        raise InputError(f"{command} does not take {name}: it is a rigid-body scene (no "
+                         f"oscillation); run 'dyncalc rigid-body --scene {name} ...'")
+
+
+def natural_scene_names() -> list[str]:
+    """The scenes ``natural-frequency --scene`` takes: every scene but the rigid-body ones."""
+    from ..scenes.kinetics import is_kinetics_scene
+
+    return [name for name in scene_names() if not is_kinetics_scene(name)]
 
 
 # --- the command record ----------------------------------------------------------------------
@@ -115,7 +133,7 @@ COMMAND = Command(
     (
         Parameter("scene", None, "The set-up (dyncalc scenes lists them); default: chosen by "
                   "the parameters given (k, m: mass-spring; kt, J: torsional; l: pendulum).",
-                  "NAME", kind="setting", choices=scene_names),
+                  "NAME", kind="setting", choices=natural_scene_names),
         Parameter("k", STIFFNESS, "Stiffness, e.g. '2 kN/m' (k=).", "K"),
         Parameter("m", MASS, "Mass, e.g. 4kg (m=).", "M"),
         Parameter("kt", TORSIONAL_STIFFNESS, "Torsional stiffness, e.g. '3 kN*m/rad' (kt=).",

@@ -27,6 +27,7 @@ __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "
 CATALOG_MODULES: tuple[str, ...] = (
     "dyncalc.scenes.basic", "dyncalc.scenes.rigid", "dyncalc.scenes.rotating",
     "dyncalc.scenes.damped", "dyncalc.scenes.forced", "dyncalc.scenes.lagrange",
+    "dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads",
 )
 
 
@@ -86,12 +87,16 @@ class Scene(Frozen):
     is at these inputs (a sentence, or None). ``matrices``, on a scene with several degrees
     of freedom, is a function of the SI values by name giving its
     :class:`~dyncalc.physics.lagrange.Linearised` mass and stiffness matrices (what ``modes
-    --scene`` solves); a scene with no equilibrium gives a function that raises.
+    --scene`` solves); a scene with no equilibrium gives a function that raises. ``kinds``
+    maps result names to their own :class:`~dyncalc.result.kinds.ResultKind` where the
+    shared table (:func:`dyncalc.result.kinds.result_kind`) has none or means something else
+    (a rigid-body scene's ``V`` is a shear force, not a magnification).
     """
 
     __slots__ = ("name", "summary", "figure", "params", "compute", "equation", "formula",
                  "reference", "example", "example_result", "constraints", "one_of", "methods",
-                 "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes", "matrices")
+                 "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes", "matrices",
+                 "kinds")
 
     def __init__(self, name: str, summary: str, figure: str, params: tuple[Param, ...],
                  compute: Any, equation: str, formula: str, reference: str, example: str,
@@ -100,11 +105,11 @@ class Scene(Frozen):
                  accepts_zeta: bool = True,
                  no_zeta_because: str = "its damping comes from its own parameters",
                  assumptions: tuple[str, ...] = (), latex: tuple = (), sizes: tuple = (),
-                 matrices: Any = None):
+                 matrices: Any = None, kinds: dict | None = None):
         _set_all(self, name, summary, figure, params, compute, equation, formula, reference,
                  example, {} if example_result is None else example_result, constraints,
                  one_of, methods, accepts_zeta, no_zeta_because, assumptions, latex, sizes,
-                 matrices)
+                 matrices, {} if kinds is None else kinds)
 
     def replace(self, **changes) -> Scene:
         """A copy with ``changes`` (what ``dataclasses.replace`` does)."""

@@ -47,9 +47,9 @@ from ..errors import InputError
 from ..result.entries import Entry, entry_from_parsed
 from ..units import ANGLE, parse_quantity, registry
 from . import Scene
-from ..result.kinds import result_kind
 from .runner import (DEFAULT_RTOL, Prepared, check_constraints, compute_values, is_result_name,
-                     make_result, read_inputs, set_parameter, _entry, _parameter_list)
+                     make_result, read_inputs, scene_kind, set_parameter, _entry,
+                     _parameter_list)
 
 __all__ = ["solve"]
 
@@ -81,7 +81,7 @@ def solve(scene: Scene, texts: dict[str, str], *, labels: dict[str, str], method
     if not asked and not prepared.missing and target != "zeta":  # zeta: its own message
         _refuse_foreign_result(scene, target, prepared, method, rtol)
     unknown = _the_unknown(scene, target, asked, prepared.missing, labels)
-    kind = result_kind(target)
+    kind = scene_kind(scene, target)
     parsed_goal = parse_quantity(target_text, kind.dim,
                                  label=labels.get(target, f"{target}=").rstrip("="),
                                  strict=strict)
@@ -166,7 +166,7 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
             return None
         out = {}
         for name, value in values.items():
-            entry = _entry(name, value)
+            entry = _entry(name, value, at.scene)
             if not isinstance(entry.si, str):
                 out[name] = np.asarray(entry.si, dtype=float)
         return out
@@ -222,7 +222,8 @@ def _sensitivity(problem: _Problem, roots: list[float], names: list[str], parsed
 
 def _split(scene: Scene, texts: dict[str, str], labels: dict[str, str]):
     """``(target, its text, the parameters' texts, the names asked for as NAME=?)``."""
-    targets = {n: t for n, t in texts.items() if scene.param(n) is None and is_result_name(n)}
+    targets = {n: t for n, t in texts.items()
+               if scene.param(n) is None and is_result_name(n, scene)}
     asked = [n for n, t in texts.items() if scene.param(n) is not None and t.strip() == "?"]
     known = {n: t for n, t in texts.items() if n not in targets and n not in asked}
     for name, text in targets.items():
@@ -325,7 +326,7 @@ class _Problem:
         self.scene, self.prepared, self.param, self.target = scene, prepared, param, target
         self.method, self.rtol = method, rtol
         self.unit = param.dim.si.replace("^", "**") if param.dim.si else ""
-        self.kind_unit = result_kind(target).dim.si
+        self.kind_unit = scene_kind(scene, target).dim.si
         self.seen: set[str] = set()  # every result name the scene gave at some x
         # changes of y below this (relative) are rounding or model error, not a turning point
         self.noise = 8 * max(rtol if rtol else DEFAULT_RTOL, 2.0 ** -52)
@@ -360,7 +361,7 @@ class _Problem:
         value = values.get(self.target)
         if value is None:
             return math.nan
-        entry = _entry(self.target, value)
+        entry = _entry(self.target, value, self.scene)
         return float(entry.si) if isinstance(entry.si, float) else math.nan
 
     def _admissible(self, x: float) -> bool:

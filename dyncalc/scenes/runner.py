@@ -17,7 +17,8 @@ from . import Scene, get_scene
 from ..result.kinds import result_kind
 from ..lazy import numpy as np  # for vector results only
 
-__all__ = ["run_scene", "is_inverse", "is_result_name", "read_inputs", "compute_values",
+__all__ = ["run_scene", "is_inverse", "is_result_name", "scene_kind", "read_inputs",
+           "compute_values",
            "make_result", "DEFAULT_RTOL"]
 
 DEFAULT_RTOL = 1e-9
@@ -135,16 +136,27 @@ def _nudged(scene: Scene, prepared: Prepared, name: str, offset: float) -> Prepa
 def is_inverse(scene: Scene, texts: dict[str, str]) -> bool:
     """Whether ``texts`` pose an inverse problem: a result of the scene given as an input
     (``f=5Hz``), which is not also the name of one of its parameters."""
-    return any(scene.param(name) is None and is_result_name(name) for name in texts)
+    return any(scene.param(name) is None and is_result_name(name, scene) for name in texts)
 
 
-def is_result_name(name: str) -> bool:
-    """Whether ``name`` names a result some scene gives (``f``, ``omega_d``, ``zeta``)."""
+def is_result_name(name: str, scene: Scene | None = None) -> bool:
+    """Whether ``name`` names a result some scene gives (``f``, ``omega_d``, ``zeta``), or
+    one of ``scene``'s own results."""
+    if scene is not None and name in scene.kinds:
+        return True
     try:
         result_kind(name)
     except KeyError:
         return False
     return not name.startswith("mode_")
+
+
+def scene_kind(scene: Scene | None, name: str):
+    """The kind of result ``name`` of ``scene``: its own (``Scene.kinds``), else the shared
+    table's (``KeyError`` for a name no scene gives)."""
+    if scene is not None and name in scene.kinds:
+        return scene.kinds[name]
+    return result_kind(name)
 
 
 class Prepared:
@@ -253,7 +265,7 @@ def make_result(scene: Scene, inputs: dict[str, Entry], outcome, values: dict[st
                 solved: dict[str, Entry] | None = None) -> Result:
     """The Result of a scene: ``solved`` entries (an inverse problem) come first."""
     results = dict(solved or {})
-    results.update((name, _entry(name, value)) for name, value in values.items()
+    results.update((name, _entry(name, value, scene)) for name, value in values.items()
                    if name not in results)
     result = Result(command=command, results=results, inputs=inputs, scene=scene.name,
                     model=outcome.model, method=outcome.method, warnings=warnings,
@@ -265,8 +277,8 @@ def make_result(scene: Scene, inputs: dict[str, Entry], outcome, values: dict[st
     return result
 
 
-def _entry(name: str, value) -> Entry:
-    kind = result_kind(name)
+def _entry(name: str, value, scene: Scene | None = None) -> Entry:
+    kind = scene_kind(scene, name)
     if hasattr(value, "units"):
         magnitude = to_si(value, kind.dim, name)
         if type(magnitude) is float:  # a plain scalar: no need to ask numpy (np.ndim is 0)

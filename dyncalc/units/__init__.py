@@ -3,9 +3,11 @@ checks, angles included (:mod:`.dimensions`), and the strict quantity grammar
 (:mod:`.grammar`). Nothing here knows about commands, physics or output."""
 from __future__ import annotations
 
-from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, AREA,
+from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_MOMENTUM,
+                         ANGULAR_RATE, AREA,
                          COUPLING_DAMPING, COUPLING_MASS, COUPLING_STIFFNESS,
-                         CYCLE_RATE, DAMPING, DECAY_RATE, DIMENSIONLESS, FORCE, INERTIA, LENGTH,
+                         CYCLE_RATE, DAMPING, DECAY_RATE, DIMENSIONLESS, ENERGY, FORCE, IMPULSE,
+                         INERTIA, LENGTH,
                          LINEAR_DRAG, MASS, MODULUS, RIGIDITY, SECOND_MOMENT, STIFFNESS, TIME,
                          TORQUE, TORSIONAL_DAMPING, TORSIONAL_RIGIDITY, TORSIONAL_STIFFNESS,
                          UNBALANCE, VELOCITY, Dim)
@@ -21,4 +23,5 @@ __all__ = [
     "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION", "DECAY_RATE",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "UNBALANCE",
     "COUPLING_MASS", "COUPLING_STIFFNESS", "TORSIONAL_DAMPING", "COUPLING_DAMPING", "TORQUE",
+    "IMPULSE", "ENERGY", "ANGULAR_MOMENTUM",
 ]

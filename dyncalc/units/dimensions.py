@@ -11,7 +11,7 @@ __all__ = [
     "SECOND_MOMENT", "TIME", "VELOCITY", "ACCELERATION", "FORCE", "MODULUS", "DAMPING", "ANGLE",
     "ANGULAR_RATE", "ANGULAR_ACCELERATION", "CYCLE_RATE", "DIMENSIONLESS", "DECAY_RATE",
     "UNBALANCE", "COUPLING_MASS", "COUPLING_STIFFNESS", "TORSIONAL_DAMPING", "COUPLING_DAMPING",
-    "TORQUE",
+    "TORQUE", "IMPULSE", "ENERGY", "ANGULAR_MOMENTUM",
     "LINEAR_DRAG", "RIGIDITY", "TORSIONAL_RIGIDITY", "angle_power", "angle_exponent",
 ]
 
@@ -68,6 +68,10 @@ TORSIONAL_DAMPING = Dim("torsional damping coefficient", "[force]*[length]*[time
 COUPLING_DAMPING = Dim("translation-rotation damping coupling", "[force]*[time]/[angle]",
                        "[force]*[time]", "N*s/rad", angles=(-1, 0))
 TORQUE = Dim("torque", "[force]*[length]", "[force]*[length]", "N*m")
+IMPULSE = Dim("impulse", "[force]*[time]", "[force]*[time]", "N*s")
+ENERGY = Dim("energy", "[force]*[length]", "[force]*[length]", "J")
+ANGULAR_MOMENTUM = Dim("angular momentum", "[mass]*[length]^2/[time]",
+                       "[mass]*[length]**2/[time]", "kg*m^2/s", angles=(0, 1))
 MODULUS = Dim("modulus", "[force]/[length]^2", "[force]/[length]**2", "Pa")
 DAMPING = Dim("damping coefficient", "[force]*[time]/[length]", "[force]*[time]/[length]",
               "N*s/m")

@@ -1,0 +1,17 @@
+"""``dyncalc rigid-body``: the click command generated from its record
+(:data:`dyncalc.commands.rigid_body.COMMAND`)."""
+from __future__ import annotations
+
+from ..commands.rigid_body import COMMAND
+from .options import build_command
+
+
+def _rows(settings, out):
+    from ..batch import RigidRows
+
+    return RigidRows(scene=settings["scene"], rtol=out.rtol, strict=out.strict)
+
+
+rigid_body = build_command(COMMAND, rows=_rows)
+
+COMMANDS = [rigid_body]
