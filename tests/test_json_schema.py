@@ -145,7 +145,7 @@ def test_explained_object_is_valid(case, explain):
 #: form has no number to check.
 NUMERIC_CASES = [case for case in CASES if not case.startswith("eom")] + ["eom-typed",
                                                                           "eom-scene"]
-PROPAGATING_CASES = [case for case in CASES if not case.startswith("eom")]
+PROPAGATING_CASES = [case for case in CASES if not CASES[case].startswith("eom")]
 
 
 @pytest.mark.parametrize("case", NUMERIC_CASES)

@@ -61,6 +61,7 @@ def _describe(scene, commands: dict[str, list[str]]) -> dict:
         "examples": list(scene.examples),
         "commands": _commands_of(scene.name, commands),
         "example": scene.example,
+        "no_frequency": scene.no_frequency,
         "constraints": [c.text for c in scene.constraints],
         "one_of": [list(group) for group in scene.one_of],
         "methods": ["auto", *scene.methods],
@@ -143,6 +144,8 @@ def scenes(name, command, as_json, debug):
                   f"examples: {', '.join(scene.examples) or 'none'}",
                   f"commands: {', '.join(_commands_of(scene.name, commands))}",
                   f"example: {scene.example}"]
+        if scene.no_frequency:
+            lines.append(f"natural-frequency and modes refuse it: {scene.no_frequency}")
         lines += _driven_lines(scene.name)
         click.echo("\n".join(lines))
         return 0
