@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..result.encode import shown
-from ..result.entries import Entry, Result, format_number
+from ..result.entries import Entry, Result, format_number, matrix_with_units
 from .streams import fit
 
 if TYPE_CHECKING:
@@ -46,8 +46,11 @@ def rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str, 
     rows = []
     for entry in result.results.values():
         value, unit = shown(entry, units)
-        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name,
-                                    _with_uncertainty(entry, value, unit, digits), unit))))
+        if entry.units is not None and entry.name not in units:
+            text = matrix_with_units(value, entry.units, lambda v: format_number(v, digits))
+        else:
+            text = _with_uncertainty(entry, value, unit, digits)
+        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name, text, unit))))
     return rows
 
 

@@ -413,7 +413,8 @@ def _matrix(results, extra, name, array, coords, cdims, per_mass, known, stiffne
                               description=description)
     else:
         results[name] = Entry(name, array, None, "", symbol="K" if stiffness else "M",
-                              description=description + " (SI, units per entry in extra)")
+                              description=description + " (a unit on each entry; JSON: "
+                              "extra.matrix_units)", units=units)
         extra.setdefault("matrix_units", {})[name] = units
 
 

@@ -279,7 +279,7 @@ def _explain(inputs: ModesInputs, out) -> Explanation:
             "unit modal mass phi^T M phi = 1 (largest component positive)"),
         "symmetry checked to 1e-9 of the largest entry; an eigenvalue within 1e-10 of the "
         "terms of phi^T K phi that sum to it is a rigid-body mode (omega = 0); solved with "
-        "M scaled to a unit diagonal (D M D, D = diag(M)^-1/2)",
+        "M scaled to a diagonal near 1 (D M D, D = diag(M)^-1/2 rounded to powers of 2)",
     ]
     reference = inputs.scene.reference if inputs.scene is not None else ""
     return Explanation(formula, substituted, assumptions, reference)

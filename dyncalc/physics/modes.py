@@ -102,9 +102,10 @@ def solve_modes(M, K, C=None, *, normalize: str = "max", names=("--M", "--K", "-
     Notes
     -----
     Symmetry is checked to :data:`SYMMETRY_RTOL` of the largest entry (then the matrices are
-    symmetrised). The problem is solved scaled: ``D M D`` with ``D = diag(M)^-1/2`` has a
-    unit diagonal, and ``D K D`` is divided by the even power of 2 that brings its largest
-    entry near 1 (a change of time unit), so that entries from 1e-300 to 1e300 lose no digits;
+    symmetrised). The problem is solved scaled, by powers of 2 (exactly): ``D M D`` with ``D``
+    about ``diag(M)^-1/2`` has a diagonal near 1, and ``D K D`` is divided by the even power of
+    2 that brings its largest entry near 1 (a change of time unit), each group of coordinates
+    no entry couples on its own, so that entries from 1e-300 to 1e300 lose no digits;
     only a result beyond float64 is refused. An eigenvalue within :data:`ZERO_RTOL` of the
     terms of ``psi^T K psi`` that sum to it is a rigid-body mode (snapped to 0, with a note). With C, the damping is proportional when ``Phi^T C Phi`` is
     diagonal (Caughey's condition ``C M^-1 K = K M^-1 C`` [2], checked on the modes, to
@@ -205,8 +206,8 @@ def _components(M, K, C):
 
 
 class _Part:
-    """One uncoupled group of coordinates (``index``), solved scaled: ``Ms = D M D`` (a unit
-    diagonal), ``Ks = D K D / 2^E`` (time in units of ``2^(-E/2)`` s, its largest entry
+    """One uncoupled group of coordinates (``index``), solved scaled: ``Ms = D M D`` (a
+    diagonal near 1), ``Ks = D K D / 2^E`` (time in units of ``2^(-E/2)`` s, its largest entry
     ~1), ``Vs`` the eigenvectors of ``Ks v = lam Ms v``; ``omega`` (SI), ``V = D Vs`` (the
     original coordinates, ``V^T M V = I``), ``rigid``, ``eigenvalues`` (``omega^2`` in SI,
     before snapping), ``number`` (each mode's place in the whole, set by the caller)."""
@@ -242,13 +243,16 @@ class _Part:
 
 
 def _diagonal_scale(M, name: str):
-    """``d_i = 1/sqrt(M_ii)``: the diagonal similarity scaling that gives ``D M D`` a unit
-    diagonal (``D = diag(d)``), so that masses of 1e-300 and 1e300 kg side by side lose no
-    digits; a diagonal entry that is not positive refuses M (not positive definite)."""
+    """``d_i``, the power of 2 nearest ``1/sqrt(M_ii)``: the diagonal scaling that gives
+    ``D M D`` a diagonal between 1/2 and 2 (``D = diag(d)``), so that masses of 1e-300 and
+    1e300 kg side by side lose no digits. Powers of 2 scale exactly: a system of ordinary
+    scale gives the same bits as unscaled. A diagonal entry that is not positive refuses M
+    (not positive definite)."""
     diagonal = np.diag(M).copy()
     if not bool(np.all(diagonal > 0.0)):
         _refuse_mass(M, name)
-    return 1.0 / np.sqrt(diagonal)
+    _, exponent = np.frexp(diagonal)
+    return np.ldexp(1.0, -(exponent // 2))
 
 
 def _scaled(A, d, shift):
