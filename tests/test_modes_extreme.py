@@ -1,6 +1,7 @@
 """modes at extreme but valid scales (issue 19): the eigenproblem is solved with M scaled to
-a diagonal near 1 (powers of 2) and each uncoupled group in its own time unit, so entries from 1e-300 to
-1e300 give the closed forms; only a result beyond float64 is refused, saying so."""
+a diagonal near 1 (powers of 2) and each uncoupled group in its own time unit, so entries
+from 1e-300 to 1e300 give the closed forms; only a result beyond float64 is refused, saying
+so."""
 import json
 import math
 

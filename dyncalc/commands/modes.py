@@ -17,6 +17,7 @@ from ..units import (ANGULAR_RATE, COUPLING_DAMPING, COUPLING_MASS, COUPLING_STI
                      CYCLE_RATE, DAMPING, DIMENSIONLESS, INERTIA, MASS, STIFFNESS,
                      TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
+from .words import gather_texts
 
 __all__ = ["COMMAND", "ModesInputs", "read", "compute", "modes", "matrix_dims"]
 
@@ -134,7 +135,6 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
 
 def _read_scene(options, words, name: str, normalize: str, strict: bool) -> ModesInputs:
     from ..lazy import numpy as np
-    from ..result.checks import split_assignment
     from ..scenes import get_scene
     from ..scenes.runner import check_constraints, read_inputs
 
@@ -146,13 +146,7 @@ def _read_scene(options, words, name: str, normalize: str, strict: bool) -> Mode
         if options.get(option) is not None:
             raise InputError(f"--{option} does not go with --scene {scene.name}: the scene "
                              "gives its own matrices")
-    texts: dict[str, str] = {}
-    labels: dict[str, str] = {}
-    for word in words:
-        key, text = split_assignment(word, "a parameter")
-        if key in texts:
-            raise InputError(f"{key}= given twice")
-        texts[key], labels[key] = text, f"{key}="
+    texts, labels = gather_texts({}, words, "a scene parameter")
     prepared = read_inputs(scene, texts, labels, strict)
     if prepared.missing:
         raise InputError(f"{scene.name} needs {', '.join(prepared.missing)}; the parameters "
