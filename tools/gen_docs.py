@@ -289,10 +289,21 @@ def _card_head(scene) -> list[str]:
     return [f"## {scene.name}", "",
             _sentence(_cell(scene.summary)), "",
             f"**Figure.** {_sentence(_cell(scene.figure))}", "",
-            f"* Equation of motion: {_code(scene.equation)}",
+            f"* Equation of motion: {_code(scene.equation)}", *_derived(scene),
             f"* Formula: {_code(scene.formula)}", "",
             "**Parameters** (`NAME=QUANTITY`):", "", *_parameters(scene), "",
             *_rules(scene), ""]
+
+
+def _derived(scene) -> list[str]:
+    """The equations ``eom`` derives from the scene's energies (dyncalc/scenes/derived.py)."""
+    from dyncalc.scenes.derived import DERIVED
+
+    equations = DERIVED.get(scene.name)
+    if not equations:
+        return []
+    return ["* Derived by `eom --scene " + scene.name + "` from the energies: "
+            + "; ".join(_code(text) for text in equations)]
 
 
 def _refused_scene(scene) -> list[str]:
