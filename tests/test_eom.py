@@ -311,3 +311,28 @@ def test_hostile_energies_are_read_or_refused_before_sympy(pieces, valued):
         _check_powers(inputs)
     except InputError as exc:
         assert str(exc).startswith(("--V", "--T", "m=", "k=")) and "\n" not in str(exc), str(exc)
+
+
+def test_below_the_critical_speed_the_ring_has_two_equilibria():
+    """Omega^2 < g/r: only the bottom (stable) and the top (unstable)."""
+    data = json_of("eom", "--scene", "bead-on-rotating-ring", "r=0.2m", "Omega=3rad/s")
+    assert [(e["theta"], e["stable"]) for e in data["extra"]["equilibria"]] == [
+        (0.0, True), (pytest.approx(math.pi, rel=1e-15), False)]
+
+
+def test_transcendental_equilibria_come_from_the_numeric_search():
+    """kt phi = m g l sin(phi) has no closed form; with m g l / kt = 2 its roots are 0
+    (unstable: kt < m g l) and +-phi* with phi* = 2 sin(phi*) (stable), found here by
+    brentq independently."""
+    from scipy.optimize import brentq
+
+    data = json_of("eom", "--coords", "phi", "--T", "J*phi'^2/2", "--V",
+                   "kt*phi^2/2 + m*g*l*cos(phi)", "J=1kg*m^2", "kt=1N*m/rad", "m=1kg",
+                   "g=2m/s^2", "l=1m")
+    star = brentq(lambda p: p - 2 * math.sin(p), 1.0, 3.0, xtol=1e-15)
+    assert [(e["phi"], e["stable"]) for e in data["extra"]["equilibria"]] == [
+        (0.0, False), (pytest.approx(star, rel=1e-12), True),
+        (pytest.approx(-star, rel=1e-12), True)]
+    # about the first stable one: omega^2 = (kt - m g l cos(phi*)) / J
+    assert data["results"]["omega_1"]["value"] == pytest.approx(
+        math.sqrt(1 - 2 * math.cos(star)), rel=1e-11)
