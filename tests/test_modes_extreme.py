@@ -111,3 +111,22 @@ def test_a_singular_mass_matrix_is_still_refused():
     assert result.stderr == ("Error: --M is not positive definite (its smallest eigenvalue is "
                              "0 in SI, its largest 2): every motion of the coordinates must "
                              "carry kinetic energy\n")
+
+
+def test_uncoupled_groups_are_scipys_connected_components():
+    """The groups solved apart are the connected components of the entries' pattern
+    (scipy.sparse.csgraph, an independent implementation), on random patterns."""
+    from scipy.sparse.csgraph import connected_components
+
+    from dyncalc.physics.modes import _components
+
+    rng = np.random.default_rng(19)
+    for _ in range(300):
+        n = int(rng.integers(1, 40))
+        A = rng.random((n, n)) < rng.random() * 0.15
+        A = A | A.T
+        np.fill_diagonal(A, True)
+        count, labels = connected_components(A, directed=False)
+        expected = sorted(tuple(np.flatnonzero(labels == k)) for k in range(count))
+        assert sorted(tuple(g) for g in _components(A * 1.0, np.zeros((n, n)), None)) \
+            == expected

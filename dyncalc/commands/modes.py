@@ -168,6 +168,7 @@ def compute(inputs: ModesInputs, digits: int = 6) -> Result:
     out = solve_modes(inputs.M, inputs.K, inputs.C, normalize=inputs.normalize)
     n = len(out.omega)
     results: dict[str, Entry] = {}
+    coordinates = _coords(inputs)
     for i in range(n):
         results[f"omega_{i + 1}"] = Entry(f"omega_{i + 1}", float(out.omega[i]), ANGULAR_RATE,
                                           "rad/s", f"ω{i + 1}", f"angular frequency of mode "
@@ -181,7 +182,7 @@ def compute(inputs: ModesInputs, digits: int = 6) -> Result:
         stiff_dim = STIFFNESS if ref == "length" else TORSIONAL_STIFFNESS
         results[f"mode_{i + 1}"] = Entry(f"mode_{i + 1}", out.shapes[:, i].copy(),
                                          DIMENSIONLESS, "", f"mode {i + 1}",
-                                         f"shape of mode {i + 1} ({_coords(inputs)})")
+                                         f"shape of mode {i + 1} ({coordinates})")
         results[f"modal_mass_{i + 1}"] = Entry(
             f"modal_mass_{i + 1}", float(out.modal_mass[i]), mass_dim, mass_dim.si,
             f"m{i + 1}", f"modal mass of mode {i + 1}")

@@ -194,15 +194,22 @@ def solve_modes(M, K, C=None, *, normalize: str = "max", names=("--M", "--K", "-
 def _components(M, K, C):
     """The groups of coordinates no entry of M, K or C couples to one another (index arrays,
     in order of their first coordinate): each is solved with its own time scale."""
-    from scipy.sparse.csgraph import connected_components
-
     linked = (M != 0.0) | (K != 0.0)
     if C is not None:
         linked |= C != 0.0
-    count, labels = connected_components(linked, directed=False)
-    if count == 1:
+    i, j = np.nonzero(linked)
+    labels = np.arange(M.shape[0])
+    while True:  # each coordinate takes the least label among its neighbours, to a fixed point
+        new = labels.copy()
+        np.minimum.at(new, i, labels[j])
+        new = new[new]  # and its label's label (pointer jumping: fewer rounds on a chain)
+        if np.array_equal(new, labels):
+            break
+        labels = new
+    roots = np.unique(labels)
+    if len(roots) == 1:
         return [np.arange(M.shape[0])]
-    return [np.flatnonzero(labels == label) for label in range(count)]
+    return [np.flatnonzero(labels == root) for root in roots]
 
 
 class _Part:
@@ -222,7 +229,8 @@ class _Part:
         self.half = E // 2
         self.C = C[sub] if C is not None else None
         self.d = d[index]
-        lam, self.Vs = linalg.eigh(self.Ks, self.Ms)
+        # LAPACK's divide and conquer (sygvd): at n = 500 twice as fast as scipy's default
+        lam, self.Vs = linalg.eigh(self.Ks, self.Ms, driver="gvd", check_finite=False)
         # the size of the terms that sum to each eigenvalue psi^T K psi: an eigenvalue that
         # is a rounding residue of them (a rigid-body mode) is within ZERO_RTOL of it
         terms = np.sum(np.abs(self.Vs) * (np.abs(self.Ks) @ np.abs(self.Vs)), axis=0)

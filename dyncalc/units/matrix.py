@@ -46,6 +46,9 @@ _WITH_UNIT = re.compile(r"\s*([+-]?(?:(?:0|[1-9]\d*)(?:\.\d*)?|\.\d+)(?:[eE][+-]
 _NUM = r"[ \t]*[+-]?(?:(?:0|[1-9]\d*)(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?[ \t]*"
 #: A file of plain numbers only: read at once (numpy), not entry by entry.
 _PLAIN_FILE = re.compile(rf"{_NUM}(?:,{_NUM})*(?:\n{_NUM}(?:,{_NUM})*)*")
+#: What :func:`_plain_file` checks instead of ``_PLAIN_FILE`` (the same files pass).
+_NUMBER_CHARACTERS = re.compile(r"[0-9eE+\-., \t\n]*")
+_LEADING_ZERO = re.compile(r"(?:^|[,\n])[ \t]*[+\-]?0\d")  # at a cell's start only
 
 
 class _Cell:
@@ -351,12 +354,20 @@ def _plain_file(lines: list[str], label: str, max_order: int):
     entry-by-entry reader then gives the exact message)."""
     from ..lazy import numpy as np
 
-    if not lines or len(lines) > max_order or not _PLAIN_FILE.fullmatch("\n".join(lines)):
+    if not lines or len(lines) > max_order:
+        return None
+    body = "\n".join(lines)
+    # _PLAIN_FILE's language, checked faster (a 500 x 500 file: 0.2 s less): the characters
+    # of numbers only, no leading zero (007), and every cell a float (else ValueError)
+    if not _NUMBER_CHARACTERS.fullmatch(body) or _LEADING_ZERO.search(body):
         return None
     rows = [line.split(",") for line in lines]
     if any(len(row) != len(rows) for row in rows):
         return None
-    values = np.array(rows, dtype=float)
+    try:
+        values = np.array(rows, dtype=float)
+    except ValueError:
+        return None
     return values if bool(np.all(np.isfinite(values))) else None
 
 
