@@ -444,7 +444,7 @@ def test_modes_takes_quantity_arrays_of_the_callers_registry():
     got = [r[f"omega_{i}"].to("rad/s").magnitude for i in (1, 2)]
     assert got == pytest.approx(expected.tolist(), rel=1e-12)
     assert r["omega_1"]._REGISTRY is UREG
-    same = dyncalc.modes(M=f"2, 0; 0, 1 lb", K="3, -1; -1, 1 lbf/in")
+    same = dyncalc.modes(M="2, 0; 0, 1 lb", K="3, -1; -1, 1 lbf/in")
     assert got == [same[f"omega_{i}"].to("rad/s").magnitude for i in (1, 2)]
 
 
