@@ -11,10 +11,12 @@ import os
 import tempfile
 import time
 
-import numpy as np
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # as the CLI runs (dyncalc.cli.main)
 
-from dyncalc.commands.modes import modes
-from dyncalc.physics.modes import solve_modes
+import numpy as np  # noqa: E402 (after the thread setting, which numpy reads on import)
+
+from dyncalc.commands.modes import modes  # noqa: E402
+from dyncalc.physics.modes import solve_modes  # noqa: E402
 
 
 def chain(n: int):

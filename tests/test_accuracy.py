@@ -1105,9 +1105,9 @@ def scene_bound(name: str, result: str, ref: dict, errors: dict):
 
 
 def test_catalog_is_covered():
-    from dyncalc.scenes import catalog
+    from dyncalc.scenes import computed_scenes
 
-    assert set(SCENES) == set(catalog())
+    assert set(SCENES) == set(computed_scenes())
 
 
 @pytest.mark.parametrize("name", list(SCENES))

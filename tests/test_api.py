@@ -418,3 +418,87 @@ def test_docs_api_page_runs():
 def test_results_round_trip_to_json():
     r = dyncalc.coriolis(omega=[0, 0, 2], vr=[1, 0, 0])
     assert json.loads(json.dumps(r.to_dict())) == r.to_dict()
+
+
+# --- modes: matrices as arrays, Quantity arrays and nested lists of Quantities ----------------
+
+def _modes_closed_form(M, K):
+    """omega_i by scipy's own generalized eigenproblem of the SI matrices (an independent
+    solver of the same problem: numpy's eigvals of M^-1 K)."""
+    return np.sqrt(np.sort(np.linalg.eigvals(np.linalg.solve(M, K)).real))
+
+
+def test_modes_takes_a_bare_numpy_array_in_si():
+    r = dyncalc.modes(M=np.eye(2), K=np.array([[200.0, -100.0], [-100.0, 200.0]]))
+    # two equal masses, three equal springs: omega = sqrt(k/m), sqrt(3 k/m)
+    assert r["omega_1"].to("rad/s").magnitude == pytest.approx(10.0, rel=1e-14)
+    assert r["omega_2"].to("rad/s").magnitude == pytest.approx(math.sqrt(300.0), rel=1e-14)
+    assert r.to_dict()["inputs"]["K"]["text"] == "200.0, -100.0; -100.0, 200.0"
+
+
+def test_modes_takes_quantity_arrays_of_the_callers_registry():
+    M = np.diag([2.0, 1.0]) * UREG.lb
+    K = np.array([[3.0, -1.0], [-1.0, 1.0]]) * UREG("lbf/in")
+    r = dyncalc.modes(M=M, K=K)
+    expected = _modes_closed_form(M.to("kg").magnitude, K.to("N/m").magnitude)
+    got = [r[f"omega_{i}"].to("rad/s").magnitude for i in (1, 2)]
+    assert got == pytest.approx(expected.tolist(), rel=1e-12)
+    assert r["omega_1"]._REGISTRY is UREG
+    same = dyncalc.modes(M="2, 0; 0, 1 lb", K="3, -1; -1, 1 lbf/in")
+    assert got == [same[f"omega_{i}"].to("rad/s").magnitude for i in (1, 2)]
+
+
+def test_modes_takes_nested_lists_of_quantities_with_mixed_units():
+    """A translation and a rotation: M's mixed entry in kg*m, K's in N/rad."""
+    M = [[2 * UREG.kg, 0.1 * UREG("kg*m")], [0.1 * UREG("kg*m"), 0.05 * UREG("kg*m^2")]]
+    K = [[300 * UREG("N/m"), 0 * UREG("N/rad")], [0 * UREG("N/rad"), 40 * UREG("N*m/rad")]]
+    r = dyncalc.modes(M=M, K=K)
+    expected = _modes_closed_form(np.array([[2.0, 0.1], [0.1, 0.05]]),
+                                  np.array([[300.0, 0.0], [0.0, 40.0]]))
+    got = [r[f"omega_{i}"].to("rad/s").magnitude for i in (1, 2)]
+    assert got == pytest.approx(expected.tolist(), rel=1e-12)
+    cli = json_of("modes", "--M", "[[2 kg, 0.1 kg*m], [0.1 kg*m, 0.05 kg*m^2]]",
+                  "--K", "[[300 N/m, 0 N/rad], [0 N/rad, 40 N*m/rad]]")
+    assert got == [cli["results"][f"omega_{i}"]["value"] for i in (1, 2)]
+
+
+def test_modes_array_refusals_are_the_clis():
+    with pytest.raises(dyncalc.InputError) as info:
+        dyncalc.modes(M=np.eye(2) * UREG.kg, K=np.eye(2) * UREG.s)
+    assert str(info.value) == ("--K row 1, column 1 must be a stiffness [force]/[length]; "
+                               "got 1 second ([time])")
+    assert error_line(invoke("modes", "--M", "1, 0; 0, 1 kg", "--K", "1, 0; 0, 1 s")) == \
+        f"Error: {info.value}"
+    with pytest.raises(dyncalc.InputError) as info:
+        dyncalc.modes(M=np.eye(2), K=np.ones((2, 3)))
+    assert str(info.value) == "--K must be square: it has shape (2, 3)"
+    with pytest.raises(dyncalc.InputError) as info:
+        dyncalc.modes(M=np.array([[1.0, 0.0], [0.0, np.nan]]), K=np.eye(2))
+    assert str(info.value) == "--M row 2, column 2 must be finite; got nan"
+    with pytest.raises(TypeError, match=r"^K: a matrix is a 2-D array; got shape \(3,\)$"):
+        dyncalc.modes(M=np.eye(3) * UREG.kg, K=np.ones(3) * UREG("N/m"))
+
+
+def test_modes_takes_a_500_degree_chain_as_an_array():
+    """Past the 20,000 characters a typed matrix may have: the uniform fixed-fixed chain,
+    omega_j = 2 sqrt(k/m) sin(j pi / (2 (n + 1)))."""
+    n, m, k = 500, 2.0, 300.0
+    K = k * (2 * np.eye(n) - np.eye(n, k=1) - np.eye(n, k=-1))
+    r = dyncalc.modes(M=m * np.eye(n) * UREG.kg, K=K * UREG("N/m"))
+    for j in (1, 250, 500):
+        expected = 2 * math.sqrt(k / m) * math.sin(j * math.pi / (2 * (n + 1)))
+        assert r[f"omega_{j}"].to("rad/s").magnitude == pytest.approx(expected, rel=1e-10)
+    assert r.to_dict()["inputs"]["M"]["text"] == "[500x500 array] kg"
+
+
+def test_api_md_matrices_section_runs(tmp_path):
+    """docs/api.md's matrix examples (the page's full doctest needs dask and xarray)."""
+    import doctest
+
+    text = (ROOT / "docs" / "api.md").read_text(encoding="utf-8")
+    section = text[text.index("## Matrices"):text.index("## Errors")]
+    page = tmp_path / "matrices.md"
+    page.write_text("```python\n>>> import numpy as np, pint, dyncalc\n"
+                    ">>> ureg = pint.UnitRegistry()\n\n```\n" + section, encoding="utf-8")
+    failures, tried = doctest.testfile(str(page), module_relative=False)
+    assert failures == 0 and tried >= 8

@@ -21,9 +21,9 @@ from dyncalc.batch.fast_commands import _command_fast
 from dyncalc.commands.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.physics.columns import Columns, kernel_of
-from dyncalc.scenes import catalog, get_scene
+from dyncalc.scenes import computed_scenes, get_scene
 
-SCENES = list(catalog())
+SCENES = list(computed_scenes())
 
 
 def _cell(rng: random.Random, param, ordinary: bool, others: bool = True) -> str:

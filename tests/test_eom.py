@@ -133,6 +133,43 @@ def test_mixed_coordinates_give_units_per_entry():
     assert data["extra"]["matrix_units"] == {
         "mass_matrix": [["kg", "kg*m"], ["kg*m", "kg*m^2"]],
         "stiffness_matrix": [["N/m", "N/rad"], ["N/rad", "N*m/rad"]]}
+    assert data["results"]["mass_matrix"]["unit"] == ""
+
+
+MIXED = ("eom", "--scene", "block-disk-springs", "M=3kg", "m=1kg", "r=10cm", "k=100N/m")
+
+
+def test_mixed_matrices_show_each_entrys_unit_in_the_table():
+    out = invoke(*MIXED)
+    assert out.exit_code == 0
+    rows = {line.split()[0]: line for line in out.stdout.splitlines()[1:]}
+    assert rows["mass_matrix"].split(None, 2)[2].rstrip() == \
+        "[[4 kg, -0.1 kg*m], [-0.1 kg*m, 0.015 kg*m^2]]"
+    assert rows["stiffness_matrix"].split(None, 2)[2].rstrip() == \
+        "[[100 N/m, 0 N/rad], [0 N/rad, 1 N*m/rad]]"
+
+
+def test_mixed_matrices_value_reads_back_into_modes():
+    """--value writes each entry with its unit; modes --M/--K read it back and give the
+    frequencies of the scene's closed form (SCENES.md E4.14)."""
+    M = invoke(*MIXED, "--value", "mass_matrix")
+    K = invoke(*MIXED, "--value", "stiffness_matrix")
+    assert M.stdout == "[[4.0 kg, -0.1 kg*m], [-0.1 kg*m, 0.015000000000000003 kg*m^2]]\n"
+    assert K.stdout == "[[100.0 N/m, 0.0 N/rad], [0.0 N/rad, 1.0000000000000002 N*m/rad]]\n"
+    again = json_of("modes", "--M", M.stdout.strip(), "--K", K.stdout.strip())
+    big, m, k = 3.0, 1.0, 100.0
+    root = math.sqrt(4 * big ** 2 - 4 * big * m + 17 * m ** 2)
+    expected = [math.sqrt(k * ((2 * big + 5 * m) + sign * root) / (2 * m * (3 * big + m)))
+                for sign in (-1, 1)]
+    assert [again["results"][f"omega_{i}"]["value"] for i in (1, 2)] == pytest.approx(
+        expected, rel=1e-14)
+    assert [c["kind"] for c in again["extra"]["coordinates"]] == ["translation", "rotation"]
+
+
+def test_uniform_matrix_value_stays_plain():
+    out = invoke("eom", "--scene", "coupled-blocks", "m1=1kg", "m2=2kg", "k1=100N/m",
+                 "k2=200N/m", "k3=50N/m", "--value", "mass_matrix")
+    assert out.stdout == "1.0,0.0;0.0,2.0\n"
 
 
 def test_explain_latex_typesets_the_equations():
@@ -274,3 +311,28 @@ def test_hostile_energies_are_read_or_refused_before_sympy(pieces, valued):
         _check_powers(inputs)
     except InputError as exc:
         assert str(exc).startswith(("--V", "--T", "m=", "k=")) and "\n" not in str(exc), str(exc)
+
+
+def test_below_the_critical_speed_the_ring_has_two_equilibria():
+    """Omega^2 < g/r: only the bottom (stable) and the top (unstable)."""
+    data = json_of("eom", "--scene", "bead-on-rotating-ring", "r=0.2m", "Omega=3rad/s")
+    assert [(e["theta"], e["stable"]) for e in data["extra"]["equilibria"]] == [
+        (0.0, True), (pytest.approx(math.pi, rel=1e-15), False)]
+
+
+def test_transcendental_equilibria_come_from_the_numeric_search():
+    """kt phi = m g l sin(phi) has no closed form; with m g l / kt = 2 its roots are 0
+    (unstable: kt < m g l) and +-phi* with phi* = 2 sin(phi*) (stable), found here by
+    brentq independently."""
+    from scipy.optimize import brentq
+
+    data = json_of("eom", "--coords", "phi", "--T", "J*phi'^2/2", "--V",
+                   "kt*phi^2/2 + m*g*l*cos(phi)", "J=1kg*m^2", "kt=1N*m/rad", "m=1kg",
+                   "g=2m/s^2", "l=1m")
+    star = brentq(lambda p: p - 2 * math.sin(p), 1.0, 3.0, xtol=1e-15)
+    assert [(e["phi"], e["stable"]) for e in data["extra"]["equilibria"]] == [
+        (0.0, False), (pytest.approx(star, rel=1e-12), True),
+        (pytest.approx(-star, rel=1e-12), True)]
+    # about the first stable one: omega^2 = (kt - m g l cos(phi*)) / J
+    assert data["results"]["omega_1"]["value"] == pytest.approx(
+        math.sqrt(1 - 2 * math.cos(star)), rel=1e-11)

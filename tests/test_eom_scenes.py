@@ -263,3 +263,43 @@ def test_accelerations_of_scenes_without_a_frequency(scene, state, expected):
     result = eom({}, words, scene=scene)
     name = energies(scene).coords[0] + "_ddot"
     assert result.results[name].si == pytest.approx(expected, rel=1e-13)
+
+
+# --- the scene cards print the derived equations (dyncalc/scenes/derived.py) ---------------
+
+@pytest.mark.parametrize("scene", sorted(EQUATIONS))
+def test_card_data_is_what_eom_derives_now(scene):
+    """The generated card data (tools/gen_equations.py) equals eom's derivation today, and
+    the card prints it: the equations on a card are derived and tested, not typed."""
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+    from dyncalc.scenes.derived import DERIVED
+
+    result = _run(scene, False)
+    derived = tuple(result.results[f"eom_{i}"].si
+                    for i in range(1, len(energies(scene).coords) + 1))
+    assert DERIVED[scene] == derived, "stale: run python tools/gen_equations.py"
+    card = CliRunner().invoke(cli, ["scenes", scene])
+    if card.exit_code == 0:  # a catalog scene
+        assert f"derived by eom: {'; '.join(derived)}" in card.stdout.splitlines()
+
+
+def test_every_scene_with_energies_has_card_data():
+    from dyncalc.scenes.derived import DERIVED
+
+    assert list(DERIVED) == energy_scene_names()
+
+
+def test_cards_load_no_sympy():
+    """The card reads the generated data; sympy stays out of dyncalc scenes."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom dyncalc.cli import main\n"
+            "try:\n    main(['scenes', 'pendulum-on-sliding-block'])\nexcept SystemExit:\n"
+            "    pass\nprint('sympy' in sys.modules, file=sys.stderr)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=60)
+    assert out.stderr.strip().splitlines()[-1] == "False"
+    assert "derived by eom: x'' = " in out.stdout

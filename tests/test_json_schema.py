@@ -151,7 +151,7 @@ def test_explained_object_is_valid(case, explain):
 NUMERIC_CASES = [case for case in CASES if not case.startswith("eom")] + ["eom-typed",
                                                                           "eom-scene"]
 PROPAGATING_CASES = [case for case in CASES
-                     if not case.startswith("eom") and case != "rigid-body-euler"]
+                     if not CASES[case].startswith("eom") and case != "rigid-body-euler"]
 
 
 @pytest.mark.parametrize("case", NUMERIC_CASES)

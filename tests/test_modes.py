@@ -67,7 +67,7 @@ def test_two_rotor_shaft_rigid_and_elastic_mode():
     assert r["mode_2"]["value"] == pytest.approx([-J2 / J1, 1.0], rel=1e-13)
     assert r["modal_mass_1"] == {"value": pytest.approx(J1 + J2), "unit": "kg*m^2"}
     assert got["warnings"] == ["omega_1 = 0: a rigid-body mode (an eigenvalue omega^2 within "
-                               "1e-10 of the largest is taken as zero)"]
+                               "1e-10 of the terms of K that sum to it is taken as zero)"]
 
 
 def test_unit_invariance():
@@ -319,3 +319,27 @@ def test_batch_one_system_per_row(tmp_path):
 def test_library_refuses_strict_bare_entries():
     with pytest.raises(InputError, match=r"--K row 1, column 1: '2' has no unit"):
         modes({"M": "1, 0; 0, 1 kg", "K": "2, 0; 0, 2"}, strict=True)
+
+
+def test_large_systems_shorten_the_human_table(tmp_path):
+    """n = 20: a mode shape shows its ends and its size, a matrix file its name; --json and
+    --value keep every component (the chain's first mode is sin(j pi / 21), largest 1)."""
+    n = 20
+    M, K = chain(n)
+    paths = []
+    for name, matrix in (("M", M), ("K", K)):
+        path = tmp_path / f"{name}.csv"
+        path.write_text("\n".join(",".join(repr(float(v)) for v in row) for row in matrix))
+        paths.append(str(path))
+    out = run("--M", f"@{paths[0]}", "--K", f"@{paths[1]}")
+    assert out.exit_code == 0
+    shape = np.sin(np.arange(1, n + 1) * np.pi / (n + 1))
+    shape /= shape.max()
+    row = next(line for line in out.stdout.splitlines() if line.startswith("mode_1 "))
+    ends = [f"{v:.6g}" for v in (*shape[:3], *shape[-3:])]
+    assert row.split(None, 3)[3].rstrip() == (
+        f"({', '.join(ends[:3])}, ..., {', '.join(ends[3:])}) [20 components; --json for all]")
+    assert out.stdout.splitlines()[-1] == f"inputs: M = @{paths[0]}, K = @{paths[1]}"
+    value = run("--M", f"@{paths[0]}", "--K", f"@{paths[1]}", "--value", "mode_1")
+    assert [float(v) for v in value.stdout.split(",")] == pytest.approx(shape.tolist(),
+                                                                       rel=1e-10)

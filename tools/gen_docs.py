@@ -262,10 +262,14 @@ def _results(result, added) -> list[str]:
 
 
 def _example_values(result) -> str:
+    return _example_values_of(result.results)
+
+
+def _example_values_of(results) -> str:
     from dyncalc.result.entries import format_number
 
     shown = []
-    for name, entry in result.results.items():
+    for name, entry in results.items():
         unit = entry.canonical_unit
         value = format_number(entry.value_in(unit), DIGITS)
         shown.append(_code(f"{name} = {value} {unit}".rstrip()))
@@ -292,16 +296,46 @@ def _card_head(scene) -> list[str]:
     return [f"## {scene.name}", "",
             _sentence(_cell(scene.summary)), "",
             f"**Figure.** {_sentence(_cell(scene.figure))}", "",
-            f"* Equation of motion: {_code(scene.equation)}",
+            f"* Equation of motion: {_code(scene.equation)}", *_derived(scene),
             f"* Formula: {_code(scene.formula)}", "",
             "**Parameters** (`NAME=QUANTITY`):", "", *_parameters(scene), "",
             *_rules(scene), ""]
 
 
-def _refused_scene(scene, error) -> list[str]:
-    """A scene whose example is refused on purpose (no equilibrium): its card and the refusal."""
-    return [*_card_head(scene), "**Example** (refused, exit status 2):", "",
-            "```sh", scene.example, "```", "", f"says: {_code('Error: ' + str(error))}"]
+def _derived(scene) -> list[str]:
+    """The equations ``eom`` derives from the scene's energies (dyncalc/scenes/derived.py)."""
+    from dyncalc.scenes.derived import DERIVED
+
+    equations = DERIVED.get(scene.name)
+    if not equations:
+        return []
+    return ["* Derived by `eom --scene " + scene.name + "` from the energies: "
+            + "; ".join(_code(text) for text in equations)]
+
+
+def _refused_scene(scene) -> list[str]:
+    """A scene that ``natural-frequency`` and ``modes`` refuse on purpose
+    (``scene.no_frequency``: no equilibrium): its card, the refusal, and its runnable ``eom``
+    example with the accelerations it gives."""
+    import shlex
+
+    from dyncalc.commands.eom import eom
+
+    words = shlex.split(scene.example)
+    if words[:4] != ["dyncalc", "eom", "--scene", scene.name]:
+        raise ValueError(f"{scene.name} is refused by natural-frequency; its example must be "
+                         f"dyncalc eom --scene {scene.name} ...: {scene.example}")
+    result = eom({}, words[4:], scene=scene.name)
+    shown = {name: entry for name, entry in result.results.items() if name.endswith("_ddot")}
+    reference = ", ".join(_code(f"{name} = {text}")
+                          for name, text in scene.example_result.items())
+    return [*_card_head(scene),
+            f"**Refused on purpose.** `natural-frequency` and `modes` refuse it (exit status 2): "
+            f"{_code('Error: ' + scene.no_frequency)}", "",
+            f"**Example** (`eom`, reference: {_cell(scene.reference)}):", "",
+            "```sh", scene.example, "```", "",
+            f"gives the equations of motion and, at that state, "
+            f"{_example_values_of(shown)}.", "", f"Reference values: {reference}."]
 
 
 def _driven(scene) -> list[str]:
@@ -318,12 +352,9 @@ def _driven(scene) -> list[str]:
 
 
 def _scene(scene) -> list[str]:
-    from dyncalc.errors import PhysicsError
-
-    try:
-        result, added = run_example(scene)
-    except PhysicsError as error:
-        return _refused_scene(scene, error)
+    if scene.no_frequency:
+        return _refused_scene(scene)
+    result, added = run_example(scene)
     return [*_card_head(scene),
             "**Results** (those of the example command, and those a `zeta` adds; other "
             "inputs may give others):", "", *_results(result, added), "",

@@ -15,12 +15,15 @@ __all__ = ["Slot", "caller_registry", "choice_error", "request_of", "array_resul
 
 class Slot:
     """Where an argument goes: ``kind`` (``option``, ``word``, ``element``), its ``name``,
-    and whether it is a vector (``VEC``) or a list of numbers in one text."""
+    and whether it is a vector (``VEC``), a list of numbers in one text, or a matrix
+    (``MATRIX``: a numpy array, nested lists, a Quantity array, one value)."""
 
-    __slots__ = ("kind", "name", "vector", "listed")
+    __slots__ = ("kind", "name", "vector", "listed", "matrix")
 
-    def __init__(self, kind: str, name: str, vector: bool = False, listed: bool = False):
+    def __init__(self, kind: str, name: str, vector: bool = False, listed: bool = False,
+                 matrix: bool = False):
         self.kind, self.name, self.vector, self.listed = kind, name, vector, listed
+        self.matrix = matrix
 
 
 def caller_registry(values: list[object]) -> Any:
@@ -64,7 +67,7 @@ def request_of(record, settings, slots: list[Slot], values: list[object], rtol, 
     options, words, elements = {}, {}, []
     for slot, value in zip(slots, values):
         label = slot.name if slot.kind != "element" else f"element {slot.name[1:]}"
-        g = given(value, label, vector=slot.vector, listed=slot.listed)
+        g = given(value, label, vector=slot.vector, listed=slot.listed, matrix=slot.matrix)
         if slot.kind == "option":
             options[slot.name] = g
         elif slot.kind == "word":

@@ -37,7 +37,8 @@ def _sort(record, elements: tuple, parameters: dict[str, object]):
             continue  # as an option left out
         if p is not None:
             slots.append(Slot("option", name, vector=p.metavar == "VEC",
-                              listed=p.kind == "text" and "," in p.metavar))
+                              listed=p.kind == "text" and "," in p.metavar,
+                              matrix=p.metavar == "MATRIX"))
         elif record.words is not None:
             slots.append(Slot("word", name))
         else:

@@ -13,7 +13,11 @@ text.
 * a number: its shortest round-trip text (``repr`` of the float), read in SI;
 * a numpy array (or a list) of those: one cell per element; a vector parameter (``VEC``)
   takes its last axis of length 3 as the vector; a list parameter (``"x0,x1,..."``) joins a
-  sequence into one cell.
+  sequence into one cell;
+* a matrix parameter (``MATRIX``) takes the whole array as one value
+  (:class:`~dyncalc.units.matrix.MatrixValue`): a numpy array or nested lists of numbers (in
+  SI), a Quantity array (its unit), or nested lists of Quantities (each in its own unit,
+  written out as the command line's ``[[2 kg, 0.1 kg*m], ...]``).
 """
 from __future__ import annotations
 
@@ -23,7 +27,7 @@ from typing import Any
 
 from ..lazy import numpy as np
 
-__all__ = ["Given", "is_quantity", "dask_array_type", "xarray_type", "given"]
+__all__ = ["Given", "is_quantity", "dask_array_type", "xarray_type", "given", "matrix_value"]
 
 
 class Given:
@@ -101,11 +105,54 @@ def _cells(magnitude: Any, name: str, vector: bool, listed: bool) -> Any:
     return cells.reshape(array.shape)
 
 
-def given(value: object, name: str, *, vector: bool = False, listed: bool = False) -> Given:
+def _entry_text(value: Any, name: str) -> str:
+    """One entry of a nested list given for a matrix: a Quantity as ``2.0 kg``."""
+    if is_quantity(value):
+        return f"{_cell(value.magnitude, name)} {unit_text(value.units)}"
+    return _cell(value, name)
+
+
+def matrix_value(value: object, name: str) -> str:
+    """A matrix argument as the one text (or :class:`~dyncalc.units.matrix.MatrixValue`)
+    the command reads."""
+    from ..units.matrix import MatrixValue
+
+    if isinstance(value, str):
+        return value
+    if is_quantity(value):
+        magnitude = value.magnitude  # type: ignore[attr-defined]
+        array = np.asarray(magnitude, dtype=float)
+        if array.ndim != 2:
+            raise TypeError(f"{name}: a matrix is a 2-D array; got shape {array.shape}")
+        return MatrixValue.of_numbers(array, unit_text(value.units))  # type: ignore
+    rows = value.tolist() if hasattr(value, "tolist") else value
+    if not isinstance(rows, (list, tuple)) or not all(isinstance(r, (list, tuple))
+                                                      for r in rows):
+        raise TypeError(f"{name}: a matrix is a 2-D array, nested lists, a Quantity array "
+                        f"or a str; got {type(value).__name__}")
+    entries = [v for row in rows for v in row]
+    if any(is_quantity(v) or isinstance(v, str) for v in entries):
+        text = "[" + ", ".join("[" + ", ".join(_entry_text(v, name) for v in row) + "]"
+                               for row in rows) + "]"
+        return MatrixValue(text)
+    for v in entries:
+        _cell(v, name)  # a bool or an object that is no number is refused
+    if len({len(row) for row in rows}) > 1:
+        raise TypeError(f"{name}: the rows of a matrix need the same length")
+    return MatrixValue.of_numbers(np.asarray(rows, dtype=float).reshape(len(rows), -1), "")
+
+
+def given(value: object, name: str, *, vector: bool = False, listed: bool = False,
+          matrix: bool = False) -> Given:
     """``value`` (a Quantity, a str, a number, an array of them) as a :class:`Given`.
 
     ``vector``: the parameter takes a 3-vector (its last axis); ``listed``: it takes a list
-    of numbers in one text (``x0,x1,...``), so a 1-D sequence is one value."""
+    of numbers in one text (``x0,x1,...``), so a 1-D sequence is one value; ``matrix``: the
+    whole value is one matrix (:func:`matrix_value`)."""
+    if matrix:
+        cell = np.empty((), dtype=object)
+        cell[()] = matrix_value(value, name)
+        return Given(cell, "")
     if is_quantity(value):
         magnitude = value.magnitude  # type: ignore[attr-defined]
         unit = unit_text(value.units)  # type: ignore[attr-defined]

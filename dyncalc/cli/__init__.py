@@ -227,7 +227,16 @@ def main(argv=None):
     yet collecting them costs about 5 % of a one-off (13 ms of 260; issue 8). Reference
     counting still frees everything else; batch mode, which runs long, turns the collector
     back on (:func:`dyncalc.batch.run_batch`).
+
+    BLAS runs on one thread unless the environment says otherwise (``OPENBLAS_NUM_THREADS``,
+    read when numpy loads): a one-off's matrices are small, and OpenBLAS's threads spin when
+    the cores are busy. ``modes`` on a 500-mass chain took 8 s instead of 0.07 s for its
+    eigensolve on a loaded two-core machine (docs/performance.md).
     """
+    if "numpy" not in sys.modules:
+        import os
+
+        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     enabled = gc.isenabled()
     gc.disable()
     try:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..result.encode import shown
-from ..result.entries import Entry, Result, format_number
+from ..result.entries import Entry, Result, format_number, matrix_with_units
 from .streams import fit
 
 if TYPE_CHECKING:
@@ -30,8 +30,30 @@ def header_parts(result: Result) -> list[str]:
     return parts
 
 
+#: A vector with more components than this is shown by its ends in the human table (a
+#: 500-mass chain's mode shapes would print 250,000 numbers); --json and --value give all.
+LONG_VECTOR = 12
+#: A matrix input of a larger order is shown as typed (``@stiffness.csv``) or by its size.
+LONG_MATRIX = 8
+
+
+def _long(value) -> str | None:
+    """The human table's short form of a long vector or large matrix, else None."""
+    ndim = getattr(value, "ndim", 0)
+    if ndim == 1 and len(value) > LONG_VECTOR:
+        head = ", ".join(format_number(float(v), 6) for v in value[:3])
+        tail = ", ".join(format_number(float(v), 6) for v in value[-3:])
+        return f"({head}, ..., {tail}) [{len(value)} components; --json for all]"
+    if ndim == 2 and len(value) > LONG_MATRIX:
+        return f"[{value.shape[0]}x{value.shape[1]} matrix]"
+    return None
+
+
 def _with_uncertainty(entry: Entry, value, unit: str, digits: int) -> str:
     """``7.07107 ± 0.18``: the value to ``digits`` figures, its uncertainty to two."""
+    short = _long(value)
+    if short is not None:
+        return short
     text = format_number(value, digits)
     sigma = entry.uncertainty_in(unit) if entry.uncertainty is not None else None
     if sigma is None or isinstance(value, str):
@@ -46,8 +68,11 @@ def rows(result: Result, units: dict[str, str], digits: int) -> list[tuple[str, 
     rows = []
     for entry in result.results.values():
         value, unit = shown(entry, units)
-        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name,
-                                    _with_uncertainty(entry, value, unit, digits), unit))))
+        if entry.units is not None and entry.name not in units:
+            text = matrix_with_units(value, entry.units, lambda v: format_number(v, digits))
+        else:
+            text = _with_uncertainty(entry, value, unit, digits)
+        rows.append(tuple(map(fit, (entry.name, entry.symbol or entry.name, text, unit))))
     return rows
 
 
@@ -68,6 +93,8 @@ def _input_phrase(entry: Entry, digits: int) -> str:
     N/m``, ``k = 200 N/m (assumed SI)``; the value in the unit typed and, where that is not
     the canonical unit, in it too."""
     value, unit = shown(entry, {})
+    if getattr(value, "ndim", 0) == 2 and len(value) > LONG_MATRIX and entry.text:
+        return f"{entry.name} = {entry.text.strip()}"  # a large matrix: as typed (@FILE)
     number = _with_uncertainty(entry, value, unit, digits)
     if entry.reading:  # typed as an expression: the reading, then its value
         number, unit = entry.reading, ""

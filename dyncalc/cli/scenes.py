@@ -50,17 +50,27 @@ def _filter(command: str, commands: dict[str, list[str]]) -> list[str]:
     raise InputError(f"there is no command {command[:80]!r}{hint}; {with_scenes}")
 
 
+def _derived(name: str) -> list[str]:
+    """The equations ``eom --scene NAME`` derives from the scene's energies (generated data:
+    no sympy here), or none."""
+    from ..scenes.derived import DERIVED
+
+    return list(DERIVED.get(name, ()))
+
+
 def _describe(scene, commands: dict[str, list[str]]) -> dict:
     return {
         "name": scene.name,
         "summary": scene.summary,
         "figure": scene.figure,
         "equation": scene.equation,
+        "derived": _derived(scene.name),
         "formula": scene.formula,
         "reference": scene.reference,
         "examples": list(scene.examples),
         "commands": _commands_of(scene.name, commands),
         "example": scene.example,
+        "no_frequency": scene.no_frequency,
         "constraints": [c.text for c in scene.constraints],
         "one_of": [list(group) for group in scene.one_of],
         "methods": ["auto", *scene.methods],
@@ -125,8 +135,11 @@ def scenes(name, command, as_json, debug):
             click.echo(json.dumps(_describe(scene, commands), indent=2))
             return 0
         lines = [f"{scene.name}: {scene.summary}", f"figure: {scene.figure}",
-                 f"equation of motion: {scene.equation}", f"result: {scene.formula}",
-                 "parameters:"]
+                 f"equation of motion: {scene.equation}"]
+        derived = _derived(scene.name)
+        if derived:
+            lines.append(f"derived by eom: {'; '.join(derived)}")
+        lines += [f"result: {scene.formula}", "parameters:"]
         width = max(len(p.name) for p in scene.params)
         for p in scene.params:
             kind = p.dim.display if p.dim is not None else "one of " + ", ".join(p.choices)
@@ -143,6 +156,8 @@ def scenes(name, command, as_json, debug):
                   f"examples: {', '.join(scene.examples) or 'none'}",
                   f"commands: {', '.join(_commands_of(scene.name, commands))}",
                   f"example: {scene.example}"]
+        if scene.no_frequency:
+            lines.append(f"natural-frequency and modes refuse it: {scene.no_frequency}")
         lines += _driven_lines(scene.name)
         click.echo("\n".join(lines))
         return 0

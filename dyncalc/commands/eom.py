@@ -15,6 +15,7 @@ from ..result import Result
 from ..units import ANGULAR_RATE, CYCLE_RATE
 from ..units.expression import FUNCTIONS as _FUNCTION_NAMES
 from .record import Command, Parameter, ResultName
+from .words import gather_texts
 
 __all__ = ["COMMAND", "EomInputs", "read", "compute", "eom", "MAX_COORDINATES"]
 
@@ -83,15 +84,9 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
          rtol: float | None = None, strict: bool = False) -> EomInputs:
     """The options (``coords``, ``T``, ``V``, ``D``, ``Q``, ``about``) and the words ->
     :class:`EomInputs` (everything parsed, nothing derived)."""
-    from ..result.checks import split_assignment
     from ..units.expression import parse_expression
 
-    given: dict[str, str] = {}
-    for word in words:
-        name, text = split_assignment(word, "a parameter")
-        if name in given:
-            raise InputError(f"{name}= is given twice")
-        given[name] = text
+    given, _labels = gather_texts({}, words, "a parameter")
     typed = {k: options.get(k) for k in ("coords", "T", "V", "D", "Q")}
     record = None
     if scene is not None:

@@ -84,9 +84,15 @@ class _OverBudget(Exception):
 @contextlib.contextmanager
 def _budget(seconds: float):
     """Stop the enclosed sympy work after ``seconds`` (SIGALRM; only where Python can use it:
-    the main thread on a POSIX system, else unbounded)."""
+    the main thread on a POSIX system, else unbounded).
+
+    The caller's own ITIMER_REAL and SIGALRM handler are saved and given back: the timer
+    re-armed with the time it had left (and its interval). A caller's timer due during the
+    derivation is not lost: it fires as soon as the derivation ends (late by at most its
+    length); one due earlier than the budget shortens nothing."""
     import signal
     import threading
+    import time
 
     usable = hasattr(signal, "setitimer") and threading.current_thread() is \
         threading.main_thread()
@@ -97,7 +103,8 @@ def _budget(seconds: float):
     def expire(signum, frame):
         raise _OverBudget()
     previous = signal.signal(signal.SIGALRM, expire)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
+    started = time.monotonic()
+    their_delay, their_interval = signal.setitimer(signal.ITIMER_REAL, seconds)
     try:
         yield
     except _OverBudget:
@@ -107,6 +114,9 @@ def _budget(seconds: float):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+        if their_delay > 0.0:
+            left = their_delay - (time.monotonic() - started)
+            signal.setitimer(signal.ITIMER_REAL, max(left, 1e-6), their_interval)
 
 
 def build(inputs) -> Result:
@@ -403,7 +413,8 @@ def _matrix(results, extra, name, array, coords, cdims, per_mass, known, stiffne
                               description=description)
     else:
         results[name] = Entry(name, array, None, "", symbol="K" if stiffness else "M",
-                              description=description + " (SI, units per entry in extra)")
+                              description=description + " (a unit on each entry; JSON: "
+                              "extra.matrix_units)", units=units)
         extra.setdefault("matrix_units", {})[name] = units
 
 

@@ -17,6 +17,7 @@ from ..units import (ANGULAR_RATE, COUPLING_DAMPING, COUPLING_MASS, COUPLING_STI
                      CYCLE_RATE, DAMPING, DIMENSIONLESS, INERTIA, MASS, STIFFNESS,
                      TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
+from .words import gather_texts
 
 __all__ = ["COMMAND", "ModesInputs", "read", "compute", "modes", "matrix_dims"]
 
@@ -134,7 +135,6 @@ def read(options: dict[str, str | None], words=(), *, scene: str | None = None,
 
 def _read_scene(options, words, name: str, normalize: str, strict: bool) -> ModesInputs:
     from ..lazy import numpy as np
-    from ..result.checks import split_assignment
     from ..scenes import get_scene
     from ..scenes.runner import check_constraints, read_inputs
 
@@ -149,13 +149,7 @@ def _read_scene(options, words, name: str, normalize: str, strict: bool) -> Mode
         if options.get(option) is not None:
             raise InputError(f"--{option} does not go with --scene {scene.name}: the scene "
                              "gives its own matrices")
-    texts: dict[str, str] = {}
-    labels: dict[str, str] = {}
-    for word in words:
-        key, text = split_assignment(word, "a parameter")
-        if key in texts:
-            raise InputError(f"{key}= given twice")
-        texts[key], labels[key] = text, f"{key}="
+    texts, labels = gather_texts({}, words, "a scene parameter")
     prepared = read_inputs(scene, texts, labels, strict)
     if prepared.missing:
         raise InputError(f"{scene.name} needs {', '.join(prepared.missing)}; the parameters "
@@ -177,6 +171,7 @@ def compute(inputs: ModesInputs, digits: int = 6) -> Result:
     out = solve_modes(inputs.M, inputs.K, inputs.C, normalize=inputs.normalize)
     n = len(out.omega)
     results: dict[str, Entry] = {}
+    coordinates = _coords(inputs)
     for i in range(n):
         results[f"omega_{i + 1}"] = Entry(f"omega_{i + 1}", float(out.omega[i]), ANGULAR_RATE,
                                           "rad/s", f"ω{i + 1}", f"angular frequency of mode "
@@ -190,7 +185,7 @@ def compute(inputs: ModesInputs, digits: int = 6) -> Result:
         stiff_dim = STIFFNESS if ref == "length" else TORSIONAL_STIFFNESS
         results[f"mode_{i + 1}"] = Entry(f"mode_{i + 1}", out.shapes[:, i].copy(),
                                          DIMENSIONLESS, "", f"mode {i + 1}",
-                                         f"shape of mode {i + 1} ({_coords(inputs)})")
+                                         f"shape of mode {i + 1} ({coordinates})")
         results[f"modal_mass_{i + 1}"] = Entry(
             f"modal_mass_{i + 1}", float(out.modal_mass[i]), mass_dim, mass_dim.si,
             f"m{i + 1}", f"modal mass of mode {i + 1}")
@@ -280,8 +275,9 @@ def _explain(inputs: ModesInputs, out) -> Explanation:
         "mode shapes: components in SI (m, rad), " + (
             "the largest component +1" if inputs.normalize == "max" else
             "unit modal mass phi^T M phi = 1 (largest component positive)"),
-        "symmetry checked to 1e-9 of the largest entry; eigenvalues within 1e-10 of the "
-        "largest are rigid-body modes (omega = 0)",
+        "symmetry checked to 1e-9 of the largest entry; an eigenvalue within 1e-10 of the "
+        "terms of phi^T K phi that sum to it is a rigid-body mode (omega = 0); solved with "
+        "M scaled to a diagonal near 1 (D M D, D = diag(M)^-1/2 rounded to powers of 2)",
     ]
     reference = inputs.scene.reference if inputs.scene is not None else ""
     return Explanation(formula, substituted, assumptions, reference)

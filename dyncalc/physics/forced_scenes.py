@@ -223,11 +223,14 @@ def rolling_wheel_moving_ground(m, k, u0, Omega, kappa=0.5, g=9.80665) -> Outcom
     W2 = Fraction(W) ** 2
     den = (1 + Fraction(kap)) * Fraction(m_) * W2 - Fraction(k_)
     omega = sqrt_ratio(k_, (1.0 + kap) * m_)
-    if den == 0 or abs(float(den / Fraction(k_))) <= 8.0 * 2.0 ** -52:
+    if den == 0 or abs(den) <= Fraction(8.0 * 2.0 ** -52) * Fraction(k_):  # exact: no overflow
         raise PhysicsError(f"Omega = {W:.6g} rad/s is the natural frequency sqrt(k/((1 + kappa) "
                            "m)): the undamped amplitude is unbounded; choose another Omega")
     x0 = float(Fraction(kap) * Fraction(m_) * Fraction(u_) * W2 / den)
-    h_max = abs(float(Fraction(k_) - Fraction(m_) * W2)) * abs(x0)
+    try:  # the product in fractions: |k - m Omega^2| alone may exceed float64 (Omega ~ 1e161)
+        h_max = float(abs(Fraction(k_) - Fraction(m_) * W2) * abs(Fraction(x0)))
+    except OverflowError:
+        h_max = math.inf
     return Outcome({"omega": omega, "x_amp": abs(x0), "phi": 0.0 if x0 >= 0 else math.pi,
                     "H_max": h_max, "mu0": h_max / (m_ * g_)},
                    assumptions=["rolling without slipping; linear spring; steady state "

@@ -29,6 +29,7 @@ from .outcome import Outcome, periodic
 __all__ = ["block_disk_springs", "spring_coupled_pendulums", "disk_on_swinging_bar",
            "pendulum_on_sliding_block", "coupled_blocks_matrices", "block_disk_springs_matrices",
            "spring_coupled_pendulums_matrices", "pendulum_on_sliding_block_matrices",
+           "disk_on_swinging_bar_matrices", "NO_EQUILIBRIUM",
            "Linearised", "pendulums_equilibrium"]
 
 _DIGITS = 40
@@ -249,9 +250,8 @@ def spring_coupled_pendulums_matrices(m: float, l: float, k: float, b: float, g:
 #: Why disk-on-swinging-bar has no frequency (natural-frequency and modes say it).
 NO_EQUILIBRIUM = ("disk-on-swinging-bar has no equilibrium with the disk free to slide: at "
                   "rest the disk accelerates outward along the bar at g cos(phi), so there is "
-                  "no oscillation about a rest position and no natural frequency; its "
-                  "equations of motion are on the scene card (dyncalc scenes "
-                  "disk-on-swinging-bar)")
+                  "no oscillation about a rest position and no natural frequency; dyncalc "
+                  "eom --scene disk-on-swinging-bar derives its equations of motion")
 
 
 @check_units(m1=MASS, l=LENGTH, m2=MASS, J2=INERTIA, g=ACCELERATION)
@@ -279,6 +279,12 @@ def disk_on_swinging_bar(m1, l, m2, J2, g) -> Outcome:
     ...
     dyncalc.errors.PhysicsError: disk-on-swinging-bar has no equilibrium ...
     """
+    raise PhysicsError(NO_EQUILIBRIUM)
+
+
+def disk_on_swinging_bar_matrices(values) -> Linearised:
+    """What ``modes --scene disk-on-swinging-bar`` solves: nothing, it has no equilibrium;
+    always raises :class:`~dyncalc.errors.PhysicsError` (:data:`NO_EQUILIBRIUM`)."""
     raise PhysicsError(NO_EQUILIBRIUM)
 
 

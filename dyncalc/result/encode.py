@@ -11,7 +11,7 @@ import math
 from typing import TYPE_CHECKING
 
 from ..errors import InputError
-from .entries import Entry, Result
+from .entries import Entry, Result, matrix_with_units
 
 if TYPE_CHECKING:
     from .checks import Check
@@ -167,6 +167,8 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
     value, _unit = machine(entry, units)
     if isinstance(value, str):
         return value
+    if entry.units is not None and name not in units:
+        return matrix_with_units(value, entry.units, repr)
     return full_number(value)
 
 
@@ -189,4 +191,6 @@ def batch_cell(entry: Entry, unit: str) -> str:
     value = entry.value_in(unit)
     if isinstance(value, str):
         return value
+    if entry.units is not None and not unit:
+        return matrix_with_units(value, entry.units, repr)
     return full_number(value)

@@ -32,6 +32,15 @@ def format_number(value, digits: int) -> str:
     return f"{value:.{digits}g}"
 
 
+def matrix_with_units(value, units, number) -> str:
+    """A matrix whose entries have units of their own, in the matrix grammar's per-entry form
+    (``[[4 kg, -0.1 kg*m], [-0.1 kg*m, 0.015 kg*m^2]]``: ``modes --M`` reads it back);
+    ``number`` writes one float."""
+    return "[" + ", ".join(
+        "[" + ", ".join(f"{number(float(v))} {u}".rstrip() for v, u in zip(row, unit_row))
+        + "]" for row, unit_row in zip(value, units)) + "]"
+
+
 class Entry(Record):
     """One named input or result.
 
@@ -40,19 +49,21 @@ class Entry(Record):
     ``description`` are for the human table; ``assumed_si`` marks a bare number read as SI;
     ``text`` is an input as the user typed it (or the default's text), ``None`` on results;
     ``reading`` is an input typed as an expression (``1500 N / 7 mm``) with the parentheses
-    the grammar implies made explicit (``1500 N / (7 mm)``), ``""`` otherwise.
+    the grammar implies made explicit (``1500 N / (7 mm)``), ``""`` otherwise; ``units``, on
+    a matrix whose entries differ in unit (translations and rotations mixed), the SI unit of
+    each entry (rows of texts): the table and ``--value`` write each entry with its unit.
 
     A plain class, not a dataclass (no code generated at import: start-up), with a
     dataclass's repr and equality from :class:`~dyncalc.records.Record`.
     """
 
     __slots__ = ("name", "si", "dim", "unit", "symbol", "description", "assumed_si", "exact",
-                 "overflowed", "uncertainty", "text", "reading")
+                 "overflowed", "uncertainty", "text", "reading", "units")
 
     def __init__(self, name: str, si: Any, dim: Dim | None, unit: str = "", symbol: str = "",
                  description: str = "", assumed_si: bool = False, exact: Any = None,
                  overflowed: bool = False, uncertainty: Any = None, text: str | None = None,
-                 reading: str = ""):
+                 reading: str = "", units: Any = None):
         self.name, self.si, self.dim, self.unit = name, si, dim, unit
         self.symbol, self.description, self.assumed_si = symbol, description, assumed_si
         self.exact = exact  # the magnitude in ``unit`` exactly as typed or computed
@@ -60,6 +71,7 @@ class Entry(Record):
         self.uncertainty = uncertainty  # standard uncertainty in ``dim.si``, if any
         self.text = text  # an input's text as typed (JSON ``inputs.NAME.text``)
         self.reading = reading  # an expression input as read, parentheses made explicit
+        self.units = units  # a mixed matrix: each entry's SI unit
 
 
     @property

@@ -21,7 +21,7 @@ from ..errors import InputError
 from ..records import Frozen
 
 __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names",
-           "is_example_id", "scenes_of_example"]
+           "computed_scenes", "is_example_id", "scenes_of_example"]
 
 #: Modules whose import registers scenes.
 CATALOG_MODULES: tuple[str, ...] = (
@@ -91,12 +91,15 @@ class Scene(Frozen):
     maps result names to their own :class:`~dyncalc.result.kinds.ResultKind` where the
     shared table (:func:`dyncalc.result.kinds.result_kind`) has none or means something else
     (a rigid-body scene's ``V`` is a shear force, not a magnification).
+    ``no_frequency``, when not empty, says why ``natural-frequency`` refuses the scene on
+    purpose (it has no equilibrium): its ``example`` is then the runnable ``eom`` command and
+    ``example_result`` that command's accelerations.
     """
 
     __slots__ = ("name", "summary", "figure", "params", "compute", "equation", "formula",
                  "reference", "example", "example_result", "constraints", "one_of", "methods",
                  "accepts_zeta", "no_zeta_because", "assumptions", "latex", "sizes", "matrices",
-                 "kinds")
+                 "kinds", "no_frequency")
 
     def __init__(self, name: str, summary: str, figure: str, params: tuple[Param, ...],
                  compute: Any, equation: str, formula: str, reference: str, example: str,
@@ -105,11 +108,11 @@ class Scene(Frozen):
                  accepts_zeta: bool = True,
                  no_zeta_because: str = "its damping comes from its own parameters",
                  assumptions: tuple[str, ...] = (), latex: tuple = (), sizes: tuple = (),
-                 matrices: Any = None, kinds: dict | None = None):
+                 matrices: Any = None, kinds: dict | None = None, no_frequency: str = ""):
         _set_all(self, name, summary, figure, params, compute, equation, formula, reference,
                  example, {} if example_result is None else example_result, constraints,
                  one_of, methods, accepts_zeta, no_zeta_because, assumptions, latex, sizes,
-                 matrices, {} if kinds is None else kinds)
+                 matrices, {} if kinds is None else kinds, no_frequency)
 
     def replace(self, **changes) -> Scene:
         """A copy with ``changes`` (what ``dataclasses.replace`` does)."""
@@ -192,6 +195,12 @@ def catalog() -> dict[str, Scene]:
 
 def scene_names() -> list[str]:
     return list(catalog())
+
+
+def computed_scenes() -> dict[str, Scene]:
+    """The scenes ``natural-frequency`` computes, by name in catalog order: the catalog less
+    those it refuses on purpose (:attr:`Scene.no_frequency`, no equilibrium)."""
+    return {name: scene for name, scene in catalog().items() if not scene.no_frequency}
 
 
 def is_example_id(text: str) -> bool:

@@ -1,17 +1,21 @@
-"""Catalog: the Lagrange scenes of chapter 4 (E4.14, E4.16, E4.19; ../shared/SCENES.md
-"Lagrange scenes"), for ``natural-frequency`` (closed forms) and ``modes`` (the linearised
-matrices of :mod:`dyncalc.physics.lagrange`).
+"""Catalog: the Lagrange scenes of chapter 4 (E4.14, E4.16, E4.17, E4.19;
+../shared/SCENES.md "Lagrange scenes"), for ``natural-frequency`` (closed forms) and ``modes``
+(the linearised matrices of :mod:`dyncalc.physics.lagrange`). ``disk-on-swinging-bar`` has no
+equilibrium: both refuse it on purpose (:attr:`dyncalc.scenes.Scene.no_frequency`), and its
+example is the ``eom`` command that gives its accelerations.
 
 The ``example_result`` values were computed independently with mpmath at 30 digits from the
-formulas of ../shared/SCENES.md (the pendulums' equilibrium by mpmath.findroot).
+formulas of ../shared/SCENES.md (the pendulums' equilibrium by mpmath.findroot; the disk's
+accelerations from the closed forms of ../shared/SCENES.md).
 """
 from __future__ import annotations
 
-from ..physics.lagrange import (block_disk_springs, block_disk_springs_matrices,
+from ..physics.lagrange import (NO_EQUILIBRIUM, block_disk_springs, block_disk_springs_matrices,
+                                disk_on_swinging_bar, disk_on_swinging_bar_matrices,
                                 pendulum_on_sliding_block, pendulum_on_sliding_block_matrices,
                                 spring_coupled_pendulums, spring_coupled_pendulums_matrices)
 from ..errors import InputError
-from ..units import LENGTH, MASS, STIFFNESS
+from ..units import INERTIA, LENGTH, MASS, STIFFNESS
 from . import Param, register
 from . import Scene
 from .basic import gravity
@@ -89,6 +93,32 @@ register(Scene(
     accepts_zeta=False, no_zeta_because=_TWO_MODES,
     matrices=lambda v: spring_coupled_pendulums_matrices(v["m"], v["l"], v["k"], v["b"],
                                                          v["g"]),
+))
+
+register(Scene(
+    name="disk-on-swinging-bar",
+    summary="a disk sliding freely along a bar that swings about its upper end",
+    figure="a uniform bar (m1, l) swings in a vertical plane about a fixed pin at its upper "
+           "end; a disk (m2, J2 about its centre) threaded on the bar slides along it without "
+           "friction and turns with it; phi is the bar's angle from the downward vertical, x "
+           "the distance of the disk's centre from the pin (valid while 0 <= x <= l)",
+    params=(Param("m1", MASS, "mass of the bar"), Param("l", LENGTH, "length of the bar"),
+            Param("m2", MASS, "mass of the disk"),
+            Param("J2", INERTIA, "moment of inertia of the disk about its centre"), gravity()),
+    compute=disk_on_swinging_bar,
+    equation="(m1 l^2/3 + m2 x^2 + J2) phi'' + 2 m2 x x' phi' + (m1 l/2 + m2 x) g sin(phi) "
+             "= 0; x'' - x phi'^2 - g cos(phi) = 0",
+    formula="none: no equilibrium (at rest the disk accelerates outward at g cos(phi)); at a "
+            "state phi_ddot = -(2 m2 x x_dot phi_dot + (m1 l/2 + m2 x) g sin(phi)) / "
+            "(m1 l^2/3 + m2 x^2 + J2), x_ddot = x phi_dot^2 + g cos(phi)",
+    reference="E4.17",
+    example="dyncalc eom --scene disk-on-swinging-bar m1=2kg l=1m m2=1kg J2=0.01kg*m^2 "
+            "phi=0.3rad x=0.5m phi_dot=1rad/s x_dot=0.2m/s",
+    example_result={"phi_ddot": "-4.90693689062928627659340705325 rad/s^2",
+                    "x_ddot": "9.86865058108362427252526159318 m/s^2"},
+    accepts_zeta=False, no_zeta_because="it has no equilibrium to oscillate about",
+    matrices=disk_on_swinging_bar_matrices,
+    no_frequency=NO_EQUILIBRIUM,
 ))
 
 register(Scene(
