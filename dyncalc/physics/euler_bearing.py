@@ -118,6 +118,10 @@ def precessing_shaft(J1, J3, omega0, Omega, J2=None, alpha0=None, t=None, psi=0.
     M1, M2, M3 = bearing_moment(J1_, J2_, J3_, w0, rate, accel, magnitude(psi, "rad"))
     law = "uniform turning alpha = Omega t" if a0 is None else \
         "harmonic turning alpha = alpha0 sin(Omega t)"
+    zeros = set() if J2_ != J3_ else {"M1"}          # zero by the physics, not underflow
+    if a0 is None:
+        zeros.update({"alpha_ddot"} if J2_ != J3_ else {"alpha_ddot", "M3"})
     return Outcome({"M1": M1, "M2": M2, "M3": M3, "alpha_dot": rate, "alpha_ddot": accel},
+                   exact_zeros=zeros,
                    assumptions=[law, "constant spin omega0 relative to the turning frame "
                                 "(the drive supplies M1)"])

@@ -65,8 +65,8 @@ def angled_bar_on_shaft(m, l, M0, omega=0.0) -> Outcome:
     M, w = magnitude(M0, "N*m"), magnitude(omega, "rad/s")
     centripetal = m_ * l_ * w * w
     return Outcome({"alpha": 9.0 * M / (20.0 * m_ * l_ * l_),
-                    "A_xi": -0.75 * centripetal, "A_eta": 27.0 * M / (80.0 * l_),
-                    "B_xi": -7.0 * centripetal / 12.0, "B_eta": 21.0 * M / (80.0 * l_)},
+                    "A_xi": 0.0 - 0.75 * centripetal, "A_eta": 27.0 * M / (80.0 * l_),
+                    "B_xi": 0.0 - 7.0 * centripetal / 12.0, "B_eta": 21.0 * M / (80.0 * l_)},
                    assumptions=[_NO_WEIGHT, "massless shaft; radial bearings (no axial "
                                 "force arises)"])
 
@@ -89,7 +89,7 @@ def beam_loads(m: float, l: float, M0: float, x: float, t: float | None):
     s = x / l
     outer = (1.0 - s) * (1.0 + s)
     V = 1.5 * M0 / l * outer
-    M = -M0 * (1.0 - s) ** 2 * (1.0 + 0.5 * s)
+    M = 0.0 - M0 * (1.0 - s) ** 2 * (1.0 + 0.5 * s)  # 0, not -0, at the free end
     N = None if t is None else 4.5 * M0 * M0 * t * t / (m * l ** 3) * outer
     return N, V, M
 
@@ -147,7 +147,8 @@ def beam_spun_up(m, l, M0, x=None, t=None) -> Outcome:
             values["N"] = N
         values["V"] = V
         values["M"] = Mx
-    return Outcome(values, assumptions=[_NO_WEIGHT, "the beam starts from rest at t = 0"])
+    return Outcome(values, assumptions=[_NO_WEIGHT, "the beam starts from rest at t = 0"],
+                   exact_zeros={"N", "V", "M"} if x_ == l_ else set())  # the free end
 
 
 def arm_leg_b(mu_W2: float, a: float, b: float, x1: float):
@@ -225,4 +226,5 @@ def rotating_angled_arm(m, a, b, Omega, x1=None, x2=None) -> Outcome:
     N0, V0, M0 = arm_leg_a(mu_W2, a_, b_, 0.0)
     return Outcome({"N": N, "V": V, "M": M, "N0": N0, "V0": V0, "M0": M0},
                    assumptions=[_NO_WEIGHT + ": the arm turns in a horizontal plane",
-                                "constant Omega: only the centrifugal loads act"])
+                                "constant Omega: only the centrifugal loads act"],
+                   exact_zeros={"M"} if x2 is not None and x == a_ else set())  # the axis

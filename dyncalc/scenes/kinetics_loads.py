@@ -17,10 +17,7 @@ from ..units import (ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, INERTIA, 
 from . import Param, Scene, register
 from .kinetics import NO_ZETA, kind
 
-__all__ = ["DIAGRAM_SCENES"]
-
-#: The scenes whose ``--plot`` draws the N, V, M diagrams along the bar.
-DIAGRAM_SCENES = ("beam-spun-up", "rotating-angled-arm")
+__all__: list[str] = []
 
 _N = "normal force at the section (tension positive)"
 
