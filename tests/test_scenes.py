@@ -25,7 +25,8 @@ SCENES_MD = {
     "mass-spring-given-response", "rolling-wheel-moving-ground",
     "block-disk-springs", "spring-coupled-pendulums", "pendulum-on-sliding-block",
     # rigid-body scenes (the rigid-body command)
-    "drum-two-blocks",
+    "drum-two-blocks", "wheel-incline-block", "two-drums-rope-drive", "direct-central-impact",
+    "double-pendulum-impulse",
 }
 
 SCENES = list(catalog().values())

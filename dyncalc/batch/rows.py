@@ -259,9 +259,19 @@ def RigidRows(*, scene: str | None = None, rtol: float | None = None,
     ``alpha`` as quoted cells."""
     from ..commands.rigid_body import COMMAND, rigid_scene
 
-    words = tuple(p.name for p in rigid_scene(scene).params) if scene is not None else ()
-    return RecordRows(COMMAND, {"scene": scene}, scene_words=words, rtol=rtol, strict=strict,
-                      example="inertia_tensor,omega,alpha")
+    if scene is None:
+        return RecordRows(COMMAND, {"scene": None}, rtol=rtol, strict=strict,
+                          example="inertia_tensor,omega,alpha")
+    chosen = rigid_scene(scene)
+    spec = RecordRows(COMMAND, {"scene": scene}, rtol=rtol, strict=strict,
+                      targets=tuple(chosen.kinds), example="m1 [kg],m2 [kg]")
+    # every column is a scene word: the scene's alpha is a result to solve from, not --alpha
+    spec.columns = []
+    spec.scene_words = [p.name for p in chosen.params]
+    spec.known = lambda: (f"rigid-body --scene {chosen.name} reads "
+                          f"{', '.join(spec.scene_words)} and a result to solve from "
+                          f"({', '.join(chosen.kinds)})")
+    return spec
 
 
 def ModesRows(*, scene: str | None = None, normalize: str | None = None,

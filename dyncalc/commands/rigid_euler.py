@@ -36,7 +36,8 @@ def read_euler(options: dict, strict: bool):
 
         raise InputError(f"--inertia-tensor must be a 3x3 matrix (rows by ';'); got "
                          f"{matrix.order}x{matrix.order}")
-    J, bare = matrix.si(lambda i, j: (INERTIA, "(an inertia tensor)"), strict=strict)
+    J, bare = matrix.si(lambda i, j: (INERTIA, "every entry of an inertia tensor"),
+                        strict=strict)
     check_tensor(J)
     euler = {"J": J}
     entries = {"inertia_tensor": Entry("inertia_tensor", J + 0.0, INERTIA, unit=INERTIA.si,
