@@ -26,7 +26,8 @@ SCENES_MD = {
     "block-disk-springs", "spring-coupled-pendulums", "pendulum-on-sliding-block",
     # rigid-body scenes (the rigid-body command)
     "drum-two-blocks", "wheel-incline-block", "two-drums-rope-drive", "direct-central-impact",
-    "double-pendulum-impulse",
+    "double-pendulum-impulse", "angled-bar-on-shaft", "precessing-shaft", "beam-spun-up",
+    "rotating-angled-arm",
 }
 
 SCENES = list(catalog().values())

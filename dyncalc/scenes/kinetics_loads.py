@@ -112,9 +112,11 @@ register(Scene(
            r"$M3 = ($J2\,\sin^2 $psi + $J3\,\cos^2 $psi)\,$alpha_ddot + ($J2 - $J3)\,"
            r"$omega0\,$alpha_dot\,\sin(2\,$psi)"),
     reference="E3.42 (book erratum: M2)",
-    example="dyncalc rigid-body --scene precessing-shaft \"J1=0.02 kg*m^2\" \"J3=0.5 kg*m^2\" "
-            "omega0=100rad/s Omega=2rad/s",
-    example_result={"M1": "0 N*m", "M2": "4 N*m", "M3": "0 N*m"},
+    example="dyncalc rigid-body --scene precessing-shaft \"J1=0.02 kg*m^2\" \"J2=0.6 kg*m^2\" "
+            "\"J3=0.5 kg*m^2\" omega0=100rad/s Omega=2rad/s psi=30deg",
+    example_result={"M1": "-0.17320508075688772935 N*m", "M2": "14 N*m",
+                    "M3": "17.320508075688772935 N*m", "alpha_dot": "2 rad/s",
+                    "alpha_ddot": "0 rad/s^2"},
     accepts_zeta=False,
     no_zeta_because=NO_ZETA,
     assumptions=("the book's M2 = (J1 - J3) omega0 alpha' is a misprint: dH/dt gives "
