@@ -49,13 +49,9 @@ def test_bar_inertia_data_of_scenes_md():
     assert _bar_tensor_by_sum(m, l) == pytest.approx(body.J_O, rel=1e-6, abs=1e-9)
 
 
-@pytest.mark.parametrize("m, l, M0, omega", [(3.0, 0.5, 10.0, 2.0), (7.5, 1.3, -4.0, -11.0),
-                                             (0.2, 0.05, 0.3, 0.0)])
-def test_bar_against_newton_euler_linear_system(m, l, M0, omega):
+def bar_by_newton_euler(m, l, M0, omega, J, c):
     """Unknowns A_xi, A_eta, B_xi, B_eta, alpha: Newton (2 eqs), Euler about O (3 eqs) with
-    J_O from the rods, bearings at zeta = +-2l."""
-    body = _bar_tensor(m, l)
-    J, c = body.J_O, body.r_c
+    the tensor J about O and the centre c, bearings at zeta = +-2l; returns them by name."""
     # Euler about O: sum of moments = J alpha + w x (J w), w = omega e_z, alpha e_z unknown.
     # Moments: r_A x A + r_B x B + M0 e_z; r_A = (0,0,2l), r_B = (0,0,-2l)
     w = np.array([0.0, 0.0, omega])
@@ -68,7 +64,18 @@ def test_bar_against_newton_euler_linear_system(m, l, M0, omega):
     rows += [[0, -2 * l, 0, 2 * l, -J[0, 2]], [2 * l, 0, -2 * l, 0, -J[1, 2]],
              [0, 0, 0, 0, -J[2, 2]]]
     rhs += [gyro[0], gyro[1], gyro[2] - M0]
-    A_xi, A_eta, B_xi, B_eta, alpha = np.linalg.solve(np.array(rows, float), np.array(rhs))
+    solved = np.linalg.solve(np.array(rows, float), np.array(rhs))
+    return dict(zip(("A_xi", "A_eta", "B_xi", "B_eta", "alpha"), map(float, solved)))
+
+
+@pytest.mark.parametrize("m, l, M0, omega", [(3.0, 0.5, 10.0, 2.0), (7.5, 1.3, -4.0, -11.0),
+                                             (0.2, 0.05, 0.3, 0.0)])
+def test_bar_against_newton_euler_linear_system(m, l, M0, omega):
+    body = _bar_tensor(m, l)
+    c = body.r_c
+    ref = bar_by_newton_euler(m, l, M0, omega, body.J_O, c)
+    A_xi, A_eta, B_xi, B_eta, alpha = (ref[n] for n in ("A_xi", "A_eta", "B_xi", "B_eta",
+                                                        "alpha"))
     out = angled_bar_on_shaft(Q_(m, "kg"), Q_(l, "m"), Q_(M0, "N*m"), Q_(omega, "rad/s")).values
     scale = abs(M0) / l + m * l * omega ** 2
     for name, value in (("A_xi", A_xi), ("A_eta", A_eta), ("B_xi", B_xi), ("B_eta", B_eta)):

@@ -10,11 +10,12 @@ import sys
 import pytest
 
 import dyncalc
+import numpy as np
 from dyncalc.commands.rigid_body import rigid_body
 from dyncalc.commands.rigid_diagrams import load_diagram
 from dyncalc.scenes import get_scene
 from helpers import error_line, invoke, json_of
-from test_rigid_loads import _arm_by_quad, _beam_by_quad
+from test_rigid_loads import _arm_by_quad, _bar_tensor, _beam_by_quad, bar_by_newton_euler
 
 BEAM = ("rigid-body", "--scene", "beam-spun-up", "m=6kg", "l=2m", "M0=12 N*m")
 ARM = ("rigid-body", "--scene", "rotating-angled-arm", "m=3kg", "a=1m", "b=0.5m",
@@ -225,3 +226,39 @@ def test_matplotlib_not_loaded_without_plot():
                           timeout=120)
     assert done.stderr.strip().splitlines()[-1] == "False", done.stderr
     assert "N0" in done.stdout and math.isfinite(1.0)
+
+
+# --- --check slips --------------------------------------------------------------------------
+
+def _slip_line(words, check):
+    out = invoke(*words, "--check", check)
+    assert out.exit_code == 1, out.stderr
+    return next(line for line in out.stdout.splitlines() if line.startswith("check "))
+
+
+@pytest.mark.parametrize("flip, why", [
+    (-1.0, "the sign of the product of inertia J_xizeta wrong (+m l^2/3)"),
+    (0.0, "the product of inertia J_xizeta left out (the bearings share equally)")])
+def test_bar_slips_match_the_wrong_tensor(flip, why):
+    """The slip values are the Newton-Euler solution with J_xizeta negated or zeroed."""
+    body = _bar_tensor(3.0, 0.5)
+    J = np.array(body.J_O)
+    J[0, 2] = J[2, 0] = flip * J[0, 2]
+    wrong = bar_by_newton_euler(3.0, 0.5, 10.0, 2.0, J, body.r_c)
+    words = ("rigid-body", "--scene", "angled-bar-on-shaft", "m=3kg", "l=0.5m", "M0=10 N*m",
+             "omega=2rad/s")
+    for name in ("A_xi", "A_eta", "B_xi", "B_eta"):
+        line = _slip_line(words, f"{name}={wrong[name]!r} N")
+        assert line.endswith(f"FAIL; likely slip: {why}"), line
+
+
+def test_beam_and_shaft_slips():
+    """m l^2/12 about the pin gives alpha = M0/(m l^2/12); the book's M2 at the erratum's
+    numbers is (J1 - J3) omega0 Omega = -96 N m."""
+    beam = _slip_line(BEAM, f"alpha={12 / (6 * 4 / 12)!r} rad/s^2")
+    assert beam.endswith("FAIL; likely slip: the moment of inertia about the centre (m l^2/12) "
+                         "used about the pin"), beam
+    shaft = _slip_line(("rigid-body", "--scene", "E3.42", "J1=0.02 kg*m^2", "J3=0.5 kg*m^2",
+                        "omega0=100rad/s", "Omega=2rad/s"), "M2=-96 N*m")
+    assert shaft.endswith("FAIL; likely slip: the rate of the body-fixed omega_2 taken as zero "
+                          "(the book's misprint (J1 - J3) omega0 alpha')"), shaft
