@@ -39,8 +39,8 @@ def mp_precision():
 
 # -- helpers ---------------------------------------------------------------------------------
 
-#: The commands a scene's example runs (forced scenes: forced-response).
-EXAMPLE_COMMANDS = ("natural-frequency", "forced-response")
+#: The commands a scene's example runs (forced scenes: forced-response; rigid-body scenes).
+EXAMPLE_COMMANDS = ("natural-frequency", "forced-response", "rigid-body")
 
 
 def example_texts(scene):

@@ -70,7 +70,10 @@ def test_drum_two_blocks_textbook_forms_and_balance():
     got = run("drum-two-blocks", **p)
     assert got["S1"] == pytest.approx(20.0 * G * (0.4 * 0.6 * 15.0 + 2.0) / D, rel=1e-14)
     assert got["S2"] == pytest.approx(15.0 * G * (0.2 * 0.6 * 20.0 + 2.0) / D, rel=1e-14)
-    still = run("drum-two-blocks", m1=20.0, m2=10.0, r1=0.2, r2=0.4, J_A=2.0)
+    balanced = run_scene("drum-two-blocks", {"m1": "20", "m2": "10", "r1": "0.2", "r2": "0.4",
+                                             "J_A": "2"})
+    assert balanced.warnings == []  # an exact zero, not an underflow
+    still = {name: entry.si for name, entry in balanced.results.items()}
     assert still["alpha"] == 0.0 and still["S1"] == pytest.approx(20 * G, rel=1e-15)
 
 

@@ -271,6 +271,16 @@ def RigidRows(*, scene: str | None = None, rtol: float | None = None,
     spec.known = lambda: (f"rigid-body --scene {chosen.name} reads "
                           f"{', '.join(spec.scene_words)} and a result to solve from "
                           f"({', '.join(chosen.kinds)})")
+    # the vectorised path: the scene's physics on each row's SI floats (commands/rigid_columns)
+    from ..commands.record import Parameter
+    from ..commands.rigid_columns import scene_columns
+    from .fast_commands import _command_fast
+
+    params = {p.name: Parameter(p.name, p.dim, p.description, kind="choice",
+                                choices=tuple(p.choices)) if p.choices is not None
+              else Parameter(p.name, p.dim, p.description) for p in chosen.params}
+    spec.parameter = params.get
+    spec.adapter, spec.fast = scene_columns, _command_fast
     return spec
 
 

@@ -61,11 +61,13 @@ def drum_two_blocks(m1, m2, r1, r2, J_A, g=9.80665) -> Outcome:
                           magnitude(r2, "m"))
     J, g_ = magnitude(J_A, "kg*m^2"), magnitude(g, "m/s^2")
     D = J + m1_ * r1_ * r1_ + m2_ * r2_ * r2_
-    alpha = (m2_ * r2_ - m1_ * r1_) * g_ / D
+    top = m2_ * r2_ - m1_ * r1_
+    alpha = top * g_ / D
     S1 = m1_ * g_ * (r2_ * (r1_ + r2_) * m2_ + J) / D
     S2 = m2_ * g_ * (r1_ * (r1_ + r2_) * m1_ + J) / D
     return Outcome({"alpha": alpha, "a1": r1_ * alpha, "a2": r2_ * alpha, "S1": S1, "S2": S2},
-                   assumptions=[_ROPES])
+                   assumptions=[_ROPES],
+                   exact_zeros={"alpha", "a1", "a2"} if top == 0.0 else set())
 
 
 @check_units(m1=MASS, m2=MASS, beta=ANGLE, J_A=INERTIA, r=LENGTH, g=ACCELERATION)
@@ -109,11 +111,14 @@ def wheel_incline_block(m1, m2, beta, J_A=None, r=None, kappa=None, g=9.80665) -
     q = magnitude(J_A, "kg*m^2") / magnitude(r, "m") ** 2 if J_A is not None else kappa * m1_
     s, c = math.sin(b), math.cos(b)
     total = m1_ + m2_ + q
-    a = g_ * (m2_ - m1_ * s) / total
+    top = m2_ - m1_ * s
+    a = g_ * top / total
     S = m2_ * g_ * (m1_ + q + m1_ * s) / total
     H = q * a
     N = m1_ * g_ * c
-    return Outcome({"a": a, "S": S, "H": H, "N": N, "mu_min": abs(H) / N},
+    zeros = ({"a"} if top == 0.0 else set()) | (
+        {"H", "mu_min"} if top == 0.0 or q == 0.0 else set())
+    return Outcome({"a": a, "S": S, "H": H, "N": N, "mu_min": abs(H) / N}, exact_zeros=zeros,
                    assumptions=["rolling without slipping (static friction at least "
                                 "mu_min N); " + _ROPES + "; an ideal pulley"])
 
@@ -158,10 +163,13 @@ def two_drums_rope_drive(m1, m2, r1, r2, J1, J2, M0, g=9.80665) -> Outcome:
     J1_, J2_ = magnitude(J1, "kg*m^2"), magnitude(J2, "kg*m^2")
     M, g_ = magnitude(M0, "N*m"), magnitude(g, "m/s^2")
     D = m2_ * r2_ * r2_ + m1_ * r1_ * r1_ + J1_ + J2_
-    a2 = (g_ * (m2_ * r2_ * r2_ - m1_ * r1_ * r2_) + M * r2_) / D
+    top = g_ * (m2_ * r2_ * r2_ - m1_ * r1_ * r2_) + M * r2_
+    a2 = top / D
     a1 = r1_ / r2_ * a2
     S1 = m1_ * (g_ + a1)
     S2 = m2_ * (g_ - a2)
+    zeros = {"a2", "a1", "alpha"} if top == 0.0 else set()
+    zeros |= {name for name, value in (("S1", S1), ("S2", S2)) if value == 0.0}
     warnings = []
     if S2 < 0.0:
         warnings.append(f"the rope of block 2 goes slack: a2 = {a2:.6g} m/s^2 exceeds g; "
@@ -170,7 +178,7 @@ def two_drums_rope_drive(m1, m2, r1, r2, J1, J2, M0, g=9.80665) -> Outcome:
         warnings.append(f"the rope of block 1 goes slack: a1 = {a1:.6g} m/s^2 is below -g; "
                         "block 1 falls freely and these results do not hold")
     return Outcome({"a2": a2, "a1": a1, "alpha": a2 / r2_, "S1": S1, "S2": S2},
-                   warnings=warnings,
+                   warnings=warnings, exact_zeros=zeros,
                    assumptions=[_ROPES + "; the coupling rope taut"])
 
 
@@ -216,9 +224,12 @@ def direct_central_impact(m1, m2, v1, v2, e) -> Outcome:
     total, dv = m1_ + m2_, v1_ - v2_
     v_c = (m1_ * v1_ + m2_ * v2_) / total
     mu = m1_ / total * m2_  # the reduced mass
-    return Outcome({"v_c": v_c, "v1_post": v_c - e_ * (m2_ / total) * dv,
-                    "v2_post": v_c + e_ * (m1_ / total) * dv, "F_hat": (1.0 + e_) * mu * dv,
-                    "dE": (1.0 - e_) * (1.0 + e_) * mu * dv * dv / 2.0},
+    values = {"v_c": v_c, "v1_post": v_c - e_ * (m2_ / total) * dv,
+              "v2_post": v_c + e_ * (m1_ / total) * dv, "F_hat": (1.0 + e_) * mu * dv,
+              "dE": (1.0 - e_) * (1.0 + e_) * mu * dv * dv / 2.0}
+    # a velocity of zero is a cancellation (the bodies stop), no energy is lost at e = 1
+    zeros = {n for n in ("v_c", "v1_post", "v2_post") if values[n] == 0.0}
+    return Outcome(values, exact_zeros=zeros | ({"dE"} if e_ == 1.0 else set()),
                    assumptions=["a straight central impact of smooth bodies without "
                                 "rotation; other forces are negligible during the impact"])
 
@@ -262,12 +273,14 @@ def double_pendulum_impulse(m, l, F_hat, d=None) -> Outcome:
     if not 0.0 <= d_ <= l_:
         raise InputError("double-pendulum-impulse needs 0 <= d <= l (the blow strikes bar 2); "
                          f"got d = {d_:g} m with l = {l_:g} m")
-    omega_1 = 6.0 * F * (3.0 * d_ - l_) / (7.0 * m_ * l_ * l_)
-    omega_2 = 6.0 * F * (5.0 * l_ - 8.0 * d_) / (7.0 * m_ * l_ * l_)
-    B_hat = 2.0 * F * (3.0 * d_ - l_) / (7.0 * l_)
+    upper, lower = 3.0 * d_ - l_, 5.0 * l_ - 8.0 * d_
+    omega_1 = 6.0 * F * upper / (7.0 * m_ * l_ * l_)
+    omega_2 = 6.0 * F * lower / (7.0 * m_ * l_ * l_)
+    B_hat = 2.0 * F * upper / (7.0 * l_)
     return Outcome({"omega_1": omega_1, "omega_2": omega_2,
                     "v_2": 3.0 * F * (3.0 * l_ - 2.0 * d_) / (7.0 * m_ * l_),
                     "A_hat": B_hat / 2.0, "B_hat": B_hat, "d_0": d_0, "d_A0": l_ / 3.0},
-                   exact_zeros={"omega_2"} if d_ == d_0 else set(),
+                   exact_zeros=({"omega_2"} if lower == 0.0 else set())
+                   | ({"omega_1", "A_hat", "B_hat"} if upper == 0.0 else set()),
                    assumptions=["uniform thin bars; the blow is short, so the bars do not "
                                 "move during it and weight gives no impulse"])

@@ -31,6 +31,7 @@ import math
 
 from ..physics.kinetics import (direct_central_impact, double_pendulum_impulse, drum_two_blocks,
                                 two_drums_rope_drive, wheel_incline_block)
+from ..result.explain import Formula
 from ..result.kinds import ResultKind
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, DIMENSIONLESS,
                      ENERGY, FORCE, IMPULSE, INERTIA, LENGTH, MASS, TORQUE, VELOCITY)
@@ -240,6 +241,16 @@ register(Scene(
            "dE": kind(ENERGY, "ΔE", "kinetic energy lost")},
 ))
 
+def _impulse_latex(d: str) -> tuple:
+    """The double pendulum's lines with the blow at ``d`` (``$d`` given, or ``$d_0``)."""
+    given = (lambda v: "d" in v) if d == "$d" else (lambda v: "d" not in v)
+    return tuple(Formula(text.replace("D", d), given) for text in (
+        r"$omega_1 = \frac{6\,$F_hat\,(3\,D - $l)}{7\,$m\,$l^2}",
+        r"$omega_2 = \frac{6\,$F_hat\,(5\,$l - 8\,D)}{7\,$m\,$l^2}",
+        r"$v_2 = \frac{3\,$F_hat\,(3\,$l - 2\,D)}{7\,$m\,$l}",
+        r"$B_hat = \frac{2\,$F_hat\,(3\,D - $l)}{7\,$l}"))
+
+
 register(Scene(
     name="double-pendulum-impulse",
     summary="two hanging bars, pinned in line, the lower one struck by a horizontal impulse",
@@ -260,11 +271,8 @@ register(Scene(
     formula="omega_1 = 6 F_hat (3d - l)/(7 m l^2), omega_2 = 6 F_hat (5l - 8d)/(7 m l^2), "
             "v_2 = 3 F_hat (3l - 2d)/(7 m l), B_hat = 2 F_hat (3d - l)/(7 l), A_hat = B_hat/2, "
             "d_0 = 5l/8, d_A0 = l/3",
-    latex=(r"$omega_1 = \frac{6\,$F_hat\,(3\,$d - $l)}{7\,$m\,$l^2}",
-           r"$omega_2 = \frac{6\,$F_hat\,(5\,$l - 8\,$d)}{7\,$m\,$l^2}",
-           r"$v_2 = \frac{3\,$F_hat\,(3\,$l - 2\,$d)}{7\,$m\,$l}",
-           r"$B_hat = \frac{2\,$F_hat\,(3\,$d - $l)}{7\,$l}", r"$A_hat = \frac{$B_hat}{2}",
-           r"$d_0 = \frac{5\,$l}{8}", r"$d_A0 = \frac{$l}{3}"),
+    latex=(r"$d_0 = \frac{5\,$l}{8}", r"$d_A0 = \frac{$l}{3}",
+           *_impulse_latex("$d"), *_impulse_latex("$d_0"), r"$A_hat = \frac{$B_hat}{2}"),
     reference="E3.46",
     example='dyncalc rigid-body --scene double-pendulum-impulse m=3kg l=1.2m "F_hat=12 N*s"',
     example_result={"omega_1": "2.5 rad/s", "omega_2": "0 rad/s", "v_2": "3 m/s",
