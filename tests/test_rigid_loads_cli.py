@@ -204,11 +204,30 @@ def test_diagram_curves_pass_through_the_section():
     (("rigid-body", "--inertia-tensor", "1, 0, 0; 0, 1, 0; 0, 0, 1.5", "--omega", "0, 0, 1"),
      "--plot: the N, V, M diagrams are drawn for beam-spun-up and rotating-angled-arm; "
      "Euler's equations give one moment, not a diagram"),
+    (("rigid-body", "--scene", "rotating-angled-arm", "m=3kg", "a=1m", "b=0.5m", "x2=0.5m",
+      "M0=25 N*m", "Omega=?"),
+     "--plot: Omega has 2 solutions (Omega_1, Omega_2): give one of them as Omega= to draw "
+     "the diagrams"),
 ])
+
 def test_plot_refusals(tmp_path, words, message):
     target = tmp_path / "p.png"
     assert error_line(invoke(*words, "--plot", str(target))) == "Error: " + message
     assert not target.exists()
+
+
+def test_plot_of_an_inverse_problem(tmp_path):
+    """M0 solved from M at a section: the diagram is drawn with the solved M0 and passes
+    through the given M."""
+    words = ["m=6kg", "l=2m", "x=0.5m", "t=1s", "M=-7.59375 N*m", "M0=?"]
+    r = rigid_body({}, words, scene="beam-spun-up")
+    leg = load_diagram(r, points=5).legs[0]
+    assert leg.M[leg.x.index(0.5)] == pytest.approx(-7.59375, rel=1e-12)
+    assert leg.M[0] == pytest.approx(-12.0, rel=1e-12)              # M(0) = -M0
+    target = tmp_path / "inverse.png"
+    assert invoke("rigid-body", "--scene", "beam-spun-up", *words, "--plot",
+                  str(target)).exit_code == 0
+    assert target.stat().st_size > 10000
 
 
 def test_plot_bad_suffix():

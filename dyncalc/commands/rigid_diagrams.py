@@ -38,10 +38,17 @@ class LoadDiagram:
         self.legs, self.title = legs, title
 
 
-def _si(result: Result, name: str):
-    """A parameter's SI value, given (inputs) or solved for (results); ``None`` if neither."""
+def _si(result: Result, name: str, needed: bool = True):
+    """A parameter's SI value, given (inputs) or solved for (results); ``None`` for an
+    optional one left out. Refuses a needed one solved with several roots."""
     entry = result.inputs.get(name) or result.results.get(name)
-    return None if entry is None else float(entry.si)
+    if entry is not None:
+        return float(entry.si)
+    roots = [n for n in result.results if n.startswith(name + "_") and n[len(name) + 1:].isdigit()]
+    if needed and roots:
+        raise InputError(f"--plot: {name} has {len(roots)} solutions ({', '.join(roots)}): give "
+                         f"one of them as {name}= to draw the diagrams")
+    return None
 
 
 def _grid(length: float, points: int, section: float | None) -> list[float]:
@@ -70,18 +77,19 @@ def load_diagram(result: Result, points: int = 201) -> LoadDiagram:
         raise InputError(f"--plot: the N, V, M diagrams are drawn for "
                          f"{' and '.join(DIAGRAM_SCENES)}; {what}")
     if scene == "beam-spun-up":
-        m, l, M0, t = (_si(result, n) for n in ("m", "l", "M0", "t"))
+        m, l, M0 = (_si(result, n) for n in ("m", "l", "M0"))
+        t = _si(result, "t", needed=False)
         if t is None:
             raise InputError("--plot: beam-spun-up's normal force N grows with t^2: give t= "
                              "to draw the N, V, M diagrams")
-        x = _si(result, "x")
+        x = _si(result, "x", needed=False)
         xs = _grid(l, points, x)
         rows = [beam_loads(m, l, M0, s, t) for s in xs]
         legs = [Leg("beam", "x from the pin A (m)", xs, *map(list, zip(*rows)), section=x)]
         return LoadDiagram(legs, f"beam-spun-up at t = {t:g} s")
     m, a, b, W = (_si(result, n) for n in ("m", "a", "b", "Omega"))
     mu_W2 = m / (a + b) * W * W
-    x1, x2 = _si(result, "x1"), _si(result, "x2")
+    x1, x2 = _si(result, "x1", needed=False), _si(result, "x2", needed=False)
     legs = []
     for name, label, length, section, loads in (
             ("leg b", "x1 from the free end E (m)", b, x1, arm_leg_b),
