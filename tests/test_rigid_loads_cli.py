@@ -209,7 +209,6 @@ def test_diagram_curves_pass_through_the_section():
      "--plot: Omega has 2 solutions (Omega_1, Omega_2): give one of them as Omega= to draw "
      "the diagrams"),
 ])
-
 def test_plot_refusals(tmp_path, words, message):
     target = tmp_path / "p.png"
     assert error_line(invoke(*words, "--plot", str(target))) == "Error: " + message
