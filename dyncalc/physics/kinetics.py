@@ -3,8 +3,11 @@
 Pure functions on pint quantities or SI floats returning an
 :class:`~dyncalc.physics.outcome.Outcome` of SI floats (the ``rigid-body`` command's scenes,
 ../shared/SCENES.md "Rigid-body scenes"). Every formula comes from Newton-Euler applied to
-each body (rope forces eliminated); forces that are always positive are computed in a form
-without cancellation (``S1 = m1 g (r2 (r1 + r2) m2 + J_A) / D`` rather than ``m1 (g + a1)``).
+each body (rope forces eliminated). Each is evaluated in exact rational arithmetic on the
+float inputs (:class:`fractions.Fraction`) and rounded once at the end: every result is the
+float nearest the formula's value at those inputs (``sin``/``cos`` of an incline aside, rounded
+once each), with no overflow midway and no cancellation (``m2 r2 - m1 r1`` is exact, and zero
+exactly at static balance); a result beyond float64 is ``inf`` (warned by the Result).
 
 References
 ----------
@@ -14,6 +17,7 @@ References
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 from ..errors import InputError
 from ..units import (ACCELERATION, ANGLE, IMPULSE, INERTIA, LENGTH, MASS, TORQUE,
@@ -25,6 +29,25 @@ __all__ = ["drum_two_blocks", "wheel_incline_block", "two_drums_rope_drive",
            "direct_central_impact", "double_pendulum_impulse"]
 
 _ROPES = "massless inextensible ropes that do not slip; frictionless axles"
+
+
+def _exact(*values: float) -> list[Fraction]:
+    """The floats as exact fractions (a non-finite input is refused)."""
+    try:
+        return [Fraction(v) for v in values]
+    except (OverflowError, ValueError):
+        raise InputError("every input must be finite") from None
+
+
+def _floats(**values: Fraction) -> dict[str, float]:
+    """Each exact value rounded once to the nearest float (``±inf`` beyond float64)."""
+    out = {}
+    for name, value in values.items():
+        try:
+            out[name] = float(value)
+        except OverflowError:
+            out[name] = math.inf if value > 0 else -math.inf
+    return out
 
 
 @check_units(m1=MASS, m2=MASS, r1=LENGTH, r2=LENGTH, J_A=INERTIA, g=ACCELERATION)
@@ -57,17 +80,16 @@ def drum_two_blocks(m1, m2, r1, r2, J_A, g=9.80665) -> Outcome:
     >>> round(out.values["alpha"], 12), round(out.values["S1"], 12)
     (25.0, 12.5)
     """
-    m1_, m2_, r1_, r2_ = (magnitude(m1, "kg"), magnitude(m2, "kg"), magnitude(r1, "m"),
-                          magnitude(r2, "m"))
-    J, g_ = magnitude(J_A, "kg*m^2"), magnitude(g, "m/s^2")
+    m1_, m2_, r1_, r2_, J, g_ = _exact(
+        magnitude(m1, "kg"), magnitude(m2, "kg"), magnitude(r1, "m"), magnitude(r2, "m"),
+        magnitude(J_A, "kg*m^2"), magnitude(g, "m/s^2"))
     D = J + m1_ * r1_ * r1_ + m2_ * r2_ * r2_
     top = m2_ * r2_ - m1_ * r1_
     alpha = top * g_ / D
-    S1 = m1_ * g_ * (r2_ * (r1_ + r2_) * m2_ + J) / D
-    S2 = m2_ * g_ * (r1_ * (r1_ + r2_) * m1_ + J) / D
-    return Outcome({"alpha": alpha, "a1": r1_ * alpha, "a2": r2_ * alpha, "S1": S1, "S2": S2},
-                   assumptions=[_ROPES],
-                   exact_zeros={"alpha", "a1", "a2"} if top == 0.0 else set())
+    values = _floats(alpha=alpha, a1=r1_ * alpha, a2=r2_ * alpha, S1=m1_ * (g_ + r1_ * alpha),
+                     S2=m2_ * (g_ - r2_ * alpha))
+    return Outcome(values, assumptions=[_ROPES],
+                   exact_zeros={"alpha", "a1", "a2"} if top == 0 else set())
 
 
 @check_units(m1=MASS, m2=MASS, beta=ANGLE, J_A=INERTIA, r=LENGTH, g=ACCELERATION)
@@ -106,19 +128,22 @@ def wheel_incline_block(m1, m2, beta, J_A=None, r=None, kappa=None, g=9.80665) -
     >>> out.values["a"], out.values["S"], out.values["mu_min"]
     (4.0, 6.0, 0.2)
     """
-    m1_, m2_, g_ = magnitude(m1, "kg"), magnitude(m2, "kg"), magnitude(g, "m/s^2")
     b = magnitude(beta, "rad")
-    q = magnitude(J_A, "kg*m^2") / magnitude(r, "m") ** 2 if J_A is not None else kappa * m1_
-    s, c = math.sin(b), math.cos(b)
+    m1_, m2_, g_, s, c = _exact(magnitude(m1, "kg"), magnitude(m2, "kg"),
+                                magnitude(g, "m/s^2"), math.sin(b), math.cos(b))
+    if J_A is not None:
+        J, r_ = _exact(magnitude(J_A, "kg*m^2"), magnitude(r, "m"))
+        q = J / (r_ * r_)
+    else:
+        q = _exact(kappa)[0] * m1_
     total = m1_ + m2_ + q
     top = m2_ - m1_ * s
     a = g_ * top / total
-    S = m2_ * g_ * (m1_ + q + m1_ * s) / total
-    H = q * a
-    N = m1_ * g_ * c
-    zeros = ({"a"} if top == 0.0 else set()) | (
-        {"H", "mu_min"} if top == 0.0 or q == 0.0 else set())
-    return Outcome({"a": a, "S": S, "H": H, "N": N, "mu_min": abs(H) / N}, exact_zeros=zeros,
+    H, N = q * a, m1_ * g_ * c
+    values = _floats(a=a, S=m2_ * g_ * (m1_ + q + m1_ * s) / total, H=H, N=N,
+                     mu_min=abs(H) / N)
+    zeros = ({"a"} if top == 0 else set()) | ({"H", "mu_min"} if top == 0 or q == 0 else set())
+    return Outcome(values, exact_zeros=zeros,
                    assumptions=["rolling without slipping (static friction at least "
                                 "mu_min N); " + _ROPES + "; an ideal pulley"])
 
@@ -158,27 +183,26 @@ def two_drums_rope_drive(m1, m2, r1, r2, J1, J2, M0, g=9.80665) -> Outcome:
     >>> round(out.values["a2"], 12), round(out.values["S2"], 12)
     (10.0, 0.0)
     """
-    m1_, m2_, r1_, r2_ = (magnitude(m1, "kg"), magnitude(m2, "kg"), magnitude(r1, "m"),
-                          magnitude(r2, "m"))
-    J1_, J2_ = magnitude(J1, "kg*m^2"), magnitude(J2, "kg*m^2")
-    M, g_ = magnitude(M0, "N*m"), magnitude(g, "m/s^2")
+    m1_, m2_, r1_, r2_, J1_, J2_, M, g_ = _exact(
+        magnitude(m1, "kg"), magnitude(m2, "kg"), magnitude(r1, "m"), magnitude(r2, "m"),
+        magnitude(J1, "kg*m^2"), magnitude(J2, "kg*m^2"), magnitude(M0, "N*m"),
+        magnitude(g, "m/s^2"))
     D = m2_ * r2_ * r2_ + m1_ * r1_ * r1_ + J1_ + J2_
     top = g_ * (m2_ * r2_ * r2_ - m1_ * r1_ * r2_) + M * r2_
     a2 = top / D
     a1 = r1_ / r2_ * a2
-    S1 = m1_ * (g_ + a1)
-    S2 = m2_ * (g_ - a2)
-    zeros = {"a2", "a1", "alpha"} if top == 0.0 else set()
-    zeros |= {name for name, value in (("S1", S1), ("S2", S2)) if value == 0.0}
+    S1, S2 = m1_ * (g_ + a1), m2_ * (g_ - a2)
+    values = _floats(a2=a2, a1=a1, alpha=a2 / r2_, S1=S1, S2=S2)
+    zeros = {"a2", "a1", "alpha"} if top == 0 else set()
+    zeros |= {name for name, value in (("S1", S1), ("S2", S2)) if value == 0}
     warnings = []
-    if S2 < 0.0:
-        warnings.append(f"the rope of block 2 goes slack: a2 = {a2:.6g} m/s^2 exceeds g; "
-                        "block 2 falls freely and these results do not hold")
-    if S1 < 0.0:
-        warnings.append(f"the rope of block 1 goes slack: a1 = {a1:.6g} m/s^2 is below -g; "
-                        "block 1 falls freely and these results do not hold")
-    return Outcome({"a2": a2, "a1": a1, "alpha": a2 / r2_, "S1": S1, "S2": S2},
-                   warnings=warnings, exact_zeros=zeros,
+    if S2 < 0:
+        warnings.append(f"the rope of block 2 goes slack: a2 = {values['a2']:.6g} m/s^2 "
+                        "exceeds g; block 2 falls freely and these results do not hold")
+    if S1 < 0:
+        warnings.append(f"the rope of block 1 goes slack: a1 = {values['a1']:.6g} m/s^2 is "
+                        "below -g; block 1 falls freely and these results do not hold")
+    return Outcome(values, warnings=warnings, exact_zeros=zeros,
                    assumptions=[_ROPES + "; the coupling rope taut"])
 
 
@@ -213,23 +237,22 @@ def direct_central_impact(m1, m2, v1, v2, e) -> Outcome:
     >>> out.values["v1_post"], out.values["v2_post"], out.values["dE"]
     (0.0, 2.0, 0.0)
     """
-    m1_, m2_ = magnitude(m1, "kg"), magnitude(m2, "kg")
-    v1_, v2_, e_ = magnitude(v1, "m/s"), magnitude(v2, "m/s"), float(e)
+    m1_, m2_, v1_, v2_, e_ = _exact(magnitude(m1, "kg"), magnitude(m2, "kg"),
+                                    magnitude(v1, "m/s"), magnitude(v2, "m/s"), float(e))
     if not v1_ > v2_:
         raise InputError("direct-central-impact needs v1 > v2: body 1 must catch body 2 "
                          "(otherwise there is no impact)")
     if not 0.0 <= e_ <= 1.0:
         raise InputError(f"direct-central-impact needs 0 <= e <= 1 (e = 0 plastic, 1 elastic); "
-                         f"got e = {e_:g}")
+                         f"got e = {float(e_):g}")
     total, dv = m1_ + m2_, v1_ - v2_
     v_c = (m1_ * v1_ + m2_ * v2_) / total
-    mu = m1_ / total * m2_  # the reduced mass
-    values = {"v_c": v_c, "v1_post": v_c - e_ * (m2_ / total) * dv,
-              "v2_post": v_c + e_ * (m1_ / total) * dv, "F_hat": (1.0 + e_) * mu * dv,
-              "dE": (1.0 - e_) * (1.0 + e_) * mu * dv * dv / 2.0}
-    # a velocity of zero is a cancellation (the bodies stop), no energy is lost at e = 1
-    zeros = {n for n in ("v_c", "v1_post", "v2_post") if values[n] == 0.0}
-    return Outcome(values, exact_zeros=zeros | ({"dE"} if e_ == 1.0 else set()),
+    mu = m1_ * m2_ / total  # the reduced mass
+    exact = {"v_c": v_c, "v1_post": v_c - e_ * m2_ * dv / total,
+             "v2_post": v_c + e_ * m1_ * dv / total, "F_hat": (1 + e_) * mu * dv,
+             "dE": (1 - e_ * e_) * mu * dv * dv / 2}
+    zeros = {name for name, value in exact.items() if value == 0}  # zero by the physics
+    return Outcome(_floats(**exact), exact_zeros=zeros,
                    assumptions=["a straight central impact of smooth bodies without "
                                 "rotation; other forces are negligible during the impact"])
 
@@ -267,20 +290,20 @@ def double_pendulum_impulse(m, l, F_hat, d=None) -> Outcome:
     >>> [round(out.values[k], 12) for k in ("omega_1", "omega_2", "B_hat", "A_hat")]
     [6.0, 0.0, 2.0, 1.0]
     """
-    m_, l_, F = magnitude(m, "kg"), magnitude(l, "m"), magnitude(F_hat, "N*s")
-    d_0 = 5.0 * l_ / 8.0
-    d_ = d_0 if d is None else magnitude(d, "m")
-    if not 0.0 <= d_ <= l_:
+    m_, l_, F = _exact(magnitude(m, "kg"), magnitude(l, "m"), magnitude(F_hat, "N*s"))
+    d_0 = 5 * l_ / 8
+    d_ = d_0 if d is None else _exact(magnitude(d, "m"))[0]
+    if not 0 <= d_ <= l_:
         raise InputError("double-pendulum-impulse needs 0 <= d <= l (the blow strikes bar 2); "
-                         f"got d = {d_:g} m with l = {l_:g} m")
-    upper, lower = 3.0 * d_ - l_, 5.0 * l_ - 8.0 * d_
-    omega_1 = 6.0 * F * upper / (7.0 * m_ * l_ * l_)
-    omega_2 = 6.0 * F * lower / (7.0 * m_ * l_ * l_)
-    B_hat = 2.0 * F * upper / (7.0 * l_)
-    return Outcome({"omega_1": omega_1, "omega_2": omega_2,
-                    "v_2": 3.0 * F * (3.0 * l_ - 2.0 * d_) / (7.0 * m_ * l_),
-                    "A_hat": B_hat / 2.0, "B_hat": B_hat, "d_0": d_0, "d_A0": l_ / 3.0},
-                   exact_zeros=({"omega_2"} if lower == 0.0 else set())
-                   | ({"omega_1", "A_hat", "B_hat"} if upper == 0.0 else set()),
+                         f"got d = {float(d_):g} m with l = {float(l_):g} m")
+    upper, lower = 3 * d_ - l_, 5 * l_ - 8 * d_
+    B_hat = 2 * F * upper / (7 * l_)
+    values = _floats(omega_1=6 * F * upper / (7 * m_ * l_ * l_),
+                     omega_2=6 * F * lower / (7 * m_ * l_ * l_),
+                     v_2=3 * F * (3 * l_ - 2 * d_) / (7 * m_ * l_), A_hat=B_hat / 2, B_hat=B_hat,
+                     d_0=d_0, d_A0=l_ / 3)
+    return Outcome(values,
+                   exact_zeros=({"omega_2"} if lower == 0 else set())
+                   | ({"omega_1", "A_hat", "B_hat"} if upper == 0 else set()),
                    assumptions=["uniform thin bars; the blow is short, so the bars do not "
                                 "move during it and weight gives no impulse"])
