@@ -39,9 +39,12 @@ def values(line, monkeypatch, capsys) -> list[str]:
 
 
 def test_scene_names_only_those_the_command_takes(monkeypatch, capsys):
-    from dyncalc.scenes import scene_names
+    from dyncalc.commands.natural_frequency import natural_scene_names
+    from dyncalc.scenes.kinetics import kinetics_scene_names
 
-    assert values("dyncalc natural-frequency --scene ", monkeypatch, capsys) == scene_names()
+    assert values("dyncalc natural-frequency --scene ", monkeypatch, capsys) == \
+        natural_scene_names()
+    assert values("dyncalc rigid-body --scene ", monkeypatch, capsys) == kinetics_scene_names()
     assert values("dyncalc natural-frequency --scene pend", monkeypatch, capsys) == [
         "pendulum", "pendulum-accelerating-support", "pendulum-on-rotating-disk",
         "pendulum-spring-dashpot", "pendulum-on-sliding-block"]
@@ -101,7 +104,7 @@ def test_files(line, monkeypatch, capsys):
 
 def test_scenes_command_option_and_zsh_protocol(monkeypatch, capsys):
     assert values("dyncalc scenes --command ", monkeypatch, capsys) == [
-        "natural-frequency", "damping-ratio", "forced-response", "modes", "eom"]
+        "natural-frequency", "damping-ratio", "forced-response", "modes", "rigid-body", "eom"]
     assert complete("dyncalc damping-ratio --scene rod", monkeypatch, capsys, "zsh") == [
         ("plain", "rod-in-fluid")]
 
@@ -134,13 +137,20 @@ def test_every_suggested_unit_is_taken_by_unit(monkeypatch, capsys):
             args = ["damping-ratio", "--c", "4N*s/m", "--k", "100N/m", "--m", "1kg"]
         if command == "coriolis":  # with the force
             args += ["--mass", "2kg"]
-        result = invoke(*args, "--json")
-        assert result.exit_code == 0, (args, result.stderr)
-        for name in json.loads(result.stdout)["results"]:
-            offered = values(f"dyncalc {shlex.join(args)} --unit {name}=", monkeypatch,
-                             capsys)
-            for item in offered:
-                shown = invoke(*args, "--unit", item)
-                assert shown.exit_code == 0, (args, item, shown.stderr)
-                tried.add(item.partition("=")[2])
+        forms = [args]
+        if command == "rigid-body":  # an impact (N*s, J) and Euler mode (N*m, kg*m^2/s)
+            forms += [["rigid-body", "--scene", "direct-central-impact", "m1=2kg", "m2=3kg",
+                       "v1=4m/s", "v2=-1m/s", "e=0.6"],
+                      ["rigid-body", "--inertia-tensor", "1,0,0;0,1,0;0,0,2", "--omega",
+                       "2,0,3", "--alpha", "0,0,1"]]
+        for args in forms:
+            result = invoke(*args, "--json")
+            assert result.exit_code == 0, (args, result.stderr)
+            for name in json.loads(result.stdout)["results"]:
+                offered = values(f"dyncalc {shlex.join(args)} --unit {name}=", monkeypatch,
+                                 capsys)
+                for item in offered:
+                    shown = invoke(*args, "--unit", item)
+                    assert shown.exit_code == 0, (args, item, shown.stderr)
+                    tried.add(item.partition("=")[2])
     assert tried == {u for units in COMMON_UNITS.values() for u in units}

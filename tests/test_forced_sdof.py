@@ -155,11 +155,13 @@ def _drive(name, rng):
 
 def test_every_one_degree_scene_is_driven_or_refused_with_its_reason():
     """The catalog split: a forced scene, a driven variant, a scene driven on its coordinate,
-    or one with several degrees of freedom (refused)."""
+    or one with several degrees of freedom or a rigid-body scene (refused)."""
+    from dyncalc.scenes.kinetics import is_kinetics_scene
+
     forced = set(forced_scene_names())
     for name, scene in catalog().items():
         several = scene.matrices is not None  # served by modes: several degrees of freedom
-        assert (name in forced) is not several, name
+        assert (name in forced) is not (several or is_kinetics_scene(name)), name
         if name in forced and name not in DRIVEN and \
                 scene.compute.__module__ != "dyncalc.physics.forced_scenes":
             assert name in COORDINATES

@@ -185,6 +185,11 @@ COMMON_UNITS: dict[str, tuple[str, ...]] = {
     "rad": ("rad", "deg"),
     "kg": ("kg", "g", "t", "lb"),
     "kg*m^2": ("kg*m^2", "g*cm^2", "kg*mm^2", "lb*ft^2", "lb*in^2"),
+    "rad/s^2": ("rad/s^2", "deg/s^2", "rpm/s"),
+    "N*m": ("N*m", "kN*m", "N*mm", "lbf*ft", "lbf*in"),
+    "N*s": ("N*s", "kN*s", "lbf*s"),
+    "J": ("J", "kJ", "N*m", "ft*lbf"),
+    "kg*m^2/s": ("kg*m^2/s", "N*m*s", "lb*ft^2/s"),
 }
 
 

@@ -142,9 +142,9 @@ COMMAND = Command(
 
     \b
     Examples:
-      dyncalc rigid-body --scene drum-two-blocks m1=20kg m2=15kg r1=0.2m r2=0.4m \\
-          "J_A=2 kg*m^2"
+      dyncalc rigid-body --scene E4.10 m1=20kg m2=15kg r1=0.2m r2=0.4m "J_A=2 kg*m^2"
       dyncalc rigid-body --scene E4.10 m1=20kg m2=15kg r1=0.2m r2=0.4m alpha=3rad/s^2 J_A=?
+      dyncalc rigid-body --scene direct-central-impact m1=2kg m2=3kg v1=4m/s v2=-1m/s e=0.6
       dyncalc rigid-body --inertia-tensor "1, 0, 0; 0, 1, 0; 0, 0, 2 kg*m^2" \\
           --omega "2, 0, 3 rad/s" --alpha "0, 0, 1 rad/s^2"
       dyncalc rigid-body --inertia-tensor "$(dyncalc inertia 'rod(m=2kg, l=1m)' \\
