@@ -45,6 +45,8 @@ COMMANDS = {
                         "--Omega", "3 rad/s"],
     "modes": ["modes", "--M", "2, 0; 0, 1 kg", "--K", "300, -100; -100, 100 N/m"],
     "inertia": ["inertia", "disk(m=2kg, r=0.1m)", "-disk(m=0.5kg, r=5cm)"],
+    "rigid-body": ["rigid-body", "--scene", "drum-two-blocks", "m1=20kg", "m2=15kg", "r1=0.2m",
+                   "r2=0.4m", "J_A=2kg*m^2"],
     "eom": ["eom", "--coords", "x", "--T", "m*x'^2/2", "--V", "k*x^2/2", "m=2kg", "k=2N/m"],
     "scenes": ["scenes"],
 }

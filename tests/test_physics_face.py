@@ -31,6 +31,13 @@ def _example_texts(scene) -> dict[str, str]:
         texts["r"] = "0.3 m"
     if "mu" in texts:
         texts["mu"] = "0.4"
+    for p in scene.params:  # a required angle (an incline), given in radians
+        if p.dim is ANGLE and p.default is None and not p.optional:
+            texts[p.name] = "0.3 rad"
+    if "J_A" in texts and scene.param("r") is not None and "r" not in texts:
+        texts["r"] = "0.3 m"  # a wheel's J_A goes with its radius
+    if "v1" in texts and "v2" in texts:
+        texts["v2"] = "-0.5 m/s"  # an impact: body 1 catches body 2
     return texts
 
 
