@@ -1094,6 +1094,8 @@ ZETA_BOUND = Bound(
 
 def scene_bound(name: str, result: str, ref: dict, errors: dict):
     """The allowed error (ulp) of one result of one case, and its reason when it is not 4."""
+    if name in LOAD_BOUNDS:
+        return LOAD_BOUNDS[name](result, ref)
     if name == "wheel-incline-block" and result != "N":
         return wheel_bound(result, ref, errors["_values"])
     zeta = ref.get("zeta")
@@ -1102,6 +1104,130 @@ def scene_bound(name: str, result: str, ref: dict, errors: dict):
         amplification = float(zeta ** 2 / (1 - zeta ** 2))
         return GOAL + 2.0 * amplification * errors["zeta"], ZETA_BOUND
     return GOAL, None
+
+
+# --- the rigid-body load scenes (issue 21, part 2b) --------------------------------------------
+
+def _signed(d: Draw, name: str, unit: str, low: float = -40, high: float = 40) -> float:
+    value = magnitude(d.rng, d.extreme, low, high) * d.rng.choice((-1.0, 1.0))
+    return d.add(name, value, unit)
+
+
+def s_angled_bar_on_shaft(d):
+    d.positive("m", "kg", -60, 60), d.positive("l", "m", -60, 60)
+    _signed(d, "M0", "N*m", -60, 60), _signed(d, "omega", "rad/s", -60, 60)
+
+
+def r_angled_bar_on_shaft(v):
+    m, l, M0, w = v["m"], v["l"], v["M0"], v["omega"]
+    return {"alpha": 9 * M0 / (20 * m * l * l), "A_xi": -3 * m * l * w * w / 4,
+            "A_eta": 27 * M0 / (80 * l), "B_xi": -7 * m * l * w * w / 12,
+            "B_eta": 21 * M0 / (80 * l)}
+
+
+def s_beam_spun_up(d):
+    """x over the whole beam, a tenth of the cases within 1e-12 l of the free end (where
+    1 - (x/l)^2 cancels)."""
+    l = d.positive("l", "m", -40, 40)
+    d.positive("m", "kg", -40, 40), _signed(d, "M0", "N*m")
+    u = d.rng.random()
+    d.add("x", l * (1.0 - log_uniform(d.rng, -12, -1)) if u < 0.1 else l * d.rng.random(), "m")
+    d.positive("t", "s", -40, 40)
+
+
+def r_beam_spun_up(v):
+    m, l, M0, x, t = v["m"], v["l"], v["M0"], v["x"], v["t"]
+    alpha = 3 * M0 / (m * l * l)
+    return {"alpha": alpha, "omega": alpha * t, "V": 3 * M0 / (2 * l) * (1 - (x / l) ** 2),
+            "M": -M0 * (1 - x / l) ** 2 * (1 + x / (2 * l)),
+            "N": 9 * M0 ** 2 * t ** 2 / (2 * m * l ** 3) * (1 - (x / l) ** 2)}
+
+
+def s_rotating_angled_arm(d):
+    a, b = d.positive("a", "m", -40, 40), d.positive("b", "m", -40, 40)
+    d.positive("m", "kg", -40, 40), _signed(d, "Omega", "rad/s")
+    if d.rng.random() < 0.5:
+        d.add("x1", b * d.rng.random(), "m")
+    else:
+        d.add("x2", a * d.rng.random(), "m")
+
+
+def r_rotating_angled_arm(v):
+    a, b = v["a"], v["b"]
+    q = v["m"] / (a + b) * v["Omega"] ** 2
+    out = {"N0": q * a * b, "V0": -q * b * b / 2, "M0": q * a * b * b / 2}
+    if "x1" in v:
+        x = v["x1"]
+        out.update(N=q * (b * x - x * x / 2), V=q * a * x, M=q * a * x * x / 2)
+    else:
+        x = v["x2"]
+        out.update(N=q * (a * b + a * x - x * x / 2), V=-q * b * b / 2, M=q * b * b * (a - x) / 2)
+    return out
+
+
+def s_precessing_shaft(d):
+    """J2 left out (J2 = J3) in a quarter of the cases, psi in three quarters; harmonic turning
+    (alpha0, t) in half of them."""
+    d.positive("J1", "kg*m^2", -40, 40), d.positive("J3", "kg*m^2", -40, 40)
+    if d.rng.random() < 0.75:
+        d.positive("J2", "kg*m^2", -40, 40)
+    _signed(d, "omega0", "rad/s"), _signed(d, "Omega", "rad/s")
+    if d.rng.random() < 0.75:
+        d.add("psi", d.rng.uniform(-4.0, 4.0), "rad")
+    if d.rng.random() < 0.5:
+        d.add("alpha0", d.rng.uniform(0.01, 1.5), "rad")
+        d.add("t", abs(d.rng.uniform(0.0, 20.0) / float(d.values["Omega"])), "s")
+
+
+def r_precessing_shaft(v):
+    """The results and, under ``_terms_NAME``, the terms each result sums and the turning
+    phase (for the bound)."""
+    J1, J3 = v["J1"], v["J3"]
+    J2 = v.get("J2", J3)
+    w0, W, psi = v["omega0"], v["Omega"], v.get("psi", MP(0))
+    if "alpha0" in v:
+        phase = W * v["t"]
+        rate, accel = v["alpha0"] * W * mpmath.cos(phase), -v["alpha0"] * W * W * mpmath.sin(phase)
+    else:
+        phase, rate, accel = None, W, MP(0)
+    d, s2, c2 = J2 - J3, mpmath.sin(2 * psi), mpmath.cos(2 * psi)
+    terms = {"M1": [-d * s2 * rate * rate / 2],
+             "M2": [J1 * w0 * rate, d * w0 * rate * c2, d * accel * s2 / 2],
+             "M3": [J2 * mpmath.sin(psi) ** 2 * accel, J3 * mpmath.cos(psi) ** 2 * accel,
+                    d * w0 * rate * s2],
+             "alpha_dot": [rate], "alpha_ddot": [accel]}
+    out = {name: sum(parts) for name, parts in terms.items()}
+    out.update({f"_terms_{name}": (parts, phase) for name, parts in terms.items()})
+    return out
+
+
+PRECESSION_BOUND = Bound(
+    "(4 + |p tan p| + |p cot p|) sum|terms|/|M|",
+    "M1, M2, M3 are sums of terms each correct to a few ulp; where the terms cancel the "
+    "error is relative to the largest (the condition number sum|terms|/|M|); in harmonic "
+    "turning cos and sin of the rounded phase p = Omega t carry |p tan p| and |p cot p| ulp")
+
+
+def _precession_bound(result: str, ref: dict):
+    parts, phase = ref[f"_terms_{result}"]
+    total = abs(ref[result])
+    if total == 0:
+        return GOAL, None
+    condition = float(sum(abs(p) for p in parts) / total)
+    turning = 0.0 if phase is None else float(abs(phase * mpmath.tan(phase))
+                                             + abs(phase / mpmath.tan(phase)))
+    allowed = (GOAL + turning) * condition
+    return (allowed, PRECESSION_BOUND) if allowed > GOAL else (GOAL, None)
+
+
+SCENES.update({
+    "angled-bar-on-shaft": (s_angled_bar_on_shaft, r_angled_bar_on_shaft, None),
+    "precessing-shaft": (s_precessing_shaft, r_precessing_shaft, None),
+    "beam-spun-up": (s_beam_spun_up, r_beam_spun_up, None),
+    "rotating-angled-arm": (s_rotating_angled_arm, r_rotating_angled_arm, None),
+})
+#: Scene -> its results' bound function ``(result, ref) -> (allowed, Bound or None)``.
+LOAD_BOUNDS = {"precessing-shaft": _precession_bound}
 
 
 def test_catalog_is_covered():

@@ -167,7 +167,8 @@ def test_eom_derives_the_same_acceleration(scene, words, eom_state, ours, theirs
 
 
 RIGID = ["drum-two-blocks", "wheel-incline-block", "two-drums-rope-drive",
-         "direct-central-impact", "double-pendulum-impulse"]
+         "direct-central-impact", "double-pendulum-impulse", "angled-bar-on-shaft",
+         "precessing-shaft", "beam-spun-up", "rotating-angled-arm"]
 
 
 def test_only_rigid_body_offers_the_rigid_body_scenes():

@@ -28,7 +28,8 @@ SCENES_MD = {
     "pendulum-on-sliding-block",
     # rigid-body scenes (the rigid-body command)
     "drum-two-blocks", "wheel-incline-block", "two-drums-rope-drive", "direct-central-impact",
-    "double-pendulum-impulse",
+    "double-pendulum-impulse", "angled-bar-on-shaft", "precessing-shaft", "beam-spun-up",
+    "rotating-angled-arm",
 }
 
 #: The scenes natural-frequency computes (disk-on-swinging-bar's example is eom's: no

@@ -10,7 +10,7 @@ import numpy as np
 from ..errors import InputError
 from ..result import Result, format_number
 
-__all__ = ["plot_decay", "plot_forced", "PLOT_FORMATS"]
+__all__ = ["plot_decay", "plot_forced", "plot_loads", "PLOT_FORMATS"]
 
 PLOT_FORMATS = (".png", ".svg", ".pdf")
 
@@ -240,3 +240,46 @@ def _save(fig, target: Path, path: str) -> None:
         raise InputError(f"--plot: cannot write {path[:80]!r}: {exc.strerror or exc}") from None
     except ValueError as exc:  # a NUL in the path ("embedded null byte")
         raise InputError(f"--plot: cannot write {path[:80]!r}: {exc}") from None
+
+
+def plot_loads(result: Result, path: str) -> str:
+    """Draw the N, V, M diagrams of a ``rigid-body`` result (``beam-spun-up``,
+    ``rotating-angled-arm``) into ``path`` (PNG, SVG or PDF): three stacked axes against the
+    position along the bar, one column per leg, the section asked for marked (the curves of
+    :func:`dyncalc.commands.rigid_diagrams.load_diagram`). Returns the path written."""
+    from ..commands.rigid_diagrams import load_diagram
+
+    target = _target(path)
+    diagram = load_diagram(result)
+    Figure, FigureCanvasAgg = _matplotlib()
+    columns = len(diagram.legs)
+    fig = Figure(figsize=(4.8 * columns + 1.0, 7.5), dpi=100, layout="constrained")
+    FigureCanvasAgg(fig)
+    rows = (("N", "normal force N (N)", "N"), ("V", "shear force V (N)", "N"),
+            ("M", "bending moment M (N m)", "N m"))
+    for j, leg in enumerate(diagram.legs):
+        top = None
+        for i, (name, label, unit) in enumerate(rows):
+            ax = fig.add_subplot(3, columns, i * columns + j + 1, sharex=top)
+            top = top or ax
+            values = getattr(leg, name)
+            ax.plot(leg.x, values, color="tab:blue")
+            ax.fill_between(leg.x, values, 0.0, color="tab:blue", alpha=0.15)
+            ax.axhline(0.0, color="black", linewidth=0.6)
+            if leg.section is not None:
+                at = leg.x.index(leg.section)
+                ax.axvline(leg.section, color="tab:red", linewidth=0.8, linestyle="--")
+                ax.plot([leg.section], [values[at]], "o", color="tab:red",
+                        label=f"{name} = {format_number(values[at], 4)} {unit} at the "
+                              "section")
+                ax.legend(fontsize=8)
+            if j == 0:
+                ax.set_ylabel(label)
+            if i == 0 and columns > 1:
+                ax.set_title(leg.name, fontsize=10)
+            ax.grid(True, alpha=0.3)
+        ax.set_xlabel(leg.label)
+    fig.suptitle(f"stress resultants: {diagram.title}", fontsize=11)
+    _save(fig, target, path)
+    result.extra["plot"] = str(target)
+    return str(target)

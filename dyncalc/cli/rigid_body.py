@@ -12,6 +12,13 @@ def _rows(settings, out):
     return RigidRows(scene=settings["scene"], rtol=out.rtol, strict=out.strict)
 
 
-rigid_body = build_command(COMMAND, rows=_rows)
+def _plot(result, values) -> None:
+    if values.get("plot") is not None:
+        from .plot import plot_loads
+
+        plot_loads(result, values["plot"])
+
+
+rigid_body = build_command(COMMAND, rows=_rows, after=_plot)
 
 COMMANDS = [rigid_body]

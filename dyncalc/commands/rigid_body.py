@@ -161,6 +161,10 @@ COMMAND = Command(
                   "'0, 0, 2 rad/s' (default zero).", "VEC", kind="text"),
         Parameter("alpha", ANGULAR_ACCELERATION, "Angular acceleration in the body's axes, "
                   "e.g. '0, 0, 1 rad/s^2' (default zero).", "VEC", kind="text"),
+        Parameter("plot", None, "Draw the N, V, M diagrams along the bar (beam-spun-up, with "
+                  "t=; rotating-angled-arm, both legs), the section x= marked, into FILE "
+                  "(.png, .svg or .pdf); needs matplotlib (the plot extra).", "FILE.png",
+                  kind="after"),
     ),
     (
         ResultName("M", "M", TORQUE.si, "moment on the body, J alpha + omega x (J omega) "

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+from .rigid_load_slips import LOAD_SLIPS
+
 __all__ = ["SLIPS", "add_slips"]
 
 
@@ -76,6 +78,7 @@ SLIPS = {"drum-two-blocks": _drum_two_blocks, "wheel-incline-block": _wheel_incl
          "two-drums-rope-drive": _two_drums_rope_drive,
          "direct-central-impact": _direct_central_impact,
          "double-pendulum-impulse": _double_pendulum_impulse}
+SLIPS.update(LOAD_SLIPS)
 
 
 def add_slips(scene: str, result) -> None:
