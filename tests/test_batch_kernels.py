@@ -250,7 +250,10 @@ COMMAND_FILES = {
     "forced-response": (batch.ForcedRows, ["k,m,zeta,F0,Omega", "omega,m,zeta,base,f_exc",
                                            "k [kN/m],m,c,unbalance,Omega [rpm]",
                                            "omega,zeta,base_accel,Omega",
-                                           "k,m,Q,F0,Omega,x0,v0,t"]),
+                                           "k,m,Q,F0,Omega,x0,v0,t",
+                                           "omega,m,zeta,base_accel,f_exc,x0,t",
+                                           "omega [rpm],m,c,unbalance,Omega,v0,t [ms]",
+                                           "k,m,zeta,base,f_exc,x0,v0,t"]),
 }
 
 _VECTORS = {"omega", "vr", "r", "alpha", "a0", "ar"}

@@ -96,3 +96,37 @@ def test_unbalance_far_above_resonance_keeps_its_limits():
     assert got["V"] == pytest.approx(float(V), rel=1e-15)
     assert got["TR"] == pytest.approx(float(TR), rel=1e-12)   # a subnormal: ~50 bits
     assert got["F_T"] == pytest.approx(float(F_T), rel=1e-15)
+
+
+def test_unbalance_at_rest_is_no_motion():
+    """Omega = 0 with an unbalance: no unbalance force (m_u e Omega^2 = 0), so X = V = F_T = 0
+    and TR = 1; it used to end in an internal error (ZeroDivisionError in V = eta/(D/eta))."""
+    result = invoke("forced-response", "--omega", "10rad/s", "--m", "1kg", "--zeta", "0.1",
+                    "--unbalance", "1kg*m", "--Omega", "0rad/s", "--json")
+    assert result.exit_code == 0, result.stderr
+    import json
+    got = json.loads(result.stdout)["results"]
+    assert [got[n]["value"] for n in ("X", "V", "F_T", "TR")] == [0.0, 0.0, 0.0, 1.0]
+    assert got["V_res"]["value"] == pytest.approx(1 / (2 * 0.1), rel=1e-15)
+
+
+def test_heavily_overdamped_transient_keeps_its_slow_rate():
+    """zeta = 1e10: the slow rate zeta omega - omega sqrt(zeta^2 - 1) cancelled to 0 (and at
+    zeta about 1e303 went negative and exp overflowed: an internal error); now
+    omega/(zeta + sqrt(zeta^2 - 1)). Against mpmath at 50 digits."""
+    import mpmath
+
+    from dyncalc.physics.forced import transient
+
+    mpmath.mp.dps = 50
+    z, w, x0, t = mpmath.mpf(10) ** 10, mpmath.mpf(1), mpmath.mpf(1), mpmath.mpf(10) ** 10
+    ws = w * mpmath.sqrt(z * z - 1)
+    slow, fast = mpmath.exp(-(z * w - ws) * t), mpmath.exp(-(z * w + ws) * t)
+    b = z * w * x0
+    ref = x0 * (slow + fast) / 2 + b * (slow - fast) / (2 * ws)
+    assert transient(1.0, 1e10, 1.0, 0.0, 1e10) == pytest.approx(float(ref), rel=1e-9)
+    result = invoke("forced-response", "--omega", "16.4rpm", "--m", "1e-300kg", "--c",
+                    "40N*s/m", "--unbalance", "13.9kg*m", "--Omega", "3.08rad/s", "--v0",
+                    "0.18m/s", "--t", "1.8ms", "--value", "x")
+    assert result.exit_code == 0, result.stderr
+    assert math.isfinite(float(result.stdout))
