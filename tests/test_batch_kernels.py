@@ -322,7 +322,10 @@ ONE_OFF_FILES = {
 
 
 def _coverage(spec, header: str, rows: list[str]) -> tuple[set, set]:
-    """(rows the vectorised path takes, rows the one-off computes with no warning)."""
+    """(rows the vectorised path takes, rows the one-off computes with no warning, or with
+    only the warning a whole vectorised block carries: forced-response undamped)."""
+    from dyncalc.physics.forced import UNDAMPED_WARNING
+
     import csv
 
     parsed = list(csv.reader(io.StringIO("\n".join(rows))))
@@ -335,7 +338,7 @@ def _coverage(spec, header: str, rows: list[str]) -> tuple[set, set]:
         texts = {c.key: batch.with_header_unit(row[c.index].strip(), c.unit)
                  for c in columns if row[c.index].strip()}
         try:
-            if not spec.compute(texts, {}).warnings:
+            if spec.compute(texts, {}).warnings in ([], [UNDAMPED_WARNING]):
                 clean.add(i)
         except InputError:
             pass

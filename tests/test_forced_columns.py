@@ -153,7 +153,7 @@ def test_outside_the_domain_is_left_to_the_one_off():
 def test_forms_the_kernel_does_not_take():
     base = {"k": np.array([1.0]), "m": np.array([1.0]), "F0": np.array([1.0]),
             "Omega": np.array([2.0])}
-    assert forced_columns(base) is None                                  # undamped: warns
+    assert forced_columns({**base, "base": np.array([1.0])}) is None     # two excitations
     assert forced_columns({**base, "zeta": np.array([0.1]), "x0": np.array([1.0])}) is None
 
 
@@ -221,3 +221,48 @@ def test_transient_branches_bit_for_bit():
         band = abs((1 - zeta) * (1 + zeta)) <= CRITICAL_BAND
         branches.add("t0" if t == 0 else "critical" if band else "under" if zeta < 1 else "over")
     assert branches == {"t0", "critical", "under", "over"}
+
+
+def one_off_undamped(row: dict):
+    """The one-off's values where its only warning is that the undamped resonance results
+    are unbounded (what the kernel answers for an undamped block), else None."""
+    from dyncalc.physics.forced import UNDAMPED_WARNING
+
+    try:
+        out = forced_response(**row)
+    except (InputError, PhysicsError, ArithmeticError, ValueError):
+        return None
+    if out.warnings != [UNDAMPED_WARNING] or not all(
+            math.isfinite(v) and (v != 0.0 or n in ("zeta", "phi"))
+            for n, v in out.values.items()):
+        return None
+    return out.values
+
+
+@pytest.mark.parametrize("form", FORMS[::3], ids=["-".join(f) for f in FORMS[::3]])
+@pytest.mark.parametrize("timed", [False, True])
+def test_undamped_rows_bit_for_bit(form, timed):
+    """No damping given: the one-off's values (zeta 0, phi 0 or pi, no resonance results)
+    to the bit, rows a hair from resonance (refused there) among them."""
+    rng = random.Random(f"undamped-{timed}-" + "-".join(form))
+    rows = rows_for(form, rng, 150) + rows_for(form, rng, 50, near=True)
+    for row in rows:
+        for name in ("zeta", "c", "Q"):
+            row.pop(name, None)
+    if timed:
+        rows = with_start(rows, rng)
+    given = {name: np.array([r[name] for r in rows]) for name in rows[0]}
+    values, exact = forced_columns(given)
+    assert "X_res" not in values and "Q" not in values
+    phis = set()
+    for i, row in enumerate(rows):
+        ref = one_off_undamped(row)
+        assert bool(exact[i]) == (ref is not None), row
+        if ref is None:
+            continue
+        got = {n: float(v[i]) for n, v in values.items() if not math.isnan(v[i])}
+        assert set(got) == set(ref), row
+        for name, value in ref.items():
+            assert bits(got[name]) == bits(value), (name, row, got[name], value)
+        phis.add(got["phi"])
+    assert sum(exact) > 120 and phis >= {0.0, math.pi}

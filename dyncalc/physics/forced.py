@@ -41,13 +41,15 @@ from .outcome import CRITICAL_BAND, Outcome
 
 __all__ = ["EXCITATIONS", "resonance_gap", "phase", "magnification", "transmissibility",
            "peak", "half_power", "transient", "total_response", "forced_response",
-           "RESONANCE_GAP", "SQRT_HALF"]
+           "RESONANCE_GAP", "SQRT_HALF", "UNDAMPED_WARNING"]
 
 #: The excitation kinds, as the option names say them.
 EXCITATIONS = ("force", "base", "base-accel", "unbalance")
 #: ``|1 - eta^2|`` at or below which an undamped oscillator is at resonance (the rounding of
 #: the inputs: Omega, k and m each carry half an ulp).
 RESONANCE_GAP = 8.0 * 2.0 ** -52
+#: The warning of every undamped response away from resonance.
+UNDAMPED_WARNING = "undamped: X_res, the peak and the bandwidth are unbounded; not given"
 #: ``1/sqrt(2)``: above this damping ratio the force response has no peak.
 SQRT_HALF = math.sqrt(0.5)
 
@@ -555,7 +557,7 @@ def _steady(values, kind, amplitude, gap, zeta, eta, w, W, k, m, static, warning
             warnings.append(f"zeta = {zeta:.6g} >= 1/sqrt(2): the amplitude has no resonance "
                             f"peak; it is largest {where}")
     else:
-        warnings.append("undamped: X_res, the peak and the bandwidth are unbounded; not given")
+        warnings.append(UNDAMPED_WARNING)
     values["Omega_iso"] = math.sqrt(2.0) * w
     if TR < 1.0:
         values["isolation"] = 1.0 - TR

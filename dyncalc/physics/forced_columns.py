@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 
 from ..lazy import numpy as np
+from .forced import RESONANCE_GAP, UNDAMPED_WARNING
 from .numerics import sqrt_ratio_array
 from .outcome import CRITICAL_BAND
 from .numerics_arrays import dd_div, elementwise, fsum_rows, round_certified, two_product_array
@@ -115,8 +116,9 @@ def forced_columns(given: dict):
     """
     names = set(given)
     excitation = [n for n in _KINDS if n in names]
-    if len(excitation) != 1 or not names & {"zeta", "c", "Q"}:
+    if len(excitation) != 1:
         return None
+    undamped = not names & {"zeta", "c", "Q"}
     if names & {"x0", "v0"} and "t" not in names:
         return None         # the one-off refuses: x0 and v0 need t
     kind, amp = _KINDS[excitation[0]], given[excitation[0]]
@@ -134,7 +136,15 @@ def forced_columns(given: dict):
     for name, value in start.items():   # x0, v0 of any sign (or zero), t positive
         ok &= np.isfinite(value) if name != "t" else (value >= low) & (value <= high)
     with np.errstate(all="ignore"):
-        values, exact = _steady(kind, a, m, ok)
+        if undamped:  # zeta = 0: no resonance results; refused at resonance
+            a["zeta"] = np.zeros(len(amp))
+            values, exact, _damped, gap = _steady(kind, a, m, ok)
+            exact &= np.abs(gap) > RESONANCE_GAP
+            for name in _DAMPED_ONLY:
+                del values[name]
+        else:
+            values, exact, damped, _gap = _steady(kind, a, m, ok)
+            exact &= damped
         if "t" in start:
             zero = np.zeros(len(amp))
             sign = -1.0 if kind == "base-accel" else 1.0
@@ -143,14 +153,23 @@ def forced_columns(given: dict):
                 values["omega"], values["zeta"], W, values["X"], values["phi"], sign,
                 start.get("x0", zero), start.get("v0", zero), start["t"])
     for name, value in values.items():
+        if undamped and name in ("zeta", "phi"):  # 0 (phi: 0 or pi), as the one-off gives
+            exact &= np.isfinite(value)
+            continue
         good = np.isfinite(value) & (value != 0.0)
         exact &= (good | np.isnan(value)) if name == "isolation" else good
     nan = np.nan
     return {n: np.where(exact, v, nan) for n, v in values.items()}, exact
 
 
+#: The results an undamped oscillator does not have (unbounded).
+_DAMPED_ONLY = ("X_res", "V_res", "Omega_peak", "X_peak", "V_peak", "bandwidth", "Q")
+
+
 def _steady(kind, a, m, ok):
-    """The one-off's steps (forced_response, _steady, peak, half_power) on columns."""
+    """The one-off's steps (forced_response, _steady, peak, half_power) on columns:
+    ``(values, ok, damped, gap)``, ``damped`` where the damping's results (resonance, peak,
+    bandwidth) are the one-off's too."""
     k = a.get("k")
     if k is not None:
         w = sqrt_ratio_array(k, m)
@@ -172,7 +191,8 @@ def _steady(kind, a, m, ok):
         gap, certain = resonance_gap_columns(W, k=k, m=m)
     else:
         gap, certain = resonance_gap_columns(W, omega=w)
-    ok &= certain & (zeta >= DOMAIN[0]) & (zeta <= DOMAIN[1])
+    ok &= certain
+    zeta_ok = (zeta >= DOMAIN[0]) & (zeta <= DOMAIN[1])
     eta = W / w
     static = {"force": lambda: amp / k_, "base": lambda: amp,
               "base-accel": lambda: amp / w / w, "unbalance": lambda: amp / m}[kind]()
@@ -216,7 +236,7 @@ def _steady(kind, a, m, ok):
     width, width_ok = _half_power(kind, zeta)
     values["bandwidth"] = width * w
     values["Q"] = 0.5 / zeta
-    return values, ok & peak_ok & width_ok
+    return values, ok, zeta_ok & peak_ok & width_ok, gap
 
 
 def _peak(kind, zeta):
