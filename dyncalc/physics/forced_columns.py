@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 
 from ..lazy import numpy as np
-from .forced import RESONANCE_GAP, UNDAMPED_WARNING
+from .forced import RESONANCE_GAP
 from .numerics import sqrt_ratio_array
 from .outcome import CRITICAL_BAND
 from .numerics_arrays import dd_div, elementwise, fsum_rows, round_certified, two_product_array
