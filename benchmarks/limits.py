@@ -42,6 +42,9 @@ LIMITS = {
     "forced-response": [str(LIMIT / "forced_response.py")],
     # extra rows (issue 17's brief, round 4): commands outside the 16 cases of the goal table
     "inertia one disk a row (extra)": [str(LIMIT / "inertia.py")],
+    # round 5: forced-response rows with --t (issue 17's brief, batchrest2)
+    "forced-response total response (extra)": [str(LIMIT / "forced_total.py")],
+    "forced-response undamped (extra)": [str(LIMIT / "forced_undamped.py")],
     "modes two-mass chain (extra)": [str(LIMIT / "modes.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100

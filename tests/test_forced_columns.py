@@ -153,5 +153,116 @@ def test_outside_the_domain_is_left_to_the_one_off():
 def test_forms_the_kernel_does_not_take():
     base = {"k": np.array([1.0]), "m": np.array([1.0]), "F0": np.array([1.0]),
             "Omega": np.array([2.0])}
-    assert forced_columns(base) is None                                  # undamped: warns
-    assert forced_columns({**base, "zeta": np.array([0.1]), "t": np.array([1.0])}) is None
+    assert forced_columns({**base, "base": np.array([1.0])}) is None     # two excitations
+    assert forced_columns({**base, "zeta": np.array([0.1]), "x0": np.array([1.0])}) is None
+
+
+def with_start(rows, rng):
+    """The rows with an initial state and a time (x0, v0 of either sign, zero now and then;
+    t over many decades, some exactly on whole periods of the excitation)."""
+    out = []
+    for row in rows:
+        row = dict(row)
+        row["x0"] = rng.choice([0.0, rng.uniform(-1, 1), -_log(rng, 1e-9, 1e3)])
+        row["v0"] = rng.choice([0.0, rng.uniform(-10, 10), _log(rng, 1e-9, 1e3)])
+        W = row["Omega"] if "Omega" in row else 2 * math.pi * row["f_exc"]
+        row["t"] = rng.choice([_log(rng, 1e-9, 1e3), 2 * math.pi / W * rng.randint(1, 50)])
+        out.append(row)
+    return out
+
+
+@pytest.mark.parametrize("form", FORMS, ids=["-".join(f) for f in FORMS])
+def test_total_response_rows_bit_for_bit(form):
+    """With x0, v0 and t, the total response x as the one-off gives it, to the bit, and
+    every row the one-off answers without a warning is answered."""
+    rng = random.Random("t-" + "-".join(form))
+    rows = with_start(rows_for(form, rng, 200), rng)
+    answered = check(rows)
+    assert answered == sum(one_off(r) is not None for r in rows) and answered > 120
+    given = {name: np.array([r[name] for r in rows]) for name in rows[0]}
+    values, exact = forced_columns(given)
+    assert "x" in values and np.isfinite(values["x"][exact]).all()
+
+
+def test_total_response_without_x0_or_v0():
+    rng = random.Random(5)
+    rows = with_start(rows_for(FORMS[0], rng, 100), rng)
+    for drop in ("x0", "v0"):
+        part = [{n: v for n, v in r.items() if n != drop} for r in rows]
+        assert check(part) == sum(one_off(r) is not None for r in part) > 60
+
+
+def test_x0_without_t_is_left_to_the_one_off():
+    """The one-off refuses x0 without t: the kernel takes no such block."""
+    given = {"k": np.ones(1), "m": np.ones(1), "zeta": np.array([0.1]), "F0": np.ones(1),
+             "Omega": np.array([2.0]), "x0": np.ones(1)}
+    assert forced_columns(given) is None
+
+
+def test_transient_branches_bit_for_bit():
+    """transient_columns against transient on every branch: under-, critically (within the
+    band) and overdamped, t = 0, and zeta = 0."""
+    from dyncalc.physics.forced import transient
+    from dyncalc.physics.forced_columns import transient_columns
+    from dyncalc.physics.outcome import CRITICAL_BAND
+
+    rng = random.Random(11)
+    rows = []
+    for _ in range(3000):
+        zeta = rng.choice([0.0, _log(rng, 1e-9, 0.999), 1.0, 1.0 + CRITICAL_BAND / 4,
+                           1.0 - CRITICAL_BAND / 4, _log(rng, 1.001, 1e4)])
+        t = rng.choice([0.0, _log(rng, 1e-6, 1e2)])
+        rows.append((_log(rng, 1e-2, 1e3), zeta, rng.uniform(-2, 2), rng.uniform(-50, 50), t))
+    cols = [np.array(c) for c in zip(*rows)]
+    got = transient_columns(*cols)
+    branches = set()
+    for i, (w, zeta, x0, v0, t) in enumerate(rows):
+        assert bits(float(got[i])) == bits(transient(w, zeta, x0, v0, t)), rows[i]
+        band = abs((1 - zeta) * (1 + zeta)) <= CRITICAL_BAND
+        branches.add("t0" if t == 0 else "critical" if band else "under" if zeta < 1 else "over")
+    assert branches == {"t0", "critical", "under", "over"}
+
+
+def one_off_undamped(row: dict):
+    """The one-off's values where its only warning is that the undamped resonance results
+    are unbounded (what the kernel answers for an undamped block), else None."""
+    from dyncalc.physics.forced import UNDAMPED_WARNING
+
+    try:
+        out = forced_response(**row)
+    except (InputError, PhysicsError, ArithmeticError, ValueError):
+        return None
+    if out.warnings != [UNDAMPED_WARNING] or not all(
+            math.isfinite(v) and (v != 0.0 or n in ("zeta", "phi"))
+            for n, v in out.values.items()):
+        return None
+    return out.values
+
+
+@pytest.mark.parametrize("form", FORMS[::3], ids=["-".join(f) for f in FORMS[::3]])
+@pytest.mark.parametrize("timed", [False, True])
+def test_undamped_rows_bit_for_bit(form, timed):
+    """No damping given: the one-off's values (zeta 0, phi 0 or pi, no resonance results)
+    to the bit, rows a hair from resonance (refused there) among them."""
+    rng = random.Random(f"undamped-{timed}-" + "-".join(form))
+    rows = rows_for(form, rng, 150) + rows_for(form, rng, 50, near=True)
+    for row in rows:
+        for name in ("zeta", "c", "Q"):
+            row.pop(name, None)
+    if timed:
+        rows = with_start(rows, rng)
+    given = {name: np.array([r[name] for r in rows]) for name in rows[0]}
+    values, exact = forced_columns(given)
+    assert "X_res" not in values and "Q" not in values
+    phis = set()
+    for i, row in enumerate(rows):
+        ref = one_off_undamped(row)
+        assert bool(exact[i]) == (ref is not None), row
+        if ref is None:
+            continue
+        got = {n: float(v[i]) for n, v in values.items() if not math.isnan(v[i])}
+        assert set(got) == set(ref), row
+        for name, value in ref.items():
+            assert bits(got[name]) == bits(value), (name, row, got[name], value)
+        phis.add(got["phi"])
+    assert sum(exact) > 120 and phis >= {0.0, math.pi}

@@ -22,13 +22,15 @@ class FastBlock:
     """Rows of a chunk computed together: their positions in the chunk, the result arrays (SI,
     in the order the one-off gives them; vectors as rows of an (n, 3) array, words as str
     arrays) and their dimensions (``None`` for words), and for JSON the constant part of each
-    line (``head``), each row's ``inputs`` object text and the ``extra`` object text."""
+    line (``head``), each row's ``inputs`` object text and the ``extra`` object text;
+    ``warnings``: the one-off's warnings, the same on every row of the block."""
 
-    __slots__ = ("rows", "values", "dims", "head", "inputs", "extra")
+    __slots__ = ("rows", "values", "dims", "head", "inputs", "extra", "warnings")
 
-    def __init__(self, rows, values, dims, head, inputs, extra="{}"):
+    def __init__(self, rows, values, dims, head, inputs, extra="{}", warnings=()):
         self.rows, self.values, self.dims, self.head, self.inputs, self.extra = (
             rows, values, dims, head, inputs, extra)
+        self.warnings = tuple(warnings)
 
 
 def _default_input(p, strict: bool, cache: dict):

@@ -293,7 +293,8 @@ def _split_by_results(spec, given, rows, cells, want_json, reads, good, out):
         mask[members] = True
         part = Columns({name: out.values[name] for name, has in zip(names, pattern) if has},
                        exact=mask, model=out.model, method=out.method,
-                       error_estimate=out.error_estimate)
+                       error_estimate=out.error_estimate, warnings=out.warnings,
+                       warned=out.warned)
         block = _finish(spec, given, rows, cells, want_json, reads, mask, part)
         if block is not None:
             blocks.append(block)
@@ -320,9 +321,16 @@ def _patterns(present, index):
 
 
 def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock | None:
-    """The block of the ``good`` rows of ``out``, where the probe agrees."""
+    """The block of the ``good`` rows of ``out``, where the probe agrees (the rows that warn,
+    ``out.warned``, or those that do not, whichever the first good row is)."""
+    warnings = ()
+    if out.warned is not None and out.warned[good].any():
+        first = bool(out.warned[int(np.argmax(good))])
+        good = good & (out.warned if first else ~out.warned)
+        warnings = out.warnings if first else ()
     probe = _probe(spec, given, cells, int(rows[np.argmax(good)]), out,
-                   {name: array[int(np.argmax(good))] for name, array in out.values.items()})
+                   {name: array[int(np.argmax(good))] for name, array in out.values.items()},
+                   warnings)
     if probe is None:
         return None
     keep = np.flatnonzero(good)
@@ -336,7 +344,7 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
         texts = _input_texts(_inputs(spec, given, reads, probe), keep, {})
     extra = "{}" if out.error_estimate is None else json.dumps(
         {"error_estimate": out.error_estimate})
-    return FastBlock(rows[keep], values, dims, head, texts, extra)
+    return FastBlock(rows[keep], values, dims, head, texts, extra, warnings)
 
 
 def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
@@ -360,15 +368,15 @@ def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
     return units
 
 
-def _probe(spec, given, cells, row: int, out, values: dict):
-    """The one-off Result of ``row``, or ``None`` where it is not the adapter's to the bit
-    (then the whole block takes the generic path)."""
+def _probe(spec, given, cells, row: int, out, values: dict, warnings: tuple = ()):
+    """The one-off Result of ``row``, or ``None`` where it is not the adapter's to the bit,
+    warnings included (then the whole block takes the generic path)."""
     texts = {col.key: with_header_unit(cells[col.key][row], col.unit) for col in given}
     try:
         result = spec.compute(texts, {col.key: col.name for col in given})
     except InputError:
         return None
-    if (result.warnings or result.model != out.model or result.method != out.method
+    if (tuple(result.warnings) != warnings or result.model != out.model or result.method != out.method
             or list(result.results) != list(values)
             or result.extra.get("error_estimate") != out.error_estimate
             or set(result.extra) - {"error_estimate"}):

@@ -100,6 +100,7 @@ class _Writer:
             parts = self._fast_parts(blocks[0], chunk, True)  # the common case: one block
             if not isinstance(parts, _Failure):
                 assemble.write_lines(self.out, parts, n)
+                self._block_warnings(blocks, lines)
                 return False, False
         texts: list = [None] * n
         for block in blocks:
@@ -139,6 +140,11 @@ class _Writer:
             shown = [t for t in shown if t is not None and not isinstance(t, _Failure)]
         if shown:
             self.out.write("\n".join(shown) + "\n")
+        if not self.as_json:  # the warnings of the vectorised rows written
+            messages += [(i, f"warning: line {lines[i]}: {w}") for block in blocks
+                         if block.warnings for i in block.rows.tolist()
+                         if i < upto and texts[i] is not None
+                         and not isinstance(texts[i], _Failure) for w in block.warnings]
         if messages:
             self.out.flush()
             self.err.write("\n".join(one_line(m) for _i, m in sorted(messages,
@@ -146,6 +152,17 @@ class _Writer:
                            + "\n")
             self.err.flush()
         return failed, stopped
+
+    def _block_warnings(self, blocks, lines) -> None:
+        """The CSV run's ``warning:`` lines of vectorised blocks (the same texts each row)."""
+        if self.as_json or not any(block.warnings for block in blocks):
+            return
+        rows = sorted((i, w) for block in blocks for i in block.rows.tolist()
+                      for w in block.warnings)
+        self.out.flush()
+        self.err.write("\n".join(one_line(f"warning: line {lines[i]}: {w}") for i, w in rows)
+                       + "\n")
+        self.err.flush()
 
     def _fast_texts(self, block, chunk, texts) -> None:
         """Fill ``texts`` at the block's rows: CSV lines or JSON lines."""
@@ -198,7 +215,8 @@ class _Writer:
             numbers = chunk.numbers if whole else [chunk.numbers[i] for i in rows]
             return ['{"line": ', np.asarray(numbers, dtype=np.int64),
                     ", " + block.head + ', "inputs": {', *block.inputs, '}, "results": {',
-                    *parts, '}, "warnings": [], "extra": ' + block.extra + "}"]
+                    *parts, '}, "warnings": ' + json.dumps(list(block.warnings))
+                    + ', "extra": ' + block.extra + "}"]
         parts = [chunk.echo(None if whole else rows)]
         for name in self.columns:
             parts += [","] if name not in shown else [",", *shown[name][0]]

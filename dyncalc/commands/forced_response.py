@@ -227,7 +227,8 @@ _SIGNED = ("x0", "v0")
 
 
 def columns(given: dict, settings: dict):
-    """The results of a block of batch rows, or ``None`` when not handled here.
+    """The results of a block of batch rows, or ``None`` when not handled here (undamped
+    blocks: every row with the one-off's warning that the resonance results are unbounded).
 
     ``given`` maps the columns of the block (the record's input names: ``k``, ``m``,
     ``zeta``, ``F0``, ``Omega``, ...) to float64 SI arrays; ``settings`` holds ``scene``.
@@ -272,7 +273,12 @@ def columns(given: dict, settings: dict):
             out[name][i] = row.get(name, math.nan)
     exact = exact.copy()
     exact[list(rows)] = True
-    return Columns(out, exact=exact, model="linear", method="closed-form", optional=True)
+    if keys & set(_DAMPINGS):
+        return Columns(out, exact=exact, model="linear", method="closed-form", optional=True)
+    from ..physics.forced import UNDAMPED_WARNING  # undamped: every row the kernel answers warns
+
+    return Columns(out, exact=exact, model="linear", method="closed-form", optional=True,
+                   warnings=(UNDAMPED_WARNING,), warned=np.ones(n, dtype=bool))
 
 
 def _one_row(row: dict) -> dict | None:

@@ -34,18 +34,22 @@ class Columns(Record):
     ``error_estimate`` is the one-off's (a float, the same for every row) or ``None``.
     With ``optional``, a result that some exact rows do not have is NaN there: the batch
     splits the block by the results each row has (every exact value is otherwise finite).
+    ``warnings``: the one-off's warnings (the same texts on every row) of the exact rows that
+    ``warned`` marks (a boolean array; ``None``: no row warns); the batch keeps together only
+    rows that all warn so or all do not, and its probe checks the texts against the one-off.
     """
 
-    _FIELDS = ("values", "exact", "model", "method", "error_estimate", "optional")
+    _FIELDS = ("values", "exact", "model", "method", "error_estimate", "optional",
+               "warnings", "warned")
     __slots__ = _FIELDS
     __hash__ = None
 
     def __init__(self, values: dict[str, Any], exact: Any, model: str = "linear",
                  method: str = "closed-form", error_estimate: float | None = None,
-                 optional: bool = False):
+                 optional: bool = False, warnings: tuple[str, ...] = (), warned: Any = None):
         self.values, self.exact, self.model, self.method, self.error_estimate = (
             values, exact, model, method, error_estimate)
-        self.optional = optional
+        self.optional, self.warnings, self.warned = optional, tuple(warnings), warned
 
 
 class TypedColumn(Record):

@@ -41,13 +41,15 @@ from .outcome import CRITICAL_BAND, Outcome
 
 __all__ = ["EXCITATIONS", "resonance_gap", "phase", "magnification", "transmissibility",
            "peak", "half_power", "transient", "total_response", "forced_response",
-           "RESONANCE_GAP", "SQRT_HALF"]
+           "RESONANCE_GAP", "SQRT_HALF", "UNDAMPED_WARNING"]
 
 #: The excitation kinds, as the option names say them.
 EXCITATIONS = ("force", "base", "base-accel", "unbalance")
 #: ``|1 - eta^2|`` at or below which an undamped oscillator is at resonance (the rounding of
 #: the inputs: Omega, k and m each carry half an ulp).
 RESONANCE_GAP = 8.0 * 2.0 ** -52
+#: The warning of every undamped response away from resonance.
+UNDAMPED_WARNING = "undamped: X_res, the peak and the bandwidth are unbounded; not given"
 #: ``1/sqrt(2)``: above this damping ratio the force response has no peak.
 SQRT_HALF = math.sqrt(0.5)
 
@@ -151,6 +153,8 @@ def magnification(kind: str, gap: float, zeta: float, eta: float) -> float:
     if kind == "unbalance":
         if d == math.inf:  # eta^2 beyond float64: V = 1/sqrt((1/eta^2 - 1)^2 + (2 zeta/eta)^2)
             return 1.0 / math.hypot(1.0 / eta / eta - 1.0, 2.0 * zeta / eta)
+        if eta == 0.0:  # at rest (Omega = 0): no unbalance force, no motion
+            return 0.0
         return eta / (d / eta) if d != 0.0 else math.inf
     return 1.0 / d
 
@@ -295,9 +299,13 @@ def transient(omega: float, zeta: float, x0: float, v0: float, t: float) -> floa
     if zeta < 1.0:
         wd = omega * math.sqrt((1.0 - zeta) * (1.0 + zeta))
         return decay * (x0 * math.cos(wd * t) + b * math.sin(wd * t) / wd)
-    ws = omega * math.sqrt(zeta - 1.0) * math.sqrt(zeta + 1.0)
-    # e^{-zeta omega t} cosh(ws t) = (e^{-(zeta omega - ws) t} + e^{-(zeta omega + ws) t})/2
-    slow, fast = math.exp(-(zeta * omega - ws) * t), math.exp(-(zeta * omega + ws) * t)
+    root = math.sqrt(zeta - 1.0) * math.sqrt(zeta + 1.0)
+    ws = omega * root
+    # e^{-zeta omega t} cosh(ws t) = (e^{-(zeta omega - ws) t} + e^{-(zeta omega + ws) t})/2,
+    # the slow rate zeta omega - ws = omega/(zeta + sqrt(zeta^2 - 1)) without the cancellation
+    # (which made it negative, and exp overflow, at large zeta)
+    slow = math.exp(-(omega / (zeta + root)) * t)
+    fast = math.exp(-(zeta * omega + ws) * t)
     return 0.5 * x0 * (slow + fast) + 0.5 * b * (slow - fast) / ws
 
 
@@ -549,7 +557,7 @@ def _steady(values, kind, amplitude, gap, zeta, eta, w, W, k, m, static, warning
             warnings.append(f"zeta = {zeta:.6g} >= 1/sqrt(2): the amplitude has no resonance "
                             f"peak; it is largest {where}")
     else:
-        warnings.append("undamped: X_res, the peak and the bandwidth are unbounded; not given")
+        warnings.append(UNDAMPED_WARNING)
     values["Omega_iso"] = math.sqrt(2.0) * w
     if TR < 1.0:
         values["isolation"] = 1.0 - TR

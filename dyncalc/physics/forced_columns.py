@@ -22,11 +22,13 @@ from __future__ import annotations
 import math
 
 from ..lazy import numpy as np
+from .forced import RESONANCE_GAP
 from .numerics import sqrt_ratio_array
+from .outcome import CRITICAL_BAND
 from .numerics_arrays import dd_div, elementwise, fsum_rows, round_certified, two_product_array
 
 __all__ = ["DOMAIN", "forced_columns", "resonance_gap_columns", "one_minus_two_z2_columns",
-           "half_power_product_columns"]
+           "half_power_product_columns", "total_response_columns"]
 
 #: Inputs (SI, positive) within which every Dekker product here is exact: squares and
 #: products stay far inside float64, their error terms far above the subnormals.
@@ -114,8 +116,11 @@ def forced_columns(given: dict):
     """
     names = set(given)
     excitation = [n for n in _KINDS if n in names]
-    if len(excitation) != 1 or names & {"x0", "v0", "t"} or not names & {"zeta", "c", "Q"}:
+    if len(excitation) != 1:
         return None
+    undamped = not names & {"zeta", "c", "Q"}
+    if names & {"x0", "v0"} and "t" not in names:
+        return None         # the one-off refuses: x0 and v0 need t
     kind, amp = _KINDS[excitation[0]], given[excitation[0]]
     m = given.get("m")
     if kind in ("base", "base-accel", "unbalance") and m is None:
@@ -123,21 +128,48 @@ def forced_columns(given: dict):
     if kind == "force" and "k" not in names and m is None:
         return None
     a = {n: np.asarray(v, dtype=float) for n, v in given.items()}
+    start = {n: a.pop(n) for n in ("x0", "v0", "t") if n in a}
     low, high = DOMAIN
     ok = np.ones(len(amp), dtype=bool)
     for value in a.values():
         ok &= (value >= low) & (value <= high)
+    for name, value in start.items():   # x0, v0 of any sign (or zero), t positive
+        ok &= np.isfinite(value) if name != "t" else (value >= low) & (value <= high)
     with np.errstate(all="ignore"):
-        values, exact = _steady(kind, a, m, ok)
+        if undamped:  # zeta = 0: no resonance results; refused at resonance
+            a["zeta"] = np.zeros(len(amp))
+            values, exact, _damped, gap = _steady(kind, a, m, ok)
+            exact &= np.abs(gap) > RESONANCE_GAP
+            for name in _DAMPED_ONLY:
+                del values[name]
+        else:
+            values, exact, damped, _gap = _steady(kind, a, m, ok)
+            exact &= damped
+        if "t" in start:
+            zero = np.zeros(len(amp))
+            sign = -1.0 if kind == "base-accel" else 1.0
+            W = a["Omega"] if "Omega" in a else _TWO_PI * a["f_exc"]
+            values["x"] = total_response_columns(
+                values["omega"], values["zeta"], W, values["X"], values["phi"], sign,
+                start.get("x0", zero), start.get("v0", zero), start["t"])
     for name, value in values.items():
+        if undamped and name in ("zeta", "phi"):  # 0 (phi: 0 or pi), as the one-off gives
+            exact &= np.isfinite(value)
+            continue
         good = np.isfinite(value) & (value != 0.0)
         exact &= (good | np.isnan(value)) if name == "isolation" else good
     nan = np.nan
     return {n: np.where(exact, v, nan) for n, v in values.items()}, exact
 
 
+#: The results an undamped oscillator does not have (unbounded).
+_DAMPED_ONLY = ("X_res", "V_res", "Omega_peak", "X_peak", "V_peak", "bandwidth", "Q")
+
+
 def _steady(kind, a, m, ok):
-    """The one-off's steps (forced_response, _steady, peak, half_power) on columns."""
+    """The one-off's steps (forced_response, _steady, peak, half_power) on columns:
+    ``(values, ok, damped, gap)``, ``damped`` where the damping's results (resonance, peak,
+    bandwidth) are the one-off's too."""
     k = a.get("k")
     if k is not None:
         w = sqrt_ratio_array(k, m)
@@ -159,7 +191,8 @@ def _steady(kind, a, m, ok):
         gap, certain = resonance_gap_columns(W, k=k, m=m)
     else:
         gap, certain = resonance_gap_columns(W, omega=w)
-    ok &= certain & (zeta >= DOMAIN[0]) & (zeta <= DOMAIN[1])
+    ok &= certain
+    zeta_ok = (zeta >= DOMAIN[0]) & (zeta <= DOMAIN[1])
     eta = W / w
     static = {"force": lambda: amp / k_, "base": lambda: amp,
               "base-accel": lambda: amp / w / w, "unbalance": lambda: amp / m}[kind]()
@@ -203,7 +236,7 @@ def _steady(kind, a, m, ok):
     width, width_ok = _half_power(kind, zeta)
     values["bandwidth"] = width * w
     values["Q"] = 0.5 / zeta
-    return values, ok & peak_ok & width_ok
+    return values, ok, zeta_ok & peak_ok & width_ok, gap
 
 
 def _peak(kind, zeta):
@@ -262,3 +295,61 @@ def _half_power_base(zeta):
     exists = 1.0 - w_pos > 0.0
     low = np.sqrt(1.0 - w_pos)
     return (disc / p) / (high + low), exists
+
+
+def _libm(function):
+    """``function`` row by row (CPython's libm, as the one-off calls it), NaN where it raises."""
+    def safe(x: float) -> float:
+        try:
+            return function(x)
+        except (OverflowError, ValueError):
+            return math.nan
+    return lambda array: elementwise(safe, array)
+
+
+_cos, _sin, _exp = _libm(math.cos), _libm(math.sin), _libm(math.exp)
+
+
+def total_response_columns(omega, zeta, Omega, X, phi, sign: float, x0, v0, t):
+    """:func:`dyncalc.physics.forced.total_response` on columns, bit for bit: the steady state
+    ``sign X cos(Omega t - phi)`` plus :func:`transient_columns` from ``x0 - sign X cos phi``,
+    ``v0 - sign X Omega sin phi`` (the one-off's operations in its order; ``cos``, ``sin`` and
+    ``exp`` are CPython's, row by row)."""
+    sx = sign * X
+    steady = sx * _cos(Omega * t - phi)
+    h0 = x0 - sx * _cos(phi)
+    hv = v0 - sx * Omega * _sin(phi)
+    return steady + transient_columns(omega, zeta, h0, hv, t)
+
+
+def transient_columns(omega, zeta, x0, v0, t):
+    """:func:`dyncalc.physics.forced.transient` on columns, each row through its own branch
+    (``t = 0``; critical within :data:`~dyncalc.physics.outcome.CRITICAL_BAND`; under- and
+    overdamped), with the one-off's float operations in its order.
+
+    >>> import numpy as np
+    >>> transient_columns(np.ones(1), np.zeros(1), np.ones(1), np.zeros(1),
+    ...                   np.array([math.pi])).round(15).tolist()   # cos(pi)
+    [-1.0]
+    """
+    with np.errstate(all="ignore"):  # rows beyond float64 give what the one-off gives
+        return _transient(omega, zeta, x0, v0, t)
+
+
+def _transient(omega, zeta, x0, v0, t):
+    decay = _exp(-zeta * omega * t)
+    band = (1.0 - zeta) * (1.0 + zeta)
+    critical = np.abs(band) <= CRITICAL_BAND
+    under = ~critical & (zeta < 1.0)
+    over = ~critical & ~under
+    b = v0 + zeta * omega * x0
+    out = decay * (x0 + (v0 + omega * x0) * t)
+    if under.any():
+        wd = omega * np.sqrt(np.where(under, band, 1.0))
+        out = np.where(under, decay * (x0 * _cos(wd * t) + b * _sin(wd * t) / wd), out)
+    if over.any():
+        root = np.sqrt(np.where(over, zeta - 1.0, 1.0)) * np.sqrt(zeta + 1.0)
+        ws = omega * root
+        slow, fast = _exp(-(omega / (zeta + root)) * t), _exp(-(zeta * omega + ws) * t)
+        out = np.where(over, 0.5 * x0 * (slow + fast) + 0.5 * b * (slow - fast) / ws, out)
+    return np.where(t == 0.0, x0, out)
