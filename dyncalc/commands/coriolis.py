@@ -38,7 +38,7 @@ from ..lazy import numpy as np
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
 from .record import Command, Parameter, ResultName
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
-                    MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
+                    MASS, TIME, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
                     parse_vector)
 
 __all__ = ["COMMAND", "coriolis_result", "OPTIONS", "read", "compute", "CoriolisInputs"]
@@ -930,6 +930,22 @@ def _norm_slope(x, dx, side: int) -> float:
 
 # --- the command record ----------------------------------------------------------------------
 
+#: The results of the time path and the scenes (their names are listed for --value completion).
+_TIME_RESULTS = {
+    "r": (LENGTH, "m", "r", "position in the frame (motion given in time)"),
+    "v_r": (VELOCITY, "m/s", "v_r", "velocity relative to the frame (r'; a scene's slide)"),
+    "a_r": (ACCELERATION, "m/s^2", "a_r", "acceleration relative to the frame (r'')"),
+    "alpha": (ANGULAR_ACCELERATION, "rad/s^2", "α", "angular acceleration of the frame "
+                                                      "(Omega')"),
+    "v0": (VELOCITY, "m/s", "v0", "velocity of the frame's origin (R0')"),
+    "a0": (ACCELERATION, "m/s^2", "a0", "acceleration of the frame's origin (R0'')"),
+    "R": (LENGTH, "m", "R", "position of the point from the fixed origin"),
+    "theta": (ANGLE, "rad", "θ", "angle the frame has turned since t = 0"),
+    "v_transport": (VELOCITY, "m/s", "v0+Ω×r", "transport velocity"),
+    "v": (VELOCITY, "m/s", "v", "absolute velocity"),
+    "v_mag": (VELOCITY, "m/s", "|v|", "magnitude of v"),
+}
+
 _VECTOR = "VEC"
 #: option -> (metavar, help) of ``dyncalc coriolis --help``, in its order
 _HELP = {
@@ -955,7 +971,43 @@ _HELP = {
 
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
+    scene = values.get("scene")
+    if scene is not None:
+        from .coriolis_scenes import scene_result
+
+        return scene_result(scene, values, words, rtol=rtol, strict=strict)
+    from .coriolis_time import is_time_motion
+
+    if is_time_motion(values):
+        from .coriolis_time import time_result
+
+        times = values.get("t")
+        if times is not None and "," in times:
+            raise InputError("--t: a list of times gives a table, one row per time; the "
+                             "command line prints it (in Python call once per time)")
+        return time_result({name: values.get(name) for name in _TIME_TEXTS}, words,
+                           strict=strict)
+    if values.get("basis") is not None:
+        raise InputError("--basis goes with a motion given in time (--t): constant vectors "
+                         "are given and shown in one frame's components")
+    if values.get("plot") is not None:
+        raise InputError("--plot draws a motion given in time: give --r (and --omega, --R0) "
+                         "as expressions in t with --t")
+    if words:
+        raise InputError(f"{words[0][:40]}: NAME=QUANTITY words are the parameters of a motion "
+                         "given in time (--r ... in t with --t) or of --scene; here give the "
+                         "options")
     return coriolis_result({name: values.get(name) for name in OPTIONS}, strict=strict)
+
+
+#: The options the time path reads (the others it refuses by name).
+_TIME_TEXTS = (*OPTIONS, "R0", "t", "basis")
+
+
+def _relative_scenes():
+    from ..scenes.relative import relative_scene_names
+
+    return relative_scene_names()
 
 
 COMMAND = Command(
@@ -985,9 +1037,25 @@ COMMAND = Command(
       dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
       dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
     """,
-    tuple(Parameter(name, dim, _HELP[name][1], _HELP[name][0])
-          for name, (dim, _words) in OPTIONS.items()),
-    tuple(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
+    (Parameter("scene", None, "A relative-motion set-up with its own parameters as "
+               "NAME=QUANTITY words (radial-slot-release, slotted-link).", "NAME",
+               kind="setting", choices=_relative_scenes),
+     *(Parameter(name, dim, _HELP[name][1], _HELP[name][0])
+       for name, (dim, _words) in OPTIONS.items()),
+     Parameter("R0", LENGTH, "Position of the frame's origin in fixed-frame components, as "
+               "expressions in t: motion given in time.", _VECTOR, kind="text"),
+     Parameter("t", TIME, "Time at which a motion given in time is evaluated, e.g. 2s; a "
+               "list ('0, 0.5, 1 s') gives a table, one row per time.", "TIME", kind="text"),
+     Parameter("basis", None, "Components of the vector results of a motion given in time: "
+               "rotating (default, the frame's axes at t) or fixed.", "rotating|fixed",
+               kind="setting", choices=("rotating", "fixed")),
+     Parameter("plot", None, "Draw the path of the point in the fixed frame (a motion given "
+               "in time) with its velocity and acceleration at --t into FILE (.png, .svg or "
+               ".pdf); needs matplotlib.", "FILE.png", kind="after")),
+    (*(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
+     *(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _TIME_RESULTS.items()
+       if name not in _KINDS)),
     _run,
+    words="[NAME=QUANTITY]...",
     columns=columns,
 )

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import InputError
 from ..result import Result
-from ..scenes import Scene, get_scene, scene_names
+from ..scenes import Scene, get_scene
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA,
                      LENGTH, MASS, STIFFNESS, TIME, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
@@ -84,7 +84,23 @@ def natural_frequency(options: dict[str, str | None], words: tuple[str, ...] | l
     -> the Result of the scene they name or choose."""
     texts, labels = collect_parameters(options, words)
     name = scene if scene is not None else infer_scene(set(texts))
-    return compute_scene(name, texts, labels=labels, method=method, rtol=rtol, strict=strict)
+    chosen = get_scene(name)
+    if chosen.compute.__module__ == _RELATIVE_MODULE:
+        raise InputError(f"--scene {chosen.name} is a relative-motion scene with no "
+                         f"frequency: run it with dyncalc coriolis --scene {chosen.name}")
+    return compute_scene(chosen, texts, labels=labels, method=method, rtol=rtol, strict=strict)
+
+
+#: The physics module of the relative-motion scenes (coriolis --scene), which have no frequency.
+_RELATIVE_MODULE = "dyncalc.physics.relative_scenes"
+
+
+def frequency_scene_names() -> list[str]:
+    """The scenes ``natural-frequency --scene`` takes: every scene but the relative-motion
+    ones (``coriolis --scene``)."""
+    from ..scenes import catalog
+
+    return [name for name, s in catalog().items() if s.compute.__module__ != _RELATIVE_MODULE]
 
 
 # --- the command record ----------------------------------------------------------------------
@@ -115,7 +131,7 @@ COMMAND = Command(
     (
         Parameter("scene", None, "The set-up (dyncalc scenes lists them); default: chosen by "
                   "the parameters given (k, m: mass-spring; kt, J: torsional; l: pendulum).",
-                  "NAME", kind="setting", choices=scene_names),
+                  "NAME", kind="setting", choices=frequency_scene_names),
         Parameter("k", STIFFNESS, "Stiffness, e.g. '2 kN/m' (k=).", "K"),
         Parameter("m", MASS, "Mass, e.g. 4kg (m=).", "M"),
         Parameter("kt", TORSIONAL_STIFFNESS, "Torsional stiffness, e.g. '3 kN*m/rad' (kt=).",

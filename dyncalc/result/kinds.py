@@ -71,6 +71,17 @@ _FIXED = {
     "F": ResultKind(FORCE, "N", "F", "force at time t"),
     "H_max": ResultKind(FORCE, "N", "H_max", "largest contact friction force"),
     "mu0": ResultKind(DIMENSIONLESS, "", "μ0", "least static friction coefficient"),
+    # relative motion (coriolis --scene)
+    "v_r": ResultKind(VELOCITY, "m/s", "v_r", "velocity relative to the moving frame"),
+    "t_R": ResultKind(TIME, "s", "t_R", "time to reach the radius r"),
+    "v_abs": ResultKind(VELOCITY, "m/s", "v_abs", "absolute speed"),
+    "F_slot": ResultKind(FORCE, "N", "F_slot", "side force of the slot wall"),
+    "x_t": ResultKind(LENGTH, "m", "x(t)", "distance from the centre at time t"),
+    "v_t": ResultKind(VELOCITY, "m/s", "v(t)", "speed along the slot at time t"),
+    "F_t": ResultKind(FORCE, "N", "F(t)", "side force of the slot wall at time t"),
+    "rho": ResultKind(LENGTH, "m", "ρ", "distance AC of the pin from the pivot"),
+    "omega_AD": ResultKind(ANGULAR_RATE, "rad/s", "ω_AD", "angular velocity of the link"),
+    "v_C": ResultKind(VELOCITY, "m/s", "v_C", "speed of the pin"),
 }
 
 _STEMS = {
