@@ -213,3 +213,68 @@ def test_omega_and_r_alone_give_the_frame_point():
                         "v_transport", "v_transport_mag"}
     assert out["v_transport"].tolist() == [0.0, 3.0, 0.0]
     assert out["a_transport"].tolist() == [-6.0, 0.0, 0.0]
+
+
+# --------------------------------------------------------------------------------------------
+# Components as expressions with units
+
+
+def test_components_as_expressions_with_the_trailing_unit():
+    """0.1*5*sin(35deg) takes the trailing m/s: 0.5 sin(35 deg) m/s (math.sin of the angle in
+    radians, worked out here)."""
+    out = run("--omega", "0,0,2 rad/s", "--vr", "0.1*5*sin(35deg), 0, 0 m/s")
+    speed = 0.5 * np.sin(np.radians(35.0))
+    np.testing.assert_allclose(out["a_c"], [0.0, 4.0 * speed, 0.0], rtol=1e-15)
+
+
+def test_parameters_inside_components_and_units_of_their_own():
+    """l*cos(30deg) with l=2m carries its own unit; the bare 0 takes none (SI); a component
+    with a unit of its own is taken as it is whatever the trailing unit."""
+    a = run("--omega", "0,0,2", "--r", "l*cos(30deg), l*sin(30deg), 0", "l=2m")
+    b = run("--omega", "0,0,2", "--r", "(l*cos(30deg), 200*sin(30deg), 0) cm", "l=2m")
+    c = run("--omega", "0,0,2", "--r", "173.20508075688772 cm, 1 m, 0")
+    expected = [2 * np.cos(np.radians(30.0)), 2 * np.sin(np.radians(30.0)), 0.0]
+    for out in (a, b, c):
+        np.testing.assert_allclose(out["v_transport"], [-2 * expected[1], 2 * expected[0], 0],
+                                   rtol=1e-15)
+
+
+def test_rates_in_expressions_follow_the_rate_rules():
+    out = run("--omega", "0, 0, 2*(15 rpm)", "--vr", "1,0,0")
+    assert out["a_c"].tolist() == pytest.approx([0.0, 2 * np.pi, 0.0], rel=1e-15)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--omega", "0,0,2", "--vr", "0.1*5*sin(35deg, 0, 0 m/s"],
+     "Error: --vr: this '(' is never closed at column 10: '0.1*5*sin(35deg, 0, 0 m/s'"),
+    (["--omega", "0,0,2", "--vr", "0.1*5*open(35deg), 0, 0 m/s"],
+     "Error: --vr: unknown function 'open' (the functions are sin, cos, tan, exp, log, sqrt, "
+     "sinh, cosh, atan2, abs) at column 7: '0.1*5*open(35deg), 0, 0 m/s'"),
+    (["--omega", "0,0,2", "--vr", "0, 2*x, 0 m/s"],
+     "Error: --vr: unknown name 'x' (the names here are pi, t) at column 6: '0, 2*x, 0 m/s'"),
+    (["--omega", "0,0,2", "--vr", "0, 0.5*sin(35 m), 0 m/s"],
+     "Error: --vr: sin() takes a pure number or an angle; got [length] at column 8: "
+     "'0, 0.5*sin(35 m), 0 m/s'"),
+    (["--omega", "0,0,2", "--r", "l*cos(30deg), l*sin(30deg), 0", "l=2kg"],
+     "Error: --r: component 1 is [mass], not length [length] at column 1: "
+     "'l*cos(30deg), l*sin(30deg), 0'"),
+    (["--omega", "0, 0, 2*(3 Hz)", "--vr", "1,0,0"],
+     "Error: --omega is an angular rate; give it in rad/s, deg/s, rpm or rev/s, not Hz (a "
+     "frequency in cycles)"),
+    (["--omega", "0,0,2", "--r", "l, 0, 0", "l=2m", "l=3m"],
+     "Error: l is given twice (l= twice)"),
+    (["--omega", "0,0,2", "--vr", "1,0,0", "omega=1rad/s"],
+     "Error: omega is given twice (--omega and omega=)"),
+    (["--omega", "0,0,2", "--vr", "1/0, 0, 0 m/s"],
+     "Error: --vr: a constant here overflows float64, divides by zero or takes a fractional "
+     "power of a negative number at column 2: '1/0, 0, 0 m/s'"),
+    (["--omega", "0,0,2", "--r", "2*t, 0, 0 m"],
+     "Error: --r: component 1 depends on t: motion given in time needs --t (the time to "
+     "evaluate at)"),
+    (["--omega", "0,0,2 rad/s", "--r", "l, 0, 0", "l=2m", "--strict-units", "--vr",
+      "sin(1),0,0"],
+     "Error: --vr: 'sin(1),0,0' has no unit and --strict-units is on; write it with a unit, "
+     "e.g. sin(1),0,0 m/s"),
+])
+def test_expression_refusals_point_at_the_character(args, message):
+    assert refusal(*args) == message

@@ -151,18 +151,25 @@ class _Reader:
     """Parses the option texts, remembering the parsed values and the input entries in the
     order read."""
 
-    def __init__(self, texts: dict[str, str], strict: bool):
+    def __init__(self, texts: dict[str, str], strict: bool, params: dict | None = None):
         self.texts, self.strict = texts, strict
+        self.params = params or {}
         self.inputs: dict[str, Entry] = {}
         self.parsed: dict[str, Parsed] = {}
 
     def vector(self, name: str) -> Parsed | None:
+        from ..units.vector_expression import needs_expressions, parse_vector_expression
+
         text = self.texts.get(name)
         if text is None:
             return None
         dim, description = OPTIONS[name]
-        parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
-                              strict=self.strict)
+        if needs_expressions(text, self.params):
+            parsed = parse_vector_expression(text, dim, label=f"--{name}", params=self.params,
+                                             strict=self.strict)
+        else:
+            parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
+                                  strict=self.strict)
         self.inputs[name] = _input_entry(name, parsed, dim, description)
         self.parsed[name] = parsed
         return parsed
@@ -372,7 +379,8 @@ def _latitude_words(degrees: float) -> str:
 # Reading: every option parsed and checked once
 
 
-def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Result:
+def coriolis_result(texts: dict[str, str | None], words=(), *,
+                    strict: bool = False) -> Result:
     """Compute the ``coriolis`` command from the option texts (``{"omega": "0,0,2 rad/s",
     "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given):
     :func:`read`, then :func:`compute`.
@@ -383,10 +391,10 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     >>> res.results["a_c"].si, res.results["a_c"].unit
     (12.0, 'm/s^2')
     """
-    return compute(read(texts, strict))
+    return compute(read(texts, strict, words))
 
 
-def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
+def read(texts: dict[str, str | None], strict: bool = False, words=()) -> CoriolisInputs:
     """The option texts -> :class:`CoriolisInputs`: every quantity and vector parsed and
     checked once, the form (vectors, magnitudes, Earth) chosen by the options given.
 
@@ -396,8 +404,9 @@ def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
     unknown = set(texts) - set(OPTIONS)
     if unknown:
         raise InputError(f"coriolis has no option --{sorted(unknown)[0]}")
+    params = _parameters(texts, words)
     if "latitude" in texts:
-        return _read_earth(_Reader(texts, strict))
+        return _read_earth(_Reader(texts, strict, params))
     for name in ("speed", "heading", "vertical"):
         if name in texts:
             raise InputError(f"--{name} describes motion over the Earth and needs --latitude; "
@@ -410,11 +419,33 @@ def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
         raise InputError("--vr is missing: give the velocity relative to the frame, e.g. --vr "
                          "'3,0,0 m/s' (or a magnitude such as '3 m/s' with a magnitude --omega),"
                          " or --r for the velocity and acceleration of the frame point")
-    reader = _Reader(texts, strict)
+    reader = _Reader(texts, strict, params)
     omega = reader.vector("omega")
     if _is_vector(omega):
         return _read_vectors(reader)
     return _read_scalars(reader, omega)
+
+
+def _parameters(texts: dict[str, str], words) -> dict:
+    """The ``NAME=QUANTITY`` words: an option's name (``omega=...``) joins ``texts``; any
+    other name is a parameter of the component expressions (``l=2m`` for
+    ``--r "l*cos(30deg), l*sin(30deg), 0"``): name -> (SI value, dimension, reading)."""
+    if not words:
+        return {}
+    from ..result.checks import split_assignment
+    from ..units.vector_expression import read_parameters
+
+    given: dict[str, str] = {}
+    for word in words:
+        name, text = split_assignment(word, "a parameter")
+        if name in texts or name in given:
+            where = f"--{name} and {name}=" if name in texts else f"{name}= twice"
+            raise InputError(f"{name} is given twice ({where})")
+        if name in OPTIONS:
+            texts[name] = text
+        else:
+            given[name] = text
+    return read_parameters(given)
 
 
 def _read_vectors(reader: _Reader) -> CoriolisInputs:
@@ -1063,7 +1094,8 @@ _HELP = {
 
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
-    return coriolis_result({name: values.get(name) for name in OPTIONS}, strict=strict)
+    return coriolis_result({name: values.get(name) for name in OPTIONS}, words,
+                           strict=strict)
 
 
 COMMAND = Command(
@@ -1097,5 +1129,6 @@ COMMAND = Command(
           for name, (dim, _words) in OPTIONS.items()),
     tuple(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
     _run,
+    words="[NAME=QUANTITY]...",
     columns=columns,
 )
