@@ -185,8 +185,8 @@ def parse_vector_expression(text: str, dim, *, label: str, params=None,
     Examples
     --------
     >>> from dyncalc.units import VELOCITY
-    >>> parse_vector_expression("0.5*sin(30deg), 0, 2 km/h", VELOCITY, label="--vr").si
-    array([0.13888889, 0.        , 0.55555556])
+    >>> parse_vector_expression("0.5*sin(30deg), 0, 2 km/h", VELOCITY, label="--vr").si.round(6)
+    array([0.069444, 0.      , 0.555556])
     """
     import numpy as np
 
