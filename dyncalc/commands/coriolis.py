@@ -836,8 +836,8 @@ def columns(given: dict, settings: dict):
 
     ``given`` maps the columns the block gives (the record's input names: ``omega``, ``vr``,
     ``r``, ``v0``, ``alpha``, ``a0``, ``ar``, ``mass``) to SI arrays, ``(n, 3)`` for
-    vectors and ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector form and the
-    magnitudes form are vectorised through the kernel of
+    vectors and ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector
+    form and the magnitudes form are vectorised through the kernel of
     :func:`~dyncalc.physics.frames.relative_acceleration` (the velocities through that of
     :func:`~dyncalc.physics.relative_motion.transport_velocity`), magnitudes by the twin of
     ``math.hypot`` (:func:`~dyncalc.physics.numerics_arrays.hypot_rows`); the Earth form
