@@ -205,7 +205,8 @@ def test_earth_latitude_speed_heading_vertical_rate_and_mass():
 
 def test_earth_latitude_and_rate_through_the_centripetal_term():
     """With --r the transport terms depend on the latitude and the rate:
-    a_centripetal = Omega x (Omega x r), a = a0 + alpha x r + a_centripetal + a_c + a_r."""
+    a_centripetal = Omega x (Omega x r), a = a0 + alpha x r + a_centripetal + a_c + a_r,
+    v_transport = Omega x r, v = v_transport + v_r."""
     texts = {"latitude": "-30.25 ± 0.5 deg", "vr": "20,5,1 m/s",
              "r": "1200,-400,6.371e6 m", "alpha": "0,0,1e-9 rad/s^2", "a0": "0,0,0.01 m/s^2",
              "ar": "1,0,0 m/s^2", "omega": "7e-5 ± 1e-6 rad/s"}
@@ -222,9 +223,13 @@ def test_earth_latitude_and_rate_through_the_centripetal_term():
         euler = mp_cross(alpha, r)
         transport = [x + y + z for x, y, z in zip(a0, euler, cent)]
         a = [x + y + z for x, y, z in zip(transport, a_c, ar)]
+        v_t = mp_cross(Om, r)
+        v = [x + y for x, y in zip(v_t, vr)]
         return {"a_c": a_c, "a_c_mag": [mp_norm(a_c)], "a_euler": [mpmath.mpf(0)] * 3,
                 "a_centripetal": cent, "a_transport": transport, "a": a,
-                "a_mag": [mp_norm(a)], "Omega": Om, "coriolis_parameter": [2 * Om[2]]}
+                "a_mag": [mp_norm(a)], "Omega": Om, "coriolis_parameter": [2 * Om[2]],
+                "a_transport_mag": [mp_norm(transport)], "v_transport": v_t,
+                "v_transport_mag": [mp_norm(v_t)], "v": v, "v_mag": [mp_norm(v)]}
 
     check(texts, ["latitude", "omega"], earth,
           [mpmath.radians(-30.25), mpmath.mpf(7e-5)])

@@ -63,6 +63,8 @@ class Output:
         for spec in self.units:
             name, unit = split_assignment(spec, "--unit")
             entry = result.results.get(name)
+            if entry is None and name in getattr(result, "unavailable", {}):
+                raise InputError(f"--unit {name}: {result.unavailable[name]}")
             if entry is None:
                 raise InputError(f"--unit {name}: there is no result named {name!r}; the "
                                  f"results are {', '.join(result.results)}")

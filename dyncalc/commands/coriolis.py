@@ -49,6 +49,7 @@ OPTIONS = {
     "vr": (VELOCITY, "velocity relative to the frame"),
     "r": (LENGTH, "position in the frame"),
     "alpha": (ANGULAR_ACCELERATION, "angular acceleration of the frame"),
+    "v0": (VELOCITY, "velocity of the frame's origin"),
     "a0": (ACCELERATION, "acceleration of the frame's origin"),
     "ar": (ACCELERATION, "acceleration relative to the frame"),
     "mass": (MASS, "mass"),
@@ -75,6 +76,13 @@ _KINDS = {  # result name -> (dim, unit, vector symbol, magnitude symbol, descri
                     "transport acceleration (of the frame point)"),
     "a": (ACCELERATION, "m/s^2", "a", "|a|", "absolute acceleration"),
     "a_mag": (ACCELERATION, "m/s^2", "|a|", "|a|", "magnitude of a"),
+    "a_transport_mag": (ACCELERATION, "m/s^2", "|a_transport|", "|a_transport|",
+                        "magnitude of a_transport"),
+    "v_transport": (VELOCITY, "m/s", "v0+Ω×r", "Ωr", "transport velocity (of the frame point)"),
+    "v_transport_mag": (VELOCITY, "m/s", "|v_transport|", "|v_transport|",
+                        "magnitude of v_transport"),
+    "v": (VELOCITY, "m/s", "v", "|v|", "absolute velocity"),
+    "v_mag": (VELOCITY, "m/s", "|v|", "|v|", "magnitude of v"),
     "Omega": (ANGULAR_RATE, "rad/s", "Ω", "Ω", "Earth's angular velocity (east, north, up)"),
     "v_r": (VELOCITY, "m/s", "v_r", "v_r", "velocity relative to the Earth (east, north, up)"),
     "coriolis_parameter": (RATE, "1/s", "2Ω sinφ", "2Ω sinφ", "Coriolis parameter f"),
@@ -143,18 +151,25 @@ class _Reader:
     """Parses the option texts, remembering the parsed values and the input entries in the
     order read."""
 
-    def __init__(self, texts: dict[str, str], strict: bool):
+    def __init__(self, texts: dict[str, str], strict: bool, params: dict | None = None):
         self.texts, self.strict = texts, strict
+        self.params = params or {}
         self.inputs: dict[str, Entry] = {}
         self.parsed: dict[str, Parsed] = {}
 
     def vector(self, name: str) -> Parsed | None:
+        from ..units.vector_expression import needs_expressions, parse_vector_expression
+
         text = self.texts.get(name)
         if text is None:
             return None
         dim, description = OPTIONS[name]
-        parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
-                              strict=self.strict)
+        if needs_expressions(text, self.params):
+            parsed = parse_vector_expression(text, dim, label=f"--{name}", params=self.params,
+                                             strict=self.strict)
+        else:
+            parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
+                                  strict=self.strict)
         self.inputs[name] = _input_entry(name, parsed, dim, description)
         self.parsed[name] = parsed
         return parsed
@@ -264,11 +279,25 @@ def _line(label: str, expression: str, value, unit: str, why: str | None) -> str
     return f"{label} = {expression}{' = ' if expression else ''}{_fmt(value, unit)}"
 
 
-def _vector_lines(fa, full: bool, mass_si: float | None) -> list[str]:
-    """The terms of the formula with their numbers (vectors), and which vanish and why."""
+def _vector_lines(fa, full: bool, mass_si: float | None, motion=None,
+                  known: bool = True) -> list[str]:
+    """The terms of the formula with their numbers (vectors), and which vanish and why;
+    ``motion`` (a :class:`~dyncalc.physics.relative_motion.RelativeMotion`) adds the
+    velocities, ``known`` is whether v_r was given."""
     om, v, r, al = (_fmt(x) for x in (fa.Omega, fa.v_r, fa.r, fa.alpha))
-    lines = [_line("2 Omega x v_r", f"2 {om} rad/s x {v} m/s", fa.a_c, "m/s^2",
-                   _why_zero("a_c", fa, "vector"))]
+    lines = []
+    if motion is not None:
+        lines.append(f"v_transport = v0 + Omega x r = {_fmt(motion.v_transport, 'm/s')}, "
+                     f"|v_transport| = {_fmt(motion.mags['v_transport_mag'], 'm/s')}")
+        if known:
+            lines.append(f"v = v_transport + v_r = {_fmt(motion.v, 'm/s')}, "
+                         f"|v| = {_fmt(motion.mags['v_mag'], 'm/s')}")
+    if known:
+        lines.append(_line("2 Omega x v_r", f"2 {om} rad/s x {v} m/s", fa.a_c, "m/s^2",
+                           _why_zero("a_c", fa, "vector")))
+    else:
+        lines.append("v, a_c = 2 Omega x v_r, a: not computed (give --vr, the velocity "
+                     "relative to the frame)")
     if not full:
         lines.append("a0, alpha x r, Omega x (Omega x r), a_r: not computed (give --r, "
                      "--alpha, --a0 or --ar for the absolute acceleration a)")
@@ -282,9 +311,10 @@ def _vector_lines(fa, full: bool, mass_si: float | None) -> list[str]:
             _line("a_r", "", fa.a_r, "m/s^2", _why_zero("a_r", fa, "vector")),
             f"a_transport = a0 + alpha x r + Omega x (Omega x r) = "
             f"{_fmt(fa.a_transport, 'm/s^2')}",
-            f"a = a_transport + 2 Omega x v_r + a_r = {_fmt(fa.a, 'm/s^2')}, "
-            f"|a| = {_fmt(_mag(fa.a), 'm/s^2')}",
         ]
+        if known:
+            lines.append(f"a = a_transport + 2 Omega x v_r + a_r = {_fmt(fa.a, 'm/s^2')}, "
+                         f"|a| = {_fmt(_mag(fa.a), 'm/s^2')}")
     if fa.F_c is not None:
         lines.append(f"F_c = -m a_c = -{_fmt(mass_si, 'kg')} x {_fmt(fa.a_c, 'm/s^2')} = "
                      f"{_fmt(fa.F_c, 'N')}")
@@ -349,7 +379,8 @@ def _latitude_words(degrees: float) -> str:
 # Reading: every option parsed and checked once
 
 
-def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Result:
+def coriolis_result(texts: dict[str, str | None], words=(), *,
+                    strict: bool = False) -> Result:
     """Compute the ``coriolis`` command from the option texts (``{"omega": "0,0,2 rad/s",
     "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given):
     :func:`read`, then :func:`compute`.
@@ -360,10 +391,10 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     >>> res.results["a_c"].si, res.results["a_c"].unit
     (12.0, 'm/s^2')
     """
-    return compute(read(texts, strict))
+    return compute(read(texts, strict, words))
 
 
-def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
+def read(texts: dict[str, str | None], strict: bool = False, words=()) -> CoriolisInputs:
     """The option texts -> :class:`CoriolisInputs`: every quantity and vector parsed and
     checked once, the form (vectors, magnitudes, Earth) chosen by the options given.
 
@@ -373,8 +404,9 @@ def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
     unknown = set(texts) - set(OPTIONS)
     if unknown:
         raise InputError(f"coriolis has no option --{sorted(unknown)[0]}")
+    params = _parameters(texts, words)
     if "latitude" in texts:
-        return _read_earth(_Reader(texts, strict))
+        return _read_earth(_Reader(texts, strict, params))
     for name in ("speed", "heading", "vertical"):
         if name in texts:
             raise InputError(f"--{name} describes motion over the Earth and needs --latitude; "
@@ -383,18 +415,41 @@ def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
         raise InputError("--omega is missing: give the frame's angular velocity, e.g. --omega "
                          "'0,0,2 rad/s' ('0,0,0 rad/s' for a frame that only translates), or "
                          "--latitude for the rotating Earth")
-    if "vr" not in texts:
+    if "vr" not in texts and "r" not in texts and "v0" not in texts:
         raise InputError("--vr is missing: give the velocity relative to the frame, e.g. --vr "
-                         "'3,0,0 m/s' (or a magnitude such as '3 m/s' with a magnitude --omega)")
-    reader = _Reader(texts, strict)
+                         "'3,0,0 m/s' (or a magnitude such as '3 m/s' with a magnitude --omega),"
+                         " or --r for the velocity and acceleration of the frame point")
+    reader = _Reader(texts, strict, params)
     omega = reader.vector("omega")
     if _is_vector(omega):
         return _read_vectors(reader)
     return _read_scalars(reader, omega)
 
 
+def _parameters(texts: dict[str, str], words) -> dict:
+    """The ``NAME=QUANTITY`` words: an option's name (``omega=...``) joins ``texts``; any
+    other name is a parameter of the component expressions (``l=2m`` for
+    ``--r "l*cos(30deg), l*sin(30deg), 0"``): name -> (SI value, dimension, reading)."""
+    if not words:
+        return {}
+    from ..result.checks import split_assignment
+    from ..units.vector_expression import read_parameters
+
+    given: dict[str, str] = {}
+    for word in words:
+        name, text = split_assignment(word, "a parameter")
+        if name in texts or name in given:
+            where = f"--{name} and {name}=" if name in texts else f"{name}= twice"
+            raise InputError(f"{name} is given twice ({where})")
+        if name in OPTIONS:
+            texts[name] = text
+        else:
+            given[name] = text
+    return read_parameters(given)
+
+
 def _read_vectors(reader: _Reader) -> CoriolisInputs:
-    for name in ("vr", "r", "alpha", "a0", "ar"):
+    for name in ("vr", "r", "v0", "alpha", "a0", "ar"):
         p = reader.vector(name)
         if p is not None and not _is_vector(p):
             dim = OPTIONS[name][0]
@@ -416,7 +471,11 @@ def _read_scalars(reader: _Reader, omega: Parsed) -> CoriolisInputs:
                              "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
                              "(the scalar form: perpendicular vectors)")
         _refuse_negative(name, p)
-    for name in ("a0", "ar"):
+    if "vr" not in reader.texts:
+        raise InputError("--vr is missing: the scalar form (a magnitude --omega) gives "
+                         "a_c = 2 Omega v_r; give --vr as a magnitude, e.g. --vr '3 m/s' (or "
+                         "vectors for the velocities of the frame point)")
+    for name in ("v0", "a0", "ar"):
         if name in reader.texts:
             raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
                              "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
@@ -474,7 +533,7 @@ def _read_earth(reader: _Reader) -> CoriolisInputs:
                          "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
                          "--heading")
 
-    for name in ("r", "alpha", "a0", "ar"):
+    for name in ("r", "v0", "alpha", "a0", "ar"):
         p = reader.vector(name)
         if p is not None and not _is_vector(p):
             raise InputError(f"--{name} with --latitude is a vector of east, north, up "
@@ -508,29 +567,45 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
     each; ``r``, ``alpha``, ``a0``, ``ar`` and ``mass`` as read (vectors and Earth mode).
     ``moves()`` gives how each uncertain input other than the mass moves ``Omega`` and ``v_r``
     (:func:`_frame_slopes`)."""
-    from ..physics.frames import relative_acceleration
+    from ..physics.relative_motion import relative_motion
 
     si = inputs.si
     mass = inputs.parsed.get("mass")
-    fa = relative_acceleration(Omega, v_r, r=si("r"), alpha=si("alpha"), a0=si("a0"),
-                               a_r=si("ar"), m=None if mass is None else mass.si)
+    motion = relative_motion(Omega, si("r"), v_r=v_r, v0=si("v0"), alpha=si("alpha"),
+                             a0=si("a0"), a_r=si("ar"), m=None if mass is None else mass.si)
+    fa = motion.accel
     full = any(n in inputs.parsed for n in ("r", "alpha", "a0", "ar"))
+    moving = any(n in inputs.parsed for n in ("r", "v0"))
+    known = v_r is not None
 
-    results = {"a_c": _entry("a_c", fa.a_c, True),
-               "a_c_mag": _entry("a_c_mag", _mag(fa.a_c), False)}
+    results: dict[str, Entry] = {}
+    if known:
+        results["a_c"] = _entry("a_c", fa.a_c, True)
+        results["a_c_mag"] = _entry("a_c_mag", _mag(fa.a_c), False)
     if fa.F_c is not None:
         results["F_c"] = _entry("F_c", fa.F_c, True)
         results["F_c_mag"] = _entry("F_c_mag", _mag(fa.F_c), False)
     if full:
-        for name in ("a_euler", "a_centripetal", "a_transport", "a"):
+        for name in ("a_euler", "a_centripetal", "a_transport"):
             results[name] = _entry(name, getattr(fa, name), True)
-        results["a_mag"] = _entry("a_mag", _mag(fa.a), False)
+        if known:
+            results["a"] = _entry("a", fa.a, True)
+            results["a_mag"] = _entry("a_mag", _mag(fa.a), False)
+        results["a_transport_mag"] = _entry("a_transport_mag", _mag(fa.a_transport), False)
+    if moving:
+        results["v_transport"] = _entry("v_transport", motion.v_transport, True)
+        results["v_transport_mag"] = _entry("v_transport_mag",
+                                            motion.mags["v_transport_mag"], False)
+        if known:
+            results["v"] = _entry("v", motion.v, True)
+            results["v_mag"] = _entry("v_mag", motion.mags["v_mag"], False)
 
     substituted = []
     assumptions = []
     extra = {}
     if earth is None:
-        substituted.append(f"Omega = {_fmt(fa.Omega, 'rad/s')}, v_r = {_fmt(fa.v_r, 'm/s')}"
+        substituted.append(f"Omega = {_fmt(fa.Omega, 'rad/s')}"
+                           + (f", v_r = {_fmt(fa.v_r, 'm/s')}" if known else "")
                            + (f", r = {_fmt(fa.r, 'm')}" if "r" in fa.given else ""))
         assumptions.append("a rigid frame turning with Omega (and alpha) whose origin "
                            "accelerates with a0; r, v_r and a_r are measured in the frame; all "
@@ -543,7 +618,8 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
                                                False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
-    substituted += _vector_lines(fa, full, None if mass is None else mass.si)
+    substituted += _vector_lines(fa, full, None if mass is None else mass.si,
+                                 motion if moving else None, known)
     assumptions.append("a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
                        "an observer in the frame sees the Coriolis force F_c = -m a_c, opposite "
                        "to a_c")
@@ -567,15 +643,44 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
                     model=model, method="closed-form",
                     warnings=list(earth["warnings"] if earth else []) + fa.warnings,
                     explanation=explanation, extra=extra)
+    result.unavailable = _unavailable(results, set(inputs.parsed) | (
+        {"vr"} if known else set()))
     m = None if mass is None else float(mass.si)
 
     def slopes_of():
         found = {} if moves is None else moves()
         return lambda name: _frame_slopes(fa, m, found.get(name, _MASS if name == "mass"
-                                                            else _STILL))
+                                                            else _STILL),
+                                          motion.v_transport, motion.v)
 
     result.sensitivity = lambda: _sensitivity(inputs, result, slopes_of())
     return result
+
+
+#: What each result of the vector form needs: groups of options, one of each group.
+_NEEDS = {
+    "a_c": (("vr",),), "F_c": (("vr",), ("mass",)), "v_transport": (("r", "v0"),),
+    "v": (("vr",), ("r", "v0")), "a_transport": (("r", "alpha", "a0", "ar"),),
+    "a_euler": (("r", "alpha", "a0", "ar"),), "a_centripetal": (("r", "alpha", "a0", "ar"),),
+    "a": (("vr",), ("r", "alpha", "a0", "ar")),
+}
+_GROUP_WORDS = {
+    ("vr",): "--vr (the velocity relative to the frame)", ("mass",): "--mass",
+    ("r", "v0"): "--r (the position in the frame) or --v0 (the velocity of its origin)",
+    ("r", "alpha", "a0", "ar"): "--r, --alpha, --a0 or --ar (the terms of the frame's motion)",
+}
+
+
+def _unavailable(results: dict, given) -> dict[str, str]:
+    """Result name -> why it is not among ``results`` (for ``--value``, ``--check`` and
+    ``--unit`` naming one): the options it needs that were not given."""
+    out = {}
+    for name, groups in _NEEDS.items():
+        missing = [_GROUP_WORDS[g] for g in groups if not any(o in given for o in g)]
+        for key in (name, name + "_mag"):
+            if missing and key in _KINDS and key not in results:
+                out[key] = f"{key} needs {' and '.join(missing)}"
+    return out
 
 
 #: The relative-motion formula in LaTeX (vectors).
@@ -730,10 +835,11 @@ def columns(given: dict, settings: dict):
     """The results of a block of batch rows at once, or ``None`` when not vectorised here.
 
     ``given`` maps the columns the block gives (the record's input names: ``omega``, ``vr``,
-    ``r``, ``alpha``, ``a0``, ``ar``, ``mass``) to SI arrays, ``(n, 3)`` for vectors and
-    ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector form and the
-    magnitudes form are vectorised through the kernel of
-    :func:`~dyncalc.physics.frames.relative_acceleration`, magnitudes by the twin of
+    ``r``, ``v0``, ``alpha``, ``a0``, ``ar``, ``mass``) to SI arrays, ``(n, 3)`` for
+    vectors and ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector
+    form and the magnitudes form are vectorised through the kernel of
+    :func:`~dyncalc.physics.frames.relative_acceleration` (the velocities through that of
+    :func:`~dyncalc.physics.relative_motion.transport_velocity`), magnitudes by the twin of
     ``math.hypot`` (:func:`~dyncalc.physics.numerics_arrays.hypot_rows`); the Earth form
     (``latitude``, ``speed``, ...) and mixed or missing inputs give ``None``. Exact where the
     one-off gives these values with no warning and no refusal (a term or magnitude beyond
@@ -743,12 +849,16 @@ def columns(given: dict, settings: dict):
     from ..physics.frames import relative_acceleration
     from ..physics.numerics_arrays import hypot_rows
 
+    from ..physics.relative_motion import transport_velocity
+
     keys = set(given)
-    if ("omega" not in keys or "vr" not in keys
-            or keys - {"omega", "vr", "r", "alpha", "a0", "ar", "mass"}):
+    if ("omega" not in keys or not keys & {"vr", "r", "v0"}
+            or keys - {"omega", "vr", "r", "v0", "alpha", "a0", "ar", "mass"}):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     vectors = arrays["omega"].ndim == 2
+    if not vectors and ("vr" not in keys or "v0" in keys):
+        return None
     shapes = {name: value.ndim for name, value in arrays.items() if name != "mass"}
     if set(shapes.values()) != {2 if vectors else 1} or arrays.get("mass", np.ones(1)).ndim != 1:
         return None
@@ -766,18 +876,36 @@ def columns(given: dict, settings: dict):
         return value + 0.0
 
     if vectors:
-        out = relative_acceleration.columns(arrays["omega"], arrays["vr"], r=arrays.get("r"),
-                                            alpha=arrays.get("alpha"), a0=arrays.get("a0"),
-                                            a_r=arrays.get("ar"), m=mass)
+        known = "vr" in keys
+        omega, vr = arrays["omega"], arrays.get("vr")
+        out = relative_acceleration.columns(omega, vr if known else np.zeros_like(omega),
+                                            r=arrays.get("r"), alpha=arrays.get("alpha"),
+                                            a0=arrays.get("a0"), a_r=arrays.get("ar"),
+                                            m=mass if known else None)
         terms = out.values
-        values = {"a_c": terms["a_c"], "a_c_mag": magnitude(terms["a_c"])}
-        if mass is not None:
-            values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
+        exact = out.exact
+        values = {}
+        if known:
+            values.update(a_c=terms["a_c"], a_c_mag=magnitude(terms["a_c"]))
+            if mass is not None:
+                values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
         if keys & {"r", "alpha", "a0", "ar"}:
-            for name in ("a_euler", "a_centripetal", "a_transport", "a"):
+            for name in ("a_euler", "a_centripetal", "a_transport"):
                 values[name] = terms[name]
-            values["a_mag"] = magnitude(terms["a"])
-        return Columns(values, exact=out.exact & ok, model="vectors")
+            if known:
+                values.update(a=terms["a"], a_mag=magnitude(terms["a"]))
+            values["a_transport_mag"] = magnitude(terms["a_transport"])
+        if keys & {"r", "v0"}:
+            r = arrays["r"] if "r" in keys else np.zeros_like(omega)
+            v_t = transport_velocity.columns(omega, r, v0=arrays.get("v0"))
+            values.update(v_transport=v_t.values["v"],
+                          v_transport_mag=magnitude(v_t.values["v"]))
+            exact = exact & v_t.exact
+            if known:
+                v = transport_velocity.columns(omega, r, v0=arrays.get("v0"), v_r=vr)
+                values.update(v=v.values["v"], v_mag=magnitude(v.values["v"]))
+                exact = exact & v.exact
+        return Columns(values, exact=exact & ok, model="vectors")
     if keys & {"a0", "ar"}:
         return None
     for value in arrays.values():
@@ -893,13 +1021,15 @@ def _earth_moves(inputs: CoriolisInputs, rate: float) -> dict[str, tuple]:
     return moves
 
 
-def _frame_slopes(fa, m: float | None, move: tuple) -> dict[str, Any]:
+def _frame_slopes(fa, m: float | None, move: tuple, v_transport=None,
+                  v_abs=None) -> dict[str, Any]:
     """Slopes of every result of the vector formula for an input that moves ``Omega`` by
     ``dOm`` and ``v_r`` by ``dv`` (per SI unit of the input) and the mass ``m`` (kg) by
     ``dm``; ``r``, ``alpha``, ``a0``, ``a_r`` are vectors and carry no uncertainty:
 
     ``da_c = 2 (dOm x v_r + Omega x dv)``, ``da_centripetal = dOm x (Omega x r) +
     Omega x (dOm x r)`` (= ``da_transport``), ``da = da_transport + da_c``,
+    ``dv_transport = dOm x r``, ``dv = dv_transport + dv``,
     ``dF_c = -(m da_c + dm a_c)``, ``d coriolis_parameter = 2 dOm_z``; a magnitude by
     :func:`_norm_slope`.
     """
@@ -907,10 +1037,17 @@ def _frame_slopes(fa, m: float | None, move: tuple) -> dict[str, Any]:
     Om, v, r = fa.Omega, fa.v_r, fa.r
     da_c = 2.0 * (np.cross(dOm, v) + np.cross(Om, dv))
     da_cent = np.cross(dOm, np.cross(Om, r)) + np.cross(Om, np.cross(dOm, r))
+    dv_t = np.cross(dOm, r)
     row = {"a_c": da_c, "a_c_mag": _norm_slope(fa.a_c, da_c, side),
            "a_euler": np.zeros(3), "a_centripetal": da_cent, "a_transport": da_cent,
+           "a_transport_mag": _norm_slope(fa.a_transport, da_cent, side),
            "a": da_cent + da_c, "a_mag": _norm_slope(fa.a, da_cent + da_c, side),
-           "Omega": dOm, "v_r": dv, "coriolis_parameter": 2.0 * float(dOm[2])}
+           "Omega": dOm, "v_r": dv, "coriolis_parameter": 2.0 * float(dOm[2]),
+           "v_transport": dv_t, "v": dv_t + dv}
+    if v_transport is not None:
+        row["v_transport_mag"] = _norm_slope(v_transport, dv_t, side)
+    if v_abs is not None:
+        row["v_mag"] = _norm_slope(v_abs, dv_t + dv, side)
     if m is not None:
         dF_c = -(m * da_c + dm * fa.a_c)
         row["F_c"] = dF_c
@@ -941,9 +1078,6 @@ _TIME_RESULTS = {
     "a0": (ACCELERATION, "m/s^2", "a0", "acceleration of the frame's origin (R0'')"),
     "R": (LENGTH, "m", "R", "position of the point from the fixed origin"),
     "theta": (ANGLE, "rad", "θ", "angle the frame has turned since t = 0"),
-    "v_transport": (VELOCITY, "m/s", "v0+Ω×r", "transport velocity"),
-    "v": (VELOCITY, "m/s", "v", "absolute velocity"),
-    "v_mag": (VELOCITY, "m/s", "|v|", "magnitude of v"),
 }
 
 _VECTOR = "VEC"
@@ -958,6 +1092,8 @@ _HELP = {
           "the rotation axis."),
     "alpha": (_VECTOR, "Angular acceleration of the frame, e.g. '0,0,1 rad/s^2' (a magnitude: "
               "about the axis of --omega)."),
+    "v0": (_VECTOR, "Velocity of the frame's origin, e.g. '1,0,0 m/s' (vectors only): adds "
+           "to v_transport = v0 + Omega x r."),
     "a0": (_VECTOR, "Acceleration of the frame's origin, e.g. '1,0,0 m/s^2' (vectors only)."),
     "ar": (_VECTOR, "Acceleration relative to the frame (vectors only)."),
     "mass": ("M", "Mass: adds the Coriolis force F_c = -m a_c."),
@@ -993,11 +1129,8 @@ def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) ->
     if values.get("plot") is not None:
         raise InputError("--plot draws a motion given in time: give --r (and --omega, --R0) "
                          "as expressions in t with --t")
-    if words:
-        raise InputError(f"{words[0][:40]}: NAME=QUANTITY words are the parameters of a motion "
-                         "given in time (--r ... in t with --t) or of --scene; here give the "
-                         "options")
-    return coriolis_result({name: values.get(name) for name in OPTIONS}, strict=strict)
+    return coriolis_result({name: values.get(name) for name in OPTIONS}, words,
+                           strict=strict)
 
 
 #: The options the time path reads (the others it refuses by name).

@@ -47,6 +47,8 @@ TIME_KINDS = {
     "v_transport": (VELOCITY, "m/s", "v0+Ω×r", "transport velocity (of the frame point)"),
     "v": (VELOCITY, "m/s", "v", "absolute velocity"),
     "v_mag": (VELOCITY, "m/s", "|v|", "magnitude of v"),
+    "v_transport_mag": (VELOCITY, "m/s", "|v_transport|", "magnitude of v_transport"),
+    "a_transport_mag": (ACCELERATION, "m/s^2", "|a_transport|", "magnitude of a_transport"),
     "a_c": (ACCELERATION, "m/s^2", "2Ω×v_r", "Coriolis acceleration term"),
     "a_c_mag": (ACCELERATION, "m/s^2", "|a_c|", "magnitude of a_c"),
     "a_euler": (ACCELERATION, "m/s^2", "α×r", "Euler term (angular acceleration)"),
@@ -191,14 +193,6 @@ def _fmt(v, unit: str) -> str:
     return f"{format_number(np.asarray(v, dtype=float) + 0.0, 6)} {unit}"
 
 
-def _cross(a, b):
-    """``a x b`` through the scaled kernel of :func:`~dyncalc.physics.frames.coriolis_acceleration`
-    (``2 a x b``, exact for near-parallel vectors), halved exactly."""
-    from ..physics.frames import coriolis_acceleration
-
-    return coriolis_acceleration(a, b) / 2.0
-
-
 def _magnitude(v) -> float:
     from ..physics.frames import magnitude
 
@@ -207,7 +201,7 @@ def _magnitude(v) -> float:
 
 def compute_time(inputs: TimeInputs) -> Result:
     """Every vector at ``--t`` (:func:`~dyncalc.physics.relative_time.motion_in_time`)."""
-    from ..physics.frames import relative_acceleration
+    from ..physics.relative_motion import relative_motion
     from ..physics.relative_time import motion_in_time
 
     vec = inputs.vectors
@@ -215,9 +209,9 @@ def compute_time(inputs: TimeInputs) -> Result:
     s = motion.state(inputs.t)
     v0, a0 = s.rotating(s.v0), s.rotating(s.a0)
     m = None if inputs.mass is None else float(inputs.mass.si)
-    fa = relative_acceleration(s.Omega, s.v_r, r=s.r, alpha=s.alpha, a0=a0, a_r=s.a_r, m=m)
-    v_transport = v0 + _cross(s.Omega, s.r)
-    v = v_transport + s.v_r
+    moving = relative_motion(s.Omega, s.r, v_r=s.v_r, v0=v0, alpha=s.alpha, a0=a0,
+                             a_r=s.a_r, m=m)
+    fa, v_transport, v = moving.accel, moving.v_transport, moving.v
     absolute = s.rotating(s.R0) + s.r
     vectors = {"r": s.r, "v_r": s.v_r, "a_r": s.a_r, "Omega": s.Omega, "alpha": s.alpha,
                "v0": v0, "a0": a0, "R": absolute, "v_transport": v_transport, "v": v,
@@ -229,11 +223,11 @@ def compute_time(inputs: TimeInputs) -> Result:
     results = {}
     for name, value in vectors.items():
         results[name] = _entry(name, s.Q @ value if fixed else value)
-        if name in ("v", "a", "a_c", "F_c"):
+        if name in ("v_transport", "v", "a_transport", "a", "a_c", "F_c"):
             results[f"{name}_mag"] = _entry(f"{name}_mag", _magnitude(value))
     if s.theta is not None:
         results["theta"] = _entry("theta", s.theta)
-    warnings = list(fa.warnings)
+    warnings = list(moving.warnings) + [w for w in fa.warnings if w not in moving.warnings]
     rotation = {"none": "the frame does not turn (Omega = 0): Q = I",
                 "closed form": "the frame turns about a fixed axis n = "
                                f"{_fmt(motion.axis, '')}by theta = int_0^t |Omega| dt "

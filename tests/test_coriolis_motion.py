@@ -1,0 +1,280 @@
+"""``dyncalc coriolis`` velocities and accelerations of relative motion (SPEC "coriolis —
+relative motion"): ``v_transport = v0 + Omega x r``, ``v = v_transport + v_r``,
+``a_transport = a0 + alpha x r + Omega x (Omega x r)``, ``a = a_transport + a_c + a_r``.
+
+Every reference is found independently: the absolute position of the point written out in
+the fixed frame and differentiated with mpmath (30 digits), then turned into the moving
+frame's components; the 1e12-scale cancellation against mpmath's exact arithmetic.
+"""
+import json
+
+import mpmath
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from dyncalc.cli import cli
+from dyncalc.physics.relative_motion import relative_motion, transport_velocity
+
+mpmath.mp.dps = 30
+
+
+def run(*args):
+    result = CliRunner().invoke(cli, ["coriolis", *args, "--json"])
+    assert result.exit_code == 0, result.output + result.stderr
+    return {name: np.array(item["value"]) if isinstance(item["value"], list)
+            else item["value"] for name, item in json.loads(result.stdout)["results"].items()}
+
+
+def refusal(*args):
+    result = CliRunner().invoke(cli, ["coriolis", *args])
+    assert result.exit_code == 2, result.output
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
+    return lines[0]
+
+
+def vec(v, unit=""):
+    return ",".join(repr(float(x)) for x in v) + (f" {unit}" if unit else "")
+
+
+def rot(theta, v):
+    """v turned by theta about z (mpmath)."""
+    c, s = mpmath.cos(theta), mpmath.sin(theta)
+    return [c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]]
+
+
+def in_frame(theta, v):
+    """Fixed-frame components -> components in a frame turned by theta about z."""
+    return rot(-theta, v)
+
+
+def derivatives(position, t0):
+    """Velocity and acceleration of ``position(t)`` (3 mpf components) at t0, by mpmath."""
+    vel = [mpmath.diff(lambda t, k=k: position(t)[k], t0) for k in range(3)]
+    acc = [mpmath.diff(lambda t, k=k: position(t)[k], t0, 2) for k in range(3)]
+    return vel, acc
+
+
+def close(actual, expected, rtol=1e-13):
+    expected = np.array([float(x) for x in expected])
+    scale = max(np.max(np.abs(expected)), 1e-300)
+    assert np.max(np.abs(np.asarray(actual) - expected)) <= rtol * scale, (actual, expected)
+
+
+def test_point_on_a_disk_mounted_on_a_turning_disk():
+    """A disk (radius rho = 0.15 m) spins at w2 = 7 rad/s on a turntable, its centre at
+    R = 0.6 m from the turntable's axis; the turntable turns at theta(t) = w1 t + al t^2/2
+    (w1 = 2 rad/s, al = 0.5 rad/s^2). The point's absolute position, differentiated twice,
+    in the turntable's axes at t0 = 0.8 s, against the frame formula with r, v_r, a_r of the
+    small disk's motion seen from the turntable."""
+    R, rho, w1, w2, al = (mpmath.mpf(x) for x in ("0.6", "0.15", "2", "7", "0.5"))
+    t0 = mpmath.mpf("0.8")
+
+    def theta(t):
+        return w1 * t + al * t * t / 2
+
+    def in_turntable(t):
+        return [R + rho * mpmath.cos(w2 * t), rho * mpmath.sin(w2 * t), mpmath.mpf(0)]
+
+    vel, acc = derivatives(lambda t: rot(theta(t), in_turntable(t)), t0)
+    r = in_turntable(t0)
+    v_r = [-rho * w2 * mpmath.sin(w2 * t0), rho * w2 * mpmath.cos(w2 * t0), 0]
+    a_r = [-rho * w2 ** 2 * mpmath.cos(w2 * t0), -rho * w2 ** 2 * mpmath.sin(w2 * t0), 0]
+    Omega = w1 + al * t0
+    out = run("--omega", vec([0, 0, Omega], "rad/s"), "--alpha", vec([0, 0, al], "rad/s^2"),
+              "--r", vec(r, "m"), "--vr", vec(v_r, "m/s"), "--ar", vec(a_r, "m/s^2"))
+    close(out["v"], in_frame(theta(t0), vel))
+    close(out["a"], in_frame(theta(t0), acc))
+    assert out["v_mag"] == pytest.approx(float(mpmath.norm(vel)), rel=1e-13)
+    assert out["a_mag"] == pytest.approx(float(mpmath.norm(acc)), rel=1e-13)
+    # the frame point: the turntable's own motion at r (rho's spin frozen)
+    vel_t, acc_t = derivatives(lambda t: rot(theta(t), r), t0)
+    close(out["v_transport"], in_frame(theta(t0), vel_t))
+    close(out["a_transport"], in_frame(theta(t0), acc_t))
+
+
+def test_the_same_disk_seen_from_a_frame_centred_on_the_small_disk():
+    """The frame of the small disk's centre: it turns with the turntable, its origin moves
+    (v0 = Omega x R e_x, a0 = alpha x R e_x + Omega x (Omega x R e_x)): the same absolute v
+    and a as above, with r the point's offset from the centre."""
+    R, rho, w1, w2, al = (mpmath.mpf(x) for x in ("0.6", "0.15", "2", "7", "0.5"))
+    t0 = mpmath.mpf("0.8")
+    theta = w1 * t0 + al * t0 * t0 / 2
+    Omega = w1 + al * t0
+
+    def position(t):
+        return rot(w1 * t + al * t * t / 2, [R + rho * mpmath.cos(w2 * t),
+                                             rho * mpmath.sin(w2 * t), mpmath.mpf(0)])
+
+    vel, acc = derivatives(position, t0)
+    v0 = [0, Omega * R, 0]
+    a0 = [-Omega ** 2 * R, al * R, 0]
+    r = [rho * mpmath.cos(w2 * t0), rho * mpmath.sin(w2 * t0), 0]
+    v_r = [-rho * w2 * mpmath.sin(w2 * t0), rho * w2 * mpmath.cos(w2 * t0), 0]
+    a_r = [-rho * w2 ** 2 * mpmath.cos(w2 * t0), -rho * w2 ** 2 * mpmath.sin(w2 * t0), 0]
+    out = run("--omega", vec([0, 0, Omega]), "--alpha", vec([0, 0, al]), "--r", vec(r),
+              "--v0", vec(v0), "--a0", vec(a0), "--vr", vec(v_r), "--ar", vec(a_r))
+    close(out["v"], in_frame(theta, vel))
+    close(out["a"], in_frame(theta, acc))
+
+
+def test_trolley_on_a_crane_that_starts_to_turn():
+    """A crane's jib starts to turn from rest with alpha = 0.2 rad/s^2 (theta = al t^2/2);
+    the trolley runs out along it, x(t) = x0 + u t + b t^2/2, the hook h = 12 m up. At
+    t0 = 1.5 s the jib turns at al t0; the absolute velocity and acceleration of the trolley,
+    differentiated from its position, in the jib's axes."""
+    al, x0, u, b, h = (mpmath.mpf(x) for x in ("0.2", "4", "0.8", "-0.3", "12"))
+    t0 = mpmath.mpf("1.5")
+
+    def position(t):
+        return rot(al * t * t / 2, [x0 + u * t + b * t * t / 2, mpmath.mpf(0), h])
+
+    vel, acc = derivatives(position, t0)
+    x = x0 + u * t0 + b * t0 * t0 / 2
+    out = run("--omega", vec([0, 0, al * t0], "rad/s"), "--alpha", vec([0, 0, al], "rad/s^2"),
+              "--r", vec([x, 0, h], "m"), "--vr", vec([u + b * t0, 0, 0], "m/s"),
+              "--ar", vec([b, 0, 0], "m/s^2"), "--mass", "250 kg")
+    theta = al * t0 * t0 / 2
+    close(out["v"], in_frame(theta, vel))
+    close(out["a"], in_frame(theta, acc))
+    close(out["F_c"], [-250 * 2 * al * t0 * (u + b * t0) * k for k in (0, 1, 0)])
+
+
+def test_unit_invariance_of_the_velocities():
+    si = run("--omega", "0,0,3.141592653589793", "--r", "0.2,0.1,0 m", "--v0", "1,0,0",
+             "--vr", "0.5,0,0")
+    other = run("--omega", "0,0,30 rpm", "--r", "20,10,0 cm", "--v0", "3.6,0,0 km/h",
+                "--vr", "50,0,0 cm/s")
+    for name in ("v_transport", "v", "v_transport_mag", "v_mag"):
+        np.testing.assert_allclose(other[name], si[name], rtol=1e-15)
+
+
+def test_no_cancellation_in_v0_plus_omega_x_r_at_1e12():
+    """v0 = -1e12 m/s against Omega x r = 1e12 m/s + a millimetre per second: each component
+    is the correctly rounded exact sum (mpmath at 60 digits), where the naive sum loses every
+    digit of the difference."""
+    Omega = [0.0, 0.0, 1.0e6 + 0.125]
+    r = [1.0e6 - 3.0e-4, 2.5e5 + 1e-6, 3.0]
+    v0 = [2.5e11, -1.0e12 - 1.25e5, 7.0]
+    v_r = [1e-3, 3e-4, -7.0]
+    with mpmath.workdps(60):
+        Om, rr = [mpmath.mpf(x) for x in Omega], [mpmath.mpf(x) for x in r]
+        cross = [Om[1] * rr[2] - Om[2] * rr[1], Om[2] * rr[0] - Om[0] * rr[2],
+                 Om[0] * rr[1] - Om[1] * rr[0]]
+        v_t = [float(c + mpmath.mpf(x)) for c, x in zip(cross, v0)]
+        v = [float(c + mpmath.mpf(x) + mpmath.mpf(y)) for c, x, y in zip(cross, v0, v_r)]
+    assert transport_velocity(Omega, r, v0=v0).tolist() == v_t
+    out = relative_motion(Omega, r, v_r=v_r, v0=v0)
+    assert out.v.tolist() == v
+    assert abs(v_t[1]) < 1e3  # a real cancellation: the terms are 1e12, the sum -300 m/s
+    naive = np.cross(Omega, r) + np.array(v0)
+    assert naive[1] != v_t[1]
+    cli = run("--omega", vec(Omega), "--r", vec(r), "--v0", vec(v0), "--vr", vec(v_r))
+    assert cli["v_transport"].tolist() == v_t and cli["v"].tolist() == v
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--omega", "0,0,2 rad/s", "--r", "1,0,0 m", "--value", "v"],
+     "Error: --value v: v needs --vr (the velocity relative to the frame)"),
+    (["--omega", "0,0,2 rad/s", "--r", "1,0,0 m", "--value", "a_c_mag"],
+     "Error: --value a_c_mag: a_c_mag needs --vr (the velocity relative to the frame)"),
+    (["--omega", "0,0,2 rad/s", "--vr", "1,0,0 m/s", "--value", "v_transport"],
+     "Error: --value v_transport: v_transport needs --r (the position in the frame) or --v0 "
+     "(the velocity of its origin)"),
+    (["--omega", "0,0,2 rad/s", "--vr", "1,0,0 m/s", "--value", "a_mag"],
+     "Error: --value a_mag: a_mag needs --r, --alpha, --a0 or --ar (the terms of the frame's "
+     "motion)"),
+    (["--omega", "0,0,2 rad/s", "--v0", "1,0,0 m/s", "--check", "F_c_mag=1N"],
+     "Error: --check F_c_mag: F_c_mag needs --vr (the velocity relative to the frame) and "
+     "--mass"),
+    (["--omega", "0,0,2 rad/s", "--vr", "1,0,0 m/s", "--unit", "F_c=kN"],
+     "Error: --unit F_c: F_c needs --mass"),
+    (["--omega", "2 rad/s", "--r", "1 m"],
+     "Error: --vr is missing: the scalar form (a magnitude --omega) gives a_c = 2 Omega v_r; "
+     "give --vr as a magnitude, e.g. --vr '3 m/s' (or vectors for the velocities of the frame "
+     "point)"),
+    (["--omega", "2 rad/s", "--vr", "1 m/s", "--v0", "1 m/s"],
+     "Error: --v0 needs a direction: give --omega, --vr and --v0 as vectors (3 components, "
+     "e.g. --omega '0,0,2 rad/s'); the scalar form takes only --omega, --vr, --r (distance "
+     "from the axis), --alpha and --mass"),
+    (["--omega", "0,0,2 rad/s", "--r", "1,0,0 m", "--v0", "3 m/s"],
+     "Error: --v0 is a magnitude but --omega is a vector; give --v0 with 3 components too, "
+     "e.g. '1,0,0 m/s' (or every input as a magnitude: the scalar form)"),
+])
+def test_what_is_missing_for_which_result(args, message):
+    assert refusal(*args) == message
+
+
+def test_omega_and_r_alone_give_the_frame_point():
+    """No --vr: the velocity and acceleration of the frame point, nothing that needs v_r."""
+    out = run("--omega", "0,0,2 rad/s", "--r", "1.5,0,0 m")
+    assert set(out) == {"a_euler", "a_centripetal", "a_transport", "a_transport_mag",
+                        "v_transport", "v_transport_mag"}
+    assert out["v_transport"].tolist() == [0.0, 3.0, 0.0]
+    assert out["a_transport"].tolist() == [-6.0, 0.0, 0.0]
+
+
+# --------------------------------------------------------------------------------------------
+# Components as expressions with units
+
+
+def test_components_as_expressions_with_the_trailing_unit():
+    """0.1*5*sin(35deg) takes the trailing m/s: 0.5 sin(35 deg) m/s (math.sin of the angle in
+    radians, worked out here)."""
+    out = run("--omega", "0,0,2 rad/s", "--vr", "0.1*5*sin(35deg), 0, 0 m/s")
+    speed = 0.5 * np.sin(np.radians(35.0))
+    np.testing.assert_allclose(out["a_c"], [0.0, 4.0 * speed, 0.0], rtol=1e-15)
+
+
+def test_parameters_inside_components_and_units_of_their_own():
+    """l*cos(30deg) with l=2m carries its own unit; the bare 0 takes none (SI); a component
+    with a unit of its own is taken as it is whatever the trailing unit."""
+    a = run("--omega", "0,0,2", "--r", "l*cos(30deg), l*sin(30deg), 0", "l=2m")
+    b = run("--omega", "0,0,2", "--r", "(l*cos(30deg), 200*sin(30deg), 0) cm", "l=2m")
+    c = run("--omega", "0,0,2", "--r", "173.20508075688772 cm, 1 m, 0")
+    expected = [2 * np.cos(np.radians(30.0)), 2 * np.sin(np.radians(30.0)), 0.0]
+    for out in (a, b, c):
+        np.testing.assert_allclose(out["v_transport"], [-2 * expected[1], 2 * expected[0], 0],
+                                   rtol=1e-15)
+
+
+def test_rates_in_expressions_follow_the_rate_rules():
+    out = run("--omega", "0, 0, 2*(15 rpm)", "--vr", "1,0,0")
+    assert out["a_c"].tolist() == pytest.approx([0.0, 2 * np.pi, 0.0], rel=1e-15)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--omega", "0,0,2", "--vr", "0.1*5*sin(35deg, 0, 0 m/s"],
+     "Error: --vr: this '(' is never closed at column 10: '0.1*5*sin(35deg, 0, 0 m/s'"),
+    (["--omega", "0,0,2", "--vr", "0.1*5*open(35deg), 0, 0 m/s"],
+     "Error: --vr: unknown function 'open' (the functions are sin, cos, tan, exp, log, sqrt, "
+     "sinh, cosh, atan2, abs) at column 7: '0.1*5*open(35deg), 0, 0 m/s'"),
+    (["--omega", "0,0,2", "--vr", "0, 2*x, 0 m/s"],
+     "Error: --vr: unknown name 'x' (the names here are pi, t) at column 6: '0, 2*x, 0 m/s'"),
+    (["--omega", "0,0,2", "--vr", "0, 0.5*sin(35 m), 0 m/s"],
+     "Error: --vr: sin() takes a pure number or an angle; got [length] at column 8: "
+     "'0, 0.5*sin(35 m), 0 m/s'"),
+    (["--omega", "0,0,2", "--r", "l*cos(30deg), l*sin(30deg), 0", "l=2kg"],
+     "Error: --r: component 1 is [mass], not length [length] at column 1: "
+     "'l*cos(30deg), l*sin(30deg), 0'"),
+    (["--omega", "0, 0, 2*(3 Hz)", "--vr", "1,0,0"],
+     "Error: --omega is an angular rate; give it in rad/s, deg/s, rpm or rev/s, not Hz (a "
+     "frequency in cycles)"),
+    (["--omega", "0,0,2", "--r", "l, 0, 0", "l=2m", "l=3m"],
+     "Error: l is given twice (l= twice)"),
+    (["--omega", "0,0,2", "--vr", "1,0,0", "omega=1rad/s"],
+     "Error: omega is given twice (--omega and omega=)"),
+    (["--omega", "0,0,2", "--vr", "1/0, 0, 0 m/s"],
+     "Error: --vr: a constant here overflows float64, divides by zero or takes a fractional "
+     "power of a negative number at column 2: '1/0, 0, 0 m/s'"),
+    (["--omega", "0,0,2", "--r", "2*t, 0, 0 m"],
+     "Error: --r: component 1 depends on t: motion given in time needs --t (the time to "
+     "evaluate at)"),
+    (["--omega", "0,0,2 rad/s", "--r", "l, 0, 0", "l=2m", "--strict-units", "--vr",
+      "sin(1),0,0"],
+     "Error: --vr: 'sin(1),0,0' has no unit and --strict-units is on; write it with a unit, "
+     "e.g. sin(1),0,0 m/s"),
+])
+def test_expression_refusals_point_at_the_character(args, message):
+    assert refusal(*args) == message
