@@ -234,16 +234,22 @@ def _complete_words(words):
     return complete
 
 
-def build_command(record, *, rows=None, after=None, cls=None):
+def build_command(record, *, rows=None, after=None, cls=None, route=None):
     """The click command of a :class:`dyncalc.commands.record.Command`: an option per
     parameter, in the record's order (a ``choice``, or a setting with fixed words, validated
     by click; words given as a function only completed), the free words as an argument, the
     shared output options. The callback runs ``record.compute`` on the texts as typed, or
     with ``--batch`` the row adapter ``rows(settings, out)`` over the file's rows; ``after``
     acts on the result before it is shown (``--plot``); ``cls`` a subclass of
-    :class:`Command` that reads the command line its own way."""
+    :class:`Command` that reads the command line its own way; ``route(values, words, out)``
+    runs first and may take the run over (an exit status) or leave it (``None``): coriolis's
+    list of times."""
 
     def callback(out, words=(), **values):
+        if route is not None:
+            status = route(values, words, out)
+            if status is not None:
+                return status
         if out.batch is not None:
             settings = {p.name: values[p.name] for p in record.parameters
                         if p.kind == "setting"}

@@ -14,6 +14,8 @@ frame's (``x_fixed = Q(t) x_rotating``, ``Q(0) = I``).
 """
 from __future__ import annotations
 
+import math
+
 from ..errors import InputError
 from ..lazy import numpy as np
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
@@ -106,6 +108,7 @@ class TimeInputs:
 
 def _parameters(words, strict: bool):
     """``NAME=QUANTITY`` words -> (SI values, Dimensions, entries)."""
+    from .eom_units import unit_text
     from ..units.expression import Dimension
     from ..units.grammar import quantity_in_base
 
@@ -124,7 +127,8 @@ def _parameters(words, strict: bool):
         if strict and not any(ch.isalpha() for ch in text) and value != 0:
             raise InputError(f"{name}={text}: a bare number with --strict-units; give its unit")
         values[name], dims[name] = value, Dimension(powers)
-        entries[name] = Entry(name, value, None, text=text, reading=reading,
+        entries[name] = Entry(name, value, None, unit=unit_text(dims[name]), text=text,
+                              reading=reading,
                               description="parameter of the expressions")
     return values, dims, entries
 
@@ -145,6 +149,14 @@ def read_time(texts: dict[str, str | None], words=(), strict: bool = False) -> T
             raise InputError(f"--{name} does not go with a motion given in time (--t): the "
                              "Earth mode takes constant vectors")
     if "t" not in texts:
+        from ..units.split import split_top
+        from ..units.timevector import has_time
+
+        for name in TIME_OPTIONS:
+            for index, part in enumerate(split_top(texts.get(name) or "", ","), 1):
+                if has_time(part):
+                    raise InputError(f"--{name}: component {index} depends on t: motion given "
+                                     "in time needs --t (the time to evaluate at)")
         given = next(n for n in ("r", "omega", "R0") if n in texts)
         raise InputError(f"--t is missing: --{given} is a motion given in time; give the time "
                          "to evaluate it at, e.g. --t 2s")
@@ -288,3 +300,61 @@ def compute_time(inputs: TimeInputs) -> Result:
 def time_result(texts: dict[str, str | None], words=(), *, strict: bool = False) -> Result:
     """:func:`read_time` then :func:`compute_time`."""
     return compute_time(read_time(texts, words, strict))
+
+
+class PathData:
+    """What ``--plot`` draws (:func:`path_data`): ``times`` (s), ``path`` (n, 3: the point's
+    position in the fixed frame, NaN where the expressions are not defined), ``point``, ``v``,
+    ``a`` (fixed components at ``t``), the window's ``reason``."""
+
+    __slots__ = ("times", "path", "t", "point", "v", "a", "reason")
+
+    def __init__(self, **values):
+        for name in self.__slots__:
+            setattr(self, name, values[name])
+
+
+#: Points along the plotted path.
+PATH_POINTS = 400
+
+
+def plot_window(t: float, rate: float, speed: float, accel: float) -> tuple[float, float, str]:
+    """The time window ``--plot`` draws around ``t``: one turn of the frame centred on ``t``
+    (``t +- pi/|Omega(t)|``) when it turns; else ``t +- |v|/|a|`` (the time over which the
+    velocity changes by itself) when both are non-zero; else ``t +- 1 s``; never before
+    ``t = 0`` when ``t >= 0`` (the frames coincide at ``t = 0``, where the motion starts)."""
+    if rate > 0.0:
+        half, reason = math.pi / rate, "one turn of the frame centred on t"
+    elif speed > 0.0 and accel > 0.0:
+        half, reason = speed / accel, "t +- |v|/|a|"
+    else:
+        half, reason = 1.0, "t +- 1 s"
+    start = t - half
+    if t >= 0.0 and start < 0.0:
+        start, reason = 0.0, reason + ", from t = 0"
+    return start, t + half, reason
+
+
+def path_data(values: dict[str, str | None], words=(), *, strict: bool = False) -> PathData:
+    """The point's path in the fixed frame over :func:`plot_window` and its velocity and
+    acceleration at ``--t`` in fixed components, for ``--plot``."""
+    from ..physics.relative_time import motion_in_time
+
+    inputs = read_time({name: values.get(name) for name in values
+                        if name not in ("plot", "scene")}, words, strict)
+    inputs.basis = "fixed"
+    result = compute_time(inputs)
+    vec = inputs.vectors
+    motion = motion_in_time(vec.get("r"), vec.get("omega"), vec.get("R0"), inputs.params)
+    res = result.results
+    rate = float(np.linalg.norm(result.results["Omega"].si))
+    start, end, reason = plot_window(inputs.t, rate, res["v_mag"].si, res["a_mag"].si)
+    times = np.linspace(start, end, PATH_POINTS)
+    path = np.full((PATH_POINTS, 3), np.nan)
+    for i, s in enumerate(times):
+        try:
+            path[i] = motion.positions([s])[0]
+        except Exception:  # noqa: BLE001 - a time where an expression is not defined: a gap
+            continue
+    return PathData(times=times, path=path, t=inputs.t, point=np.asarray(res["R"].si),
+                    v=np.asarray(res["v"].si), a=np.asarray(res["a"].si), reason=reason)

@@ -16,8 +16,8 @@ from __future__ import annotations
 import math
 
 from ..errors import PhysicsError
-from ..units import Q_
-from .face import magnitude
+from ..units import ANGLE, ANGULAR_RATE, LENGTH, MASS, Q_, TIME
+from .face import check_units, magnitude
 from .outcome import Outcome
 
 __all__ = ["radial_slot_release", "slotted_link"]
@@ -30,6 +30,7 @@ def _acosh_ratio(r: float, a: float) -> float:
     return math.log1p(u + math.sqrt(u * (u + 2.0)))
 
 
+@check_units(Omega=ANGULAR_RATE, a=LENGTH, r=LENGTH, m=MASS, t=TIME)
 def radial_slot_release(Omega, a, r, m=None, t=None) -> Outcome:
     """A block released from rest relative to a platform turning at constant ``Omega``, in a
     frictionless radial slot through the centre (E6.7 of [1]).
@@ -94,6 +95,7 @@ def radial_slot_release(Omega, a, r, m=None, t=None) -> Outcome:
                                 "the sense of the rotation"])
 
 
+@check_units(d=LENGTH, c=LENGTH, theta=ANGLE, omega=ANGULAR_RATE)
 def slotted_link(d, c, theta, omega) -> Outcome:
     """The pin C of a drum (centre B, turning at ``omega``) sliding in the slot of a link
     turning about A, ``AB = d``, ``BC = c``, ``theta`` the angle of BC from the direction A to
