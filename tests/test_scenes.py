@@ -25,6 +25,7 @@ SCENES_MD = {
     "bead-on-rotating-ring", "quarter-car", "rod-in-fluid", "frame-brace-damper",
     "mass-spring-given-response", "rolling-wheel-moving-ground",
     "block-disk-springs", "spring-coupled-pendulums", "pendulum-on-sliding-block",
+    "radial-slot-release", "slotted-link",
 }
 
 SCENES = list(catalog().values())
@@ -39,7 +40,8 @@ def run_json(words):
 
 def example_words(scene):
     words = shlex.split(scene.example)
-    assert words[0] == "dyncalc" and words[1] in ("natural-frequency", "forced-response"), \
+    assert words[0] == "dyncalc" and words[1] in ("natural-frequency", "forced-response",
+                                                  "coriolis"), \
         scene.example
     return words[1:]
 
@@ -56,7 +58,7 @@ def test_scenes_json_lists_every_scene_with_dimensions():
         for p in scene["params"]:
             assert p["dimension"], (scene["name"], p["name"])
         assert scene["example"].startswith(("dyncalc natural-frequency",
-                                            "dyncalc forced-response"))
+                                            "dyncalc forced-response", "dyncalc coriolis"))
 
 
 @pytest.mark.parametrize("scene", SCENES, ids=IDS)

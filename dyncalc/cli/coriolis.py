@@ -23,7 +23,7 @@ def _route(values, words, out):
         return None
     times = split_times(values["t"]) if values.get("t") is not None else None
     plot = values.get("plot")
-    if out.batch is None and times is not None and len(times) == 1:
+    if out.batch is None and (times is None or len(times) == 1):
         if plot is None:
             return None
         result = out.compute(lambda: COMMAND.compute(values, words, rtol=out.rtol,
