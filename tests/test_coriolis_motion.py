@@ -278,3 +278,43 @@ def test_rates_in_expressions_follow_the_rate_rules():
 ])
 def test_expression_refusals_point_at_the_character(args, message):
     assert refusal(*args) == message
+
+
+# --------------------------------------------------------------------------------------------
+# Earth mode: the horizontal part
+
+
+def test_rail_example_total_force_against_the_sideways_push():
+    """Issue 20's rail: 1458 N total but 995 N sideways. A train of 200 t running east at
+    180 km/h at 43 deg N: |F_c| = 2 m W v (its velocity is perpendicular to the axis), and the
+    push on level rails is the horizontal part, 2 m W v sin(phi) (the rest is vertical)."""
+    out = run("--latitude", "43deg", "--speed", "180 km/h", "--heading", "90deg", "--mass",
+              "200 t")
+    W, m, v, phi = (mpmath.mpf(x) for x in ("7.2921159e-5", "2e5", "50", "43"))
+    total = 2 * m * W * v
+    sideways = total * mpmath.sin(mpmath.radians(phi))
+    assert out["F_c_mag"] == pytest.approx(float(total), rel=1e-14)
+    assert out["F_c_horizontal_mag"] == pytest.approx(float(sideways), rel=1e-14)
+    assert round(out["F_c_mag"]) == 1458 and round(out["F_c_horizontal_mag"]) == 995
+    assert out["F_c_horizontal"][2] == 0.0
+    assert out["F_c_horizontal"][1] == pytest.approx(-float(sideways), rel=1e-14)  # south
+    assert out["a_c_horizontal_mag"] == pytest.approx(float(sideways / m), rel=1e-14)
+
+
+def test_horizontal_part_does_not_depend_on_the_heading():
+    """For horizontal motion |a_c,h| = 2 W v sin(phi) = f v whatever the heading."""
+    values = [run("--latitude", "-35deg", "--speed", "20 m/s", "--heading", f"{h}deg")
+              for h in (0, 37, 90, 200)]
+    f = values[0]["coriolis_parameter"]
+    for out in values:
+        assert out["a_c_horizontal_mag"] == pytest.approx(abs(f) * 20.0, rel=1e-14)
+
+
+def test_textbook_rate_one_turn_a_day():
+    """The textbook's Omega = 2 pi / day is --omega "1 turn/day" (not the sidereal rate)."""
+    out = run("--latitude", "43deg", "--speed", "180 km/h", "--heading", "90deg", "--mass",
+              "200 t", "--omega", "1 turn/day")
+    W = 2 * mpmath.pi / 86400
+    assert out["Omega"][1] == pytest.approx(float(W * mpmath.cos(mpmath.radians(43))),
+                                            rel=1e-15)
+    assert out["F_c_mag"] == pytest.approx(float(2 * 2e5 * W * 50), rel=1e-14)

@@ -86,6 +86,13 @@ _KINDS = {  # result name -> (dim, unit, vector symbol, magnitude symbol, descri
     "Omega": (ANGULAR_RATE, "rad/s", "Ω", "Ω", "Earth's angular velocity (east, north, up)"),
     "v_r": (VELOCITY, "m/s", "v_r", "v_r", "velocity relative to the Earth (east, north, up)"),
     "coriolis_parameter": (RATE, "1/s", "2Ω sinφ", "2Ω sinφ", "Coriolis parameter f"),
+    "a_c_horizontal": (ACCELERATION, "m/s^2", "a_c,h", "|a_c,h|",
+                       "horizontal part of a_c (east, north, 0)"),
+    "a_c_horizontal_mag": (ACCELERATION, "m/s^2", "|a_c,h|", "|a_c,h|",
+                           "magnitude of a_c_horizontal"),
+    "F_c_horizontal": (FORCE, "N", "F_c,h", "|F_c,h|",
+                       "horizontal part of F_c (east, north, 0): the sideways push"),
+    "F_c_horizontal_mag": (FORCE, "N", "|F_c,h|", "|F_c,h|", "magnitude of F_c_horizontal"),
 }
 
 _COMPASS = ["north", "north-north-east", "north-east", "east-north-east", "east",
@@ -211,6 +218,11 @@ def _entry(name: str, si, vector: bool) -> Entry:
                                f"{unit})")
     return Entry(name, value, dim, unit=unit, symbol=vsym if vector else ssym,
                  description=description)
+
+
+def _horizontal(v):
+    """The east and north components of an east-north-up vector, up set to zero."""
+    return np.array([float(v[0]), float(v[1]), 0.0]) + 0.0
 
 
 def _mag(v) -> float:
@@ -616,6 +628,12 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
             results["v_r"] = _entry("v_r", fa.v_r, True)
         results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]),
                                                False)
+        for name, vector in (("a_c", fa.a_c), ("F_c", fa.F_c)):
+            if vector is not None:
+                flat = _horizontal(vector)
+                results[name + "_horizontal"] = _entry(name + "_horizontal", flat, True)
+                results[name + "_horizontal_mag"] = _entry(name + "_horizontal_mag",
+                                                           _mag(flat), False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
     substituted += _vector_lines(fa, full, None if mass is None else mass.si,
@@ -1046,12 +1064,18 @@ def _frame_slopes(fa, m: float | None, move: tuple, v_transport=None,
            "v_transport": dv_t, "v": dv_t + dv}
     if v_transport is not None:
         row["v_transport_mag"] = _norm_slope(v_transport, dv_t, side)
+    flat = _horizontal(da_c)
+    row["a_c_horizontal"] = flat
+    row["a_c_horizontal_mag"] = _norm_slope(_horizontal(fa.a_c), flat, side)
     if v_abs is not None:
         row["v_mag"] = _norm_slope(v_abs, dv_t + dv, side)
     if m is not None:
         dF_c = -(m * da_c + dm * fa.a_c)
         row["F_c"] = dF_c
         row["F_c_mag"] = _norm_slope(fa.F_c, dF_c, side)
+        row["F_c_horizontal"] = _horizontal(dF_c)
+        row["F_c_horizontal_mag"] = _norm_slope(_horizontal(fa.F_c), _horizontal(dF_c),
+                                                side)
     return row
 
 
