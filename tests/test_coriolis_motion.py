@@ -278,3 +278,111 @@ def test_rates_in_expressions_follow_the_rate_rules():
 ])
 def test_expression_refusals_point_at_the_character(args, message):
     assert refusal(*args) == message
+
+
+# --------------------------------------------------------------------------------------------
+# Earth mode: the horizontal part
+
+
+def test_rail_example_total_force_against_the_sideways_push():
+    """Issue 20's rail: 1458 N total but 995 N sideways. A train of 200 t running east at
+    180 km/h at 43 deg N: |F_c| = 2 m W v (its velocity is perpendicular to the axis), and the
+    push on level rails is the horizontal part, 2 m W v sin(phi) (the rest is vertical)."""
+    out = run("--latitude", "43deg", "--speed", "180 km/h", "--heading", "90deg", "--mass",
+              "200 t")
+    W, m, v, phi = (mpmath.mpf(x) for x in ("7.2921159e-5", "2e5", "50", "43"))
+    total = 2 * m * W * v
+    sideways = total * mpmath.sin(mpmath.radians(phi))
+    assert out["F_c_mag"] == pytest.approx(float(total), rel=1e-14)
+    assert out["F_c_horizontal_mag"] == pytest.approx(float(sideways), rel=1e-14)
+    assert round(out["F_c_mag"]) == 1458 and round(out["F_c_horizontal_mag"]) == 995
+    assert out["F_c_horizontal"][2] == 0.0
+    assert out["F_c_horizontal"][1] == pytest.approx(-float(sideways), rel=1e-14)  # south
+    assert out["a_c_horizontal_mag"] == pytest.approx(float(sideways / m), rel=1e-14)
+
+
+def test_horizontal_part_does_not_depend_on_the_heading():
+    """For horizontal motion |a_c,h| = 2 W v sin(phi) = f v whatever the heading."""
+    values = [run("--latitude", "-35deg", "--speed", "20 m/s", "--heading", f"{h}deg")
+              for h in (0, 37, 90, 200)]
+    f = values[0]["coriolis_parameter"]
+    for out in values:
+        assert out["a_c_horizontal_mag"] == pytest.approx(abs(f) * 20.0, rel=1e-14)
+
+
+def test_textbook_rate_one_turn_a_day():
+    """The textbook's Omega = 2 pi / day is --omega "1 turn/day" (not the sidereal rate)."""
+    out = run("--latitude", "43deg", "--speed", "180 km/h", "--heading", "90deg", "--mass",
+              "200 t", "--omega", "1 turn/day")
+    W = 2 * mpmath.pi / 86400
+    assert out["Omega"][1] == pytest.approx(float(W * mpmath.cos(mpmath.radians(43))),
+                                            rel=1e-15)
+    assert out["F_c_mag"] == pytest.approx(float(2 * 2e5 * W * 50), rel=1e-14)
+
+
+# --------------------------------------------------------------------------------------------
+# Scalar inverse problems
+
+
+def value(*args):
+    result = CliRunner().invoke(cli, ["coriolis", *args])
+    assert result.exit_code == 0, result.output + result.stderr
+    return [float(x) for x in result.stdout.split()]
+
+
+def test_inverse_earth_speed_from_the_coriolis_acceleration():
+    """a_c_mag = 0.01 m/s^2 at 45 deg N heading north: v = a / (2 W sin 45deg) (mpmath), and
+    the forward one-off at that speed gives the 0.01 back."""
+    (v,) = value("a_c_mag=0.01m/s^2", "--latitude", "45deg", "vr=?", "--value", "vr")
+    W = mpmath.mpf("7.2921159e-5")
+    assert v == pytest.approx(float(mpmath.mpf("0.01") / (2 * W * mpmath.sin(mpmath.pi / 4))),
+                              rel=1e-14)
+    (a,) = value("--latitude", "45deg", "--speed", f"{v!r} m/s", "--heading", "0deg",
+                 "--value", "a_c_mag")
+    assert a == pytest.approx(0.01, rel=1e-14)
+
+
+def test_inverse_earth_latitude_and_mass_round_trip():
+    (phi,) = value("a_c_mag=0.01m/s^2", "--speed", "100 m/s", "latitude=?", "--value",
+                   "latitude")
+    (a,) = value("--latitude", f"{phi!r} rad", "--speed", "100 m/s", "--heading", "0deg",
+                 "--value", "a_c_mag")
+    assert a == pytest.approx(0.01, rel=1e-12)
+    assert 0 < phi < np.pi / 2  # the northern root; -phi gives the same |a_c|
+    (m,) = value("F_c_horizontal_mag=995N", "--latitude", "43deg", "--speed", "180 km/h",
+                 "--heading", "90deg", "mass=?", "--value", "mass")
+    (push,) = value("--latitude", "43deg", "--speed", "180 km/h", "--heading", "90deg",
+                    "--mass", f"{m!r} kg", "--value", "F_c_horizontal_mag")
+    assert push == pytest.approx(995.0, rel=1e-13)
+
+
+@pytest.mark.parametrize("unknown, given, expected", [
+    ("vr", ["--omega", "2rad/s"], 3.0), ("omega", ["--vr", "3m/s"], 2.0),
+])
+def test_inverse_perpendicular_round_trip(unknown, given, expected):
+    """a_c = 2 Omega v_r = 12 m/s^2 at Omega = 2 rad/s, v_r = 3 m/s, solved for each."""
+    (x,) = value("a_c=12m/s^2", *given, f"{unknown}=?", "--value", unknown)
+    assert x == pytest.approx(expected, rel=1e-15)
+    (m,) = value("F_c=24N", "--omega", "2rad/s", "--vr", "3m/s", "mass=?", "--value", "mass")
+    assert m == pytest.approx(2.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--omega", "2rad/s", "--vr", "3m/s", "mass=?"],
+     "Error: mass=? needs a result to solve from: one of a_c, F_c, e.g. a_c=0.01m/s^2"),
+    (["a_c_mag=0.01m/s^2", "--omega", "2rad/s", "vr=?"],
+     "Error: a_c_mag= is not a result of this form: with magnitudes give one of a_c, F_c (or "
+     "use --latitude)"),
+    (["a_c=0.01m/s^2", "--omega", "2rad/s", "--r", "1m", "vr=?"],
+     "Error: --r does not go with an inverse problem: coriolis solves a_c = 2 Omega v_r, "
+     "F_c = m a_c for one unknown from omega, vr, mass"),
+    (["a_c=0.01m/s^2", "--omega", "0,0,2", "vr=?"],
+     "Error: --omega: an inverse problem takes magnitudes (perpendicular vectors), e.g. "
+     "--omega 2rad/s; give vectors to compute forward"),
+    (["a_c_mag=0.01m/s^2", "--speed", "1m/s", "latitude=?"],
+     "Error: no value of latitude gives a_c_mag = 0.01 m/s^2 in coriolis-earth with the other "
+     "parameters given; over the values of latitude tried it ranges from 0 to 0.000145842 "
+     "m/s^2"),
+])
+def test_inverse_refusals(args, message):
+    assert refusal(*args) == message

@@ -86,6 +86,13 @@ _KINDS = {  # result name -> (dim, unit, vector symbol, magnitude symbol, descri
     "Omega": (ANGULAR_RATE, "rad/s", "Ω", "Ω", "Earth's angular velocity (east, north, up)"),
     "v_r": (VELOCITY, "m/s", "v_r", "v_r", "velocity relative to the Earth (east, north, up)"),
     "coriolis_parameter": (RATE, "1/s", "2Ω sinφ", "2Ω sinφ", "Coriolis parameter f"),
+    "a_c_horizontal": (ACCELERATION, "m/s^2", "a_c,h", "|a_c,h|",
+                       "horizontal part of a_c (east, north, 0)"),
+    "a_c_horizontal_mag": (ACCELERATION, "m/s^2", "|a_c,h|", "|a_c,h|",
+                           "magnitude of a_c_horizontal"),
+    "F_c_horizontal": (FORCE, "N", "F_c,h", "|F_c,h|",
+                       "horizontal part of F_c (east, north, 0): the sideways push"),
+    "F_c_horizontal_mag": (FORCE, "N", "|F_c,h|", "|F_c,h|", "magnitude of F_c_horizontal"),
 }
 
 _COMPASS = ["north", "north-north-east", "north-east", "east-north-east", "east",
@@ -211,6 +218,11 @@ def _entry(name: str, si, vector: bool) -> Entry:
                                f"{unit})")
     return Entry(name, value, dim, unit=unit, symbol=vsym if vector else ssym,
                  description=description)
+
+
+def _horizontal(v):
+    """The east and north components of an east-north-up vector, up set to zero."""
+    return np.array([float(v[0]), float(v[1]), 0.0]) + 0.0
 
 
 def _mag(v) -> float:
@@ -391,7 +403,70 @@ def coriolis_result(texts: dict[str, str | None], words=(), *,
     >>> res.results["a_c"].si, res.results["a_c"].unit
     (12.0, 'm/s^2')
     """
+    solved = _inverse(texts, words, strict)
+    if solved is not None:
+        return solved
     return compute(read(texts, strict, words))
+
+
+#: Options an inverse problem reads, by set-up: option -> the scene parameter it gives.
+_INVERSE_OPTIONS = {"perpendicular": {"omega": "omega", "vr": "vr", "mass": "mass"},
+                    "earth": {"latitude": "latitude", "vr": "vr", "speed": "vr",
+                              "heading": "heading", "omega": "omega", "mass": "mass"}}
+
+
+def _inverse(texts: dict[str, str | None], words, strict: bool) -> Result | None:
+    """A scalar inverse problem (``a_c=12m/s^2 --omega 2rad/s vr=?``,
+    ``a_c_mag=0.01m/s^2 --latitude 45deg vr=?``) solved through
+    :func:`dyncalc.scenes.inverse.solve`, or ``None`` when the words pose none."""
+    if not words:
+        return None
+    from ..result.checks import split_assignment
+    from ..scenes.coriolis_scalar import EARTH, PERPENDICULAR, TARGETS
+
+    pairs = [split_assignment(word, "a parameter") for word in words]
+    every = {n for names in TARGETS.values() for n in names}
+    if not any(name in every or text.strip() == "?" for name, text in pairs):
+        return None
+    earthly = ("latitude", "speed", "heading")
+    form = ("earth" if any(texts.get(n) is not None for n in earthly)
+            or any(name in earthly for name, _text in pairs) else "perpendicular")
+    scene = EARTH if form == "earth" else PERPENDICULAR
+    allowed = _INVERSE_OPTIONS[form]
+    scene_texts: dict[str, str] = {}
+    labels: dict[str, str] = {}
+    for option, text in texts.items():
+        if text is None:
+            continue
+        if option not in allowed:
+            raise InputError(f"--{option} does not go with an inverse problem: coriolis "
+                             f"solves {scene.formula} for one unknown from "
+                             f"{', '.join(p.name for p in scene.params)}")
+        if form == "perpendicular" and "," in text:
+            raise InputError(f"--{option}: an inverse problem takes magnitudes (perpendicular "
+                             "vectors), e.g. --omega 2rad/s; give vectors to compute forward")
+        name = allowed[option]
+        if name in scene_texts:
+            raise InputError("give --vr or --speed, not both")
+        scene_texts[name], labels[name] = text, f"--{option}"
+    if not any(name in every for name, _text in pairs):
+        asked = next(name for name, text in pairs if text.strip() == "?")
+        raise InputError(f"{asked}=? needs a result to solve from: one of "
+                         f"{', '.join(TARGETS[form])}, e.g. {TARGETS[form][0]}=0.01m/s^2")
+    for name, text in pairs:
+        if name in every and name not in TARGETS[form]:
+            other = ("--latitude" if form == "perpendicular" else "magnitudes without "
+                     "--latitude")
+            raise InputError(f"{name}= is not a result of this form: with "
+                             f"{'magnitudes' if form == 'perpendicular' else '--latitude'} "
+                             f"give one of {', '.join(TARGETS[form])} (or use {other})")
+        if name in scene_texts:
+            raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
+        scene_texts[name], labels[name] = text, f"{name}="
+    from ..scenes.inverse import solve
+
+    return solve(scene, scene_texts, labels=labels, method=None, rtol=None, strict=strict,
+                 command="coriolis")
 
 
 def read(texts: dict[str, str | None], strict: bool = False, words=()) -> CoriolisInputs:
@@ -616,6 +691,12 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
             results["v_r"] = _entry("v_r", fa.v_r, True)
         results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]),
                                                False)
+        for name, vector in (("a_c", fa.a_c), ("F_c", fa.F_c)):
+            if vector is not None:
+                flat = _horizontal(vector)
+                results[name + "_horizontal"] = _entry(name + "_horizontal", flat, True)
+                results[name + "_horizontal_mag"] = _entry(name + "_horizontal_mag",
+                                                           _mag(flat), False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
     substituted += _vector_lines(fa, full, None if mass is None else mass.si,
@@ -1046,12 +1127,18 @@ def _frame_slopes(fa, m: float | None, move: tuple, v_transport=None,
            "v_transport": dv_t, "v": dv_t + dv}
     if v_transport is not None:
         row["v_transport_mag"] = _norm_slope(v_transport, dv_t, side)
+    flat = _horizontal(da_c)
+    row["a_c_horizontal"] = flat
+    row["a_c_horizontal_mag"] = _norm_slope(_horizontal(fa.a_c), flat, side)
     if v_abs is not None:
         row["v_mag"] = _norm_slope(v_abs, dv_t + dv, side)
     if m is not None:
         dF_c = -(m * da_c + dm * fa.a_c)
         row["F_c"] = dF_c
         row["F_c_mag"] = _norm_slope(fa.F_c, dF_c, side)
+        row["F_c_horizontal"] = _horizontal(dF_c)
+        row["F_c_horizontal_mag"] = _norm_slope(_horizontal(fa.F_c), _horizontal(dF_c),
+                                                side)
     return row
 
 

@@ -228,3 +228,104 @@ def _transport_velocity_columns(Omega, r, v0=None, v_r=None) -> Columns:
     addends = [np.asarray(x, dtype=float) + 0.0 for x in (v0, v_r) if x is not None]
     value, ok = _transport_rows(_ScaledRows.of(Omega), _ScaledRows.of(r), addends)
     return Columns({"v": value}, exact=ok, model="vectors")
+
+
+# --------------------------------------------------------------------------------------------
+# Scalar set-ups for inverse problems (dyncalc.scenes.coriolis)
+
+
+def coriolis_perpendicular(omega, vr, mass=None):
+    """Magnitudes of the Coriolis term for a velocity perpendicular to the rotation axis.
+
+    .. math:: a_c = 2\\,\\Omega\\,v_r, \\qquad F_c = m\\,a_c
+
+    Parameters
+    ----------
+    omega : Quantity or float
+        Angular velocity of the frame ``[angle]/[time]`` (SI: rad/s).
+    vr : Quantity or float
+        Speed relative to the frame ``[length]/[time]`` (m/s), perpendicular to the axis.
+    mass : Quantity or float, optional
+        Mass ``[mass]`` (kg): adds ``F_c``.
+
+    Returns
+    -------
+    Outcome with ``a_c`` (m/s^2) and, with a mass, ``F_c`` (N).
+
+    Examples
+    --------
+    >>> coriolis_perpendicular(2.0, 3.0).values["a_c"].magnitude
+    12.0
+
+    Reference: [1], eq. (6.15), the Coriolis term.
+    """
+    from ..units import Q_
+    from .face import magnitude as value_in
+    from .outcome import Outcome
+
+    a_c = _finite_term("a_c", 2.0 * value_in(omega, "rad/s") * value_in(vr, "m/s"))
+    values = {"a_c": Q_(a_c, "m/s^2")}
+    if mass is not None:
+        values["F_c"] = Q_(_finite_term("F_c", value_in(mass, "kg") * a_c), "N")
+    return Outcome(values, model="magnitudes (perpendicular vectors)")
+
+
+def coriolis_earth(latitude, vr, heading=0.0, omega=None, mass=None):
+    """The Coriolis term of horizontal motion over the rotating Earth, by magnitude.
+
+    .. math:: \\mathbf a_c = 2\\,\\boldsymbol\\Omega\\times\\mathbf v_r,\\quad
+              \\boldsymbol\\Omega = \\Omega_E(0, \\cos\\varphi, \\sin\\varphi),\\quad
+              \\mathbf v_r = v(\\sin\\psi, \\cos\\psi, 0)
+
+    so ``|a_c| = 2 Omega_E v sqrt(sin^2 phi + cos^2 phi sin^2 psi)`` and the horizontal part
+    ``|a_c,h| = 2 Omega_E v |sin phi|`` whatever the heading.
+
+    Parameters
+    ----------
+    latitude : Quantity or float
+        Latitude ``[angle]`` (a float: radians), positive north.
+    vr : Quantity or float
+        Horizontal speed over the ground ``[length]/[time]`` (m/s).
+    heading : Quantity or float, optional
+        Compass heading ``[angle]`` (0 north, 90 deg east); default north, where
+        ``|a_c| = 2 Omega_E v sin(phi)``, the textbook's ``f v``.
+    omega : Quantity or float, optional
+        The Earth's rotation rate ``[angle]/[time]`` (default the sidereal 7.2921159e-5 rad/s).
+    mass : Quantity or float, optional
+        Mass ``[mass]``: adds ``F_c_mag`` and ``F_c_horizontal_mag``.
+
+    Returns
+    -------
+    Outcome with ``a_c_mag``, ``a_c_horizontal_mag`` (m/s^2) and with a mass ``F_c_mag``,
+    ``F_c_horizontal_mag`` (N).
+
+    Examples
+    --------
+    >>> out = coriolis_earth(math.radians(90), 10.0)
+    >>> out.values["a_c_mag"].magnitude
+    0.00145842318
+
+    Reference: [1], Chapter 6 (relative motion), the rotating Earth.
+    """
+    from ..units import Q_
+    from .frames import EARTH_RATE, coriolis_acceleration, earth_angular_velocity, enu_velocity
+    from .face import magnitude as value_in
+    from .outcome import Outcome
+
+    Omega = earth_angular_velocity(latitude, EARTH_RATE if omega is None else omega)
+    a_c = coriolis_acceleration(Omega, enu_velocity(vr, heading))
+    flat = np.array([a_c[0], a_c[1], 0.0]) + 0.0
+    values = {"a_c_mag": Q_(_finite_term("a_c_mag", magnitude(a_c)), "m/s^2"),
+              "a_c_horizontal_mag": Q_(magnitude(flat), "m/s^2")}
+    if mass is not None:
+        m = value_in(mass, "kg")
+        values["F_c_mag"] = Q_(_finite_term("F_c_mag", m * magnitude(a_c)), "N")
+        values["F_c_horizontal_mag"] = Q_(_finite_term("F_c_horizontal_mag",
+                                                       m * magnitude(flat)), "N")
+    return Outcome(values, model="Earth, horizontal motion")
+
+
+def _finite_term(name: str, value: float) -> float:
+    if not math.isfinite(value):
+        raise PhysicsError(f"{name} overflows float64 at these inputs")
+    return value

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import re
 
-from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DECAY_RATE, DIMENSIONLESS, FORCE,
+from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DECAY_RATE, DIMENSIONLESS, FORCE,
                      INERTIA, LENGTH, LINEAR_DRAG, MASS, STIFFNESS, TIME, VELOCITY, Dim)
 from ..records import Frozen
 
@@ -45,6 +45,15 @@ _FIXED = {
     "Omega": ResultKind(ANGULAR_RATE, "rad/s", "Ω", "forcing angular frequency"),
     "beta_crit": ResultKind(LINEAR_DRAG, "N*s/m^2", "β_crit", "critical drag coefficient"),
     "error_estimate": ResultKind(DIMENSIONLESS, "", "ε", "relative error estimate"),
+    # the coriolis command's scalar set-ups (its inverse problems)
+    "a_c": ResultKind(ACCELERATION, "m/s^2", "a_c", "Coriolis acceleration 2 Omega v_r"),
+    "F_c": ResultKind(FORCE, "N", "F_c", "Coriolis force m a_c"),
+    "a_c_mag": ResultKind(ACCELERATION, "m/s^2", "|a_c|", "magnitude of a_c"),
+    "F_c_mag": ResultKind(FORCE, "N", "|F_c|", "magnitude of F_c"),
+    "a_c_horizontal_mag": ResultKind(ACCELERATION, "m/s^2", "|a_c,h|",
+                                     "horizontal part of a_c"),
+    "F_c_horizontal_mag": ResultKind(FORCE, "N", "|F_c,h|",
+                                     "horizontal part of F_c (the sideways push)"),
     # forced response (forced-response)
     "eta": ResultKind(DIMENSIONLESS, "", "η", "frequency ratio Omega/omega"),
     "X": ResultKind(LENGTH, "m", "X", "steady amplitude"),
