@@ -40,7 +40,7 @@ def mp_precision():
 # -- helpers ---------------------------------------------------------------------------------
 
 #: The commands a scene's example runs (forced scenes: forced-response).
-EXAMPLE_COMMANDS = ("natural-frequency", "forced-response")
+EXAMPLE_COMMANDS = ("natural-frequency", "forced-response", "coriolis")
 
 
 def example_texts(scene):
