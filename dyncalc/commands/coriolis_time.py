@@ -233,8 +233,12 @@ def compute_time(inputs: TimeInputs) -> Result:
         vectors["F_c"] = fa.F_c
     fixed = inputs.basis == "fixed"
     results = {}
+    own = {"v0": s.v0, "a0": s.a0, "R": s.R0 + s.Q @ s.r}  # given in fixed components
     for name, value in vectors.items():
-        results[name] = _entry(name, s.Q @ value if fixed else value)
+        if fixed:
+            results[name] = _entry(name, own[name] if name in own else s.Q @ value)
+        else:
+            results[name] = _entry(name, value)
         if name in ("v_transport", "v", "a_transport", "a", "a_c", "F_c"):
             results[f"{name}_mag"] = _entry(f"{name}_mag", _magnitude(value))
     if s.theta is not None:
