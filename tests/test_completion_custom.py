@@ -41,7 +41,10 @@ def values(line, monkeypatch, capsys) -> list[str]:
 def test_scene_names_only_those_the_command_takes(monkeypatch, capsys):
     from dyncalc.scenes import scene_names
 
-    assert values("dyncalc natural-frequency --scene ", monkeypatch, capsys) == scene_names()
+    relative = ["radial-slot-release", "slotted-link"]
+    assert values("dyncalc natural-frequency --scene ", monkeypatch, capsys) == [
+        name for name in scene_names() if name not in relative]
+    assert values("dyncalc coriolis --scene ", monkeypatch, capsys) == relative
     assert values("dyncalc natural-frequency --scene pend", monkeypatch, capsys) == [
         "pendulum", "pendulum-accelerating-support", "pendulum-on-rotating-disk",
         "pendulum-spring-dashpot", "pendulum-on-sliding-block"]
@@ -101,7 +104,7 @@ def test_files(line, monkeypatch, capsys):
 
 def test_scenes_command_option_and_zsh_protocol(monkeypatch, capsys):
     assert values("dyncalc scenes --command ", monkeypatch, capsys) == [
-        "natural-frequency", "damping-ratio", "forced-response", "modes", "eom"]
+        "natural-frequency", "damping-ratio", "coriolis", "forced-response", "modes", "eom"]
     assert complete("dyncalc damping-ratio --scene rod", monkeypatch, capsys, "zsh") == [
         ("plain", "rod-in-fluid")]
 
@@ -126,14 +129,19 @@ def test_every_suggested_unit_is_taken_by_unit(monkeypatch, capsys):
                  for r in click_command(c).record.results if r.unit}
     assert canonical == set(COMMON_UNITS)
     tried = set()
+    runs = []
     for command in COMMAND_MODULES:
         if command == "scenes":
             continue
         args = [a for a in _first_example(command) if a != "--explain"]
         if command == "damping-ratio":  # a form with dimensioned results
             args = ["damping-ratio", "--c", "4N*s/m", "--k", "100N/m", "--m", "1kg"]
-        if command == "coriolis":  # with the force
+        if command == "coriolis":  # with the force; and a motion in time (alpha)
             args += ["--mass", "2kg"]
+            runs.append(["coriolis", "--r", "1 m, 0, 0", "--omega", "0, 0, k*t",
+                         "k=1rad/s^2", "--t", "1s"])
+        runs.append(args)
+    for args in runs:
         result = invoke(*args, "--json")
         assert result.exit_code == 0, (args, result.stderr)
         for name in json.loads(result.stdout)["results"]:

@@ -183,6 +183,7 @@ COMMON_UNITS: dict[str, tuple[str, ...]] = {
     "m": ("m", "mm", "cm", "km", "in", "ft"),
     "m/s": ("m/s", "mm/s", "km/h", "ft/s", "mph"),
     "m/s^2": ("m/s^2", "mm/s^2", "ft/s^2"),
+    "rad/s^2": ("rad/s^2", "deg/s^2", "rpm/s"),
     "N": ("N", "kN", "lbf"),
     "rad": ("rad", "deg"),
     "kg": ("kg", "g", "t", "lb"),

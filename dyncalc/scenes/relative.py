@@ -2,7 +2,7 @@
 "Relative-motion scenes").
 
 The ``example_result`` values were computed independently with mpmath at 30 digits from the
-formulas of SCENES.md (``mpmath.acosh``, ``mpmath.cosh``, ``mpmath.sinh``, ``mpmath.cos`` of
+formulas of ../shared/SCENES.md (``mpmath.acosh``, ``mpmath.cosh``, ``mpmath.sinh``, ``mpmath.cos`` of
 the angle in radians).
 """
 from __future__ import annotations
