@@ -64,6 +64,7 @@ def test_radial_slot_release_against_the_integrated_equation_of_motion():
     sol = solve_ivp(lambda s, y: [y[1], W * W * y[0]], (0, 10), [a, 0.0], events=rim,
                     rtol=1e-12, atol=1e-14, method="DOP853")
     t_R, (x, v) = sol.t_events[0][0], sol.y_events[0][0]
+    assert x == pytest.approx(r, rel=1e-12)
     got = scene("radial-slot-release", f"Omega={W}rad/s", f"a={a}m", f"r={r}m", f"m={m}kg")
     assert got["t_R"] == pytest.approx(t_R, rel=1e-9)
     assert got["v_r"] == pytest.approx(v, rel=1e-9)
