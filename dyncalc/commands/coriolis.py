@@ -1192,25 +1192,37 @@ COMMAND = Command(
     a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r, in a machine or on Earth.
 
     Vectors have three components and one unit ("0,0,2 rad/s", "(0, 0, 2) rpm",
-    "[1,0,0] km/h"); results are in SI. With --mass also the Coriolis force F_c = -m a_c (the
-    apparent force, opposite to a_c). Any of --r, --alpha, --a0, --ar adds a_euler
-    (alpha x r), a_centripetal (Omega x (Omega x r)), a_transport and the absolute a; missing
-    ones are zero. a_c_mag, F_c_mag and a_mag are the magnitudes (--check compares those).
+    "[1,0,0] km/h"); a component may be an expression with units ("0.5*sin(35deg), 0, 0 m/s":
+    a bare component takes the trailing unit, one with its own unit is taken as it is) using
+    NAME=QUANTITY parameters (--r "l*cos(30deg), l*sin(30deg), 0" l=2m). Results are in SI.
+
+    Each result is given when its options are: a_c needs --vr; --r (or --v0) adds the
+    velocities v_transport = v0 + Omega x r and, with --vr, v = v_transport + v_r; any of
+    --r, --alpha, --a0, --ar adds a_euler, a_centripetal, a_transport and, with --vr, the
+    absolute a; --mass adds the Coriolis force F_c = -m a_c (the apparent force). Missing
+    vectors are zero; every vector has its magnitude (v_mag, a_mag, ...).
 
     Scalars (--omega 2rad/s --vr 3m/s) are magnitudes of perpendicular vectors: a_c = 2 Omega
     v_r and F_c = m a_c; --r is then the distance from the axis and --alpha turns about the
-    same axis; --a0, --ar and the absolute a need vectors.
+    same axis; --v0, --a0, --ar and the absolute a need vectors. A result given as
+    NAME=QUANTITY with one unknown as NAME=? is solved for it (a_c=12m/s^2 --omega 2rad/s
+    vr=?; on the Earth a_c_mag=, a_c_horizontal_mag=, heading north unless --heading).
 
     --latitude sets up the rotating Earth: x east, y north, z up, Omega = Omega_E (0, cos phi,
-    sin phi). --explain lists each term with its numbers, which vanish and why, and on Earth
+    sin phi), Omega_E the sidereal 7.2921159e-5 rad/s (the textbook's 2 pi/day is --omega
+    "1 turn/day"); a_c_horizontal and F_c_horizontal are the parts that push sideways on level
+    ground. --explain lists each term with its numbers, which vanish and why, and on Earth
     the directions of a_c and of the Coriolis force.
 
     \b
     Examples:
       dyncalc coriolis --omega "2 rad/s" --vr "3 m/s"
       dyncalc coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m" --mass 2kg
+      dyncalc coriolis --omega "0,0,2 rad/s" --r "l*cos(30deg), l*sin(30deg), 0" l=2m \\
+          --vr "0.1*5*sin(35deg), 0, 0 m/s" --v0 "1,0,0 m/s"
       dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
       dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
+      dyncalc coriolis a_c_mag=0.01m/s^2 --latitude 45deg vr=?
     """,
     tuple(Parameter(name, dim, _HELP[name][1], _HELP[name][0])
           for name, (dim, _words) in OPTIONS.items()),
