@@ -717,7 +717,8 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
     explanation = Explanation(
         formula=["a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
                  "a_transport = a0 + alpha x r + Omega x (Omega x r), a_c = 2 Omega x v_r, "
-                 "F_c = -m a_c"],
+                 "F_c = -m a_c"] + (["v = v_transport + v_r, v_transport = v0 + Omega x r"]
+                                    if moving else []),
         substituted=substituted, assumptions=assumptions, reference=REFERENCE,
         latex=list(VECTOR_LATEX))
     result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
