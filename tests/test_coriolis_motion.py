@@ -263,6 +263,12 @@ def test_rates_in_expressions_follow_the_rate_rules():
      "frequency in cycles)"),
     (["--omega", "0,0,2", "--r", "l, 0, 0", "l=2m", "l=3m"],
      "Error: l is given twice (l= twice)"),
+    (["--omega", "0,0,2", "--r", "1,0,0 m", "l=2m"],
+     "Error: l= is used by no vector component: a parameter names a quantity inside the "
+     "components of --r, --vr, --omega, ... (--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)"),
+    (["--omega", "0,0,2", "--r", "2 m, 0, 0", "m=3kg"],
+     "Error: --r: 'm' after the number 2 is a name of the expression here, not a unit: write "
+     "2*m for the product at column 3: '2 m, 0, 0'"),
     (["--omega", "0,0,2", "--vr", "1,0,0", "omega=1rad/s"],
      "Error: omega is given twice (--omega and omega=)"),
     (["--omega", "0,0,2", "--vr", "1/0, 0, 0 m/s"],

@@ -161,6 +161,7 @@ class _Reader:
     def __init__(self, texts: dict[str, str], strict: bool, params: dict | None = None):
         self.texts, self.strict = texts, strict
         self.params = params or {}
+        self.used: set[str] = set()
         self.inputs: dict[str, Entry] = {}
         self.parsed: dict[str, Parsed] = {}
 
@@ -174,6 +175,7 @@ class _Reader:
         if needs_expressions(text, self.params):
             parsed = parse_vector_expression(text, dim, label=f"--{name}", params=self.params,
                                              strict=self.strict)
+            self.used.update(word for word in self.params if word in _words(text))
         else:
             parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
                                   strict=self.strict)
@@ -194,7 +196,18 @@ class _Reader:
 
     def done(self, form: str, warnings: list[str] | None = None,
              degrees: float | None = None) -> CoriolisInputs:
+        unused = [name for name in self.params if name not in self.used]
+        if unused:
+            raise InputError(f"{unused[0]}= is used by no vector component: a parameter "
+                             "names a quantity inside the components of --r, --vr, --omega, "
+                             "... (--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)")
         return CoriolisInputs(form, self.parsed, self.inputs, warnings, degrees)
+
+
+def _words(text: str) -> set[str]:
+    import re
+
+    return set(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", text))
 
 
 def _refuse_negative(name: str, parsed: Parsed) -> None:
