@@ -263,6 +263,12 @@ def test_rates_in_expressions_follow_the_rate_rules():
      "frequency in cycles)"),
     (["--omega", "0,0,2", "--r", "l, 0, 0", "l=2m", "l=3m"],
      "Error: l is given twice (l= twice)"),
+    (["--omega", "0,0,2", "--r", "1,0,0 m", "l=2m"],
+     "Error: l= is used by no vector component: a parameter names a quantity inside the "
+     "components of --r, --vr, --omega, ... (--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)"),
+    (["--omega", "0,0,2", "--r", "2 m, 0, 0", "m=3kg"],
+     "Error: --r: 'm' after the number 2 is a name of the expression here, not a unit: write "
+     "2*m for the product at column 3: '2 m, 0, 0'"),
     (["--omega", "0,0,2", "--vr", "1,0,0", "omega=1rad/s"],
      "Error: omega is given twice (--omega and omega=)"),
     (["--omega", "0,0,2", "--vr", "1/0, 0, 0 m/s"],
@@ -386,3 +392,35 @@ def test_inverse_perpendicular_round_trip(unknown, given, expected):
 ])
 def test_inverse_refusals(args, message):
     assert refusal(*args) == message
+
+
+def test_python_api_takes_the_new_options_expressions_and_inverse_problems():
+    import dyncalc
+
+    out = dyncalc.coriolis(omega="0,0,2 rad/s", r="l, 0, 0", l="1.5 m", v0="0,-1,0 m/s",
+                           vr="0.5*cos(60deg), 0, 0 m/s")
+    assert out["v_transport"].to("m/s").magnitude.tolist() == [0.0, 2.0, 0.0]
+    assert out["v"].to("m/s").magnitude.tolist() == pytest.approx([0.25, 2.0, 0.0],
+                                                                  rel=1e-15)
+    solved = dyncalc.coriolis(omega="2 rad/s", a_c="12 m/s^2", vr="?")
+    assert solved["vr"].to("m/s").magnitude == pytest.approx(3.0, rel=1e-15)
+
+
+def test_batch_of_expression_components_equals_the_one_off(tmp_path):
+    """A CSV cell may hold component expressions; each row prints what the one-off prints."""
+    path = tmp_path / "rows.csv"
+    path.write_text('omega,vr,r,v0\n"0,0,2 rad/s","0.1*5*sin(35deg), 0, 0 m/s","1,0,0 m",'
+                    '"0,1,0"\n"0,0,2","1,0,0","2,0,0","0,0,0"\n')
+    result = CliRunner().invoke(cli, ["coriolis", "--batch", str(path)])
+    assert result.exit_code == 0, result.output + result.stderr
+    header, *rows = result.stdout.splitlines()
+    assert header.split(",")[4:] == [
+        "a_c [m/s^2]", "a_c_mag [m/s^2]", "a_euler [m/s^2]", "a_centripetal [m/s^2]",
+        "a_transport [m/s^2]", "a [m/s^2]", "a_mag [m/s^2]", "a_transport_mag [m/s^2]",
+        "v_transport [m/s]", "v_transport_mag [m/s]", "v [m/s]", "v_mag [m/s]"]
+    one = CliRunner().invoke(cli, ["coriolis", "--omega", "0,0,2 rad/s", "--vr",
+                                   "0.1*5*sin(35deg), 0, 0 m/s", "--r", "1,0,0 m", "--v0",
+                                   "0,1,0", "--value", "v", "--value", "a_mag"])
+    v, a_mag = one.stdout.split()
+    cells = rows[0].split('"')
+    assert v in cells and f",{a_mag}," in rows[0]

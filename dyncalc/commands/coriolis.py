@@ -161,6 +161,7 @@ class _Reader:
     def __init__(self, texts: dict[str, str], strict: bool, params: dict | None = None):
         self.texts, self.strict = texts, strict
         self.params = params or {}
+        self.used: set[str] = set()
         self.inputs: dict[str, Entry] = {}
         self.parsed: dict[str, Parsed] = {}
 
@@ -174,6 +175,7 @@ class _Reader:
         if needs_expressions(text, self.params):
             parsed = parse_vector_expression(text, dim, label=f"--{name}", params=self.params,
                                              strict=self.strict)
+            self.used.update(word for word in self.params if word in _words(text))
         else:
             parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
                                   strict=self.strict)
@@ -194,7 +196,18 @@ class _Reader:
 
     def done(self, form: str, warnings: list[str] | None = None,
              degrees: float | None = None) -> CoriolisInputs:
+        unused = [name for name in self.params if name not in self.used]
+        if unused:
+            raise InputError(f"{unused[0]}= is used by no vector component: a parameter "
+                             "names a quantity inside the components of --r, --vr, --omega, "
+                             "... (--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)")
         return CoriolisInputs(form, self.parsed, self.inputs, warnings, degrees)
+
+
+def _words(text: str) -> set[str]:
+    import re
+
+    return set(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", text))
 
 
 def _refuse_negative(name: str, parsed: Parsed) -> None:
@@ -717,7 +730,8 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
     explanation = Explanation(
         formula=["a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
                  "a_transport = a0 + alpha x r + Omega x (Omega x r), a_c = 2 Omega x v_r, "
-                 "F_c = -m a_c"],
+                 "F_c = -m a_c"] + (["v = v_transport + v_r, v_transport = v0 + Omega x r"]
+                                    if moving else []),
         substituted=substituted, assumptions=assumptions, reference=REFERENCE,
         latex=list(VECTOR_LATEX))
     result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
@@ -1237,25 +1251,37 @@ COMMAND = Command(
     a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r, in a machine or on Earth.
 
     Vectors have three components and one unit ("0,0,2 rad/s", "(0, 0, 2) rpm",
-    "[1,0,0] km/h"); results are in SI. With --mass also the Coriolis force F_c = -m a_c (the
-    apparent force, opposite to a_c). Any of --r, --alpha, --a0, --ar adds a_euler
-    (alpha x r), a_centripetal (Omega x (Omega x r)), a_transport and the absolute a; missing
-    ones are zero. a_c_mag, F_c_mag and a_mag are the magnitudes (--check compares those).
+    "[1,0,0] km/h"); a component may be an expression with units ("0.5*sin(35deg), 0, 0 m/s":
+    a bare component takes the trailing unit, one with its own unit is taken as it is) using
+    NAME=QUANTITY parameters (--r "l*cos(30deg), l*sin(30deg), 0" l=2m). Results are in SI.
+
+    Each result is given when its options are: a_c needs --vr; --r (or --v0) adds the
+    velocities v_transport = v0 + Omega x r and, with --vr, v = v_transport + v_r; any of
+    --r, --alpha, --a0, --ar adds a_euler, a_centripetal, a_transport and, with --vr, the
+    absolute a; --mass adds the Coriolis force F_c = -m a_c (the apparent force). Missing
+    vectors are zero; every vector has its magnitude (v_mag, a_mag, ...).
 
     Scalars (--omega 2rad/s --vr 3m/s) are magnitudes of perpendicular vectors: a_c = 2 Omega
     v_r and F_c = m a_c; --r is then the distance from the axis and --alpha turns about the
-    same axis; --a0, --ar and the absolute a need vectors.
+    same axis; --v0, --a0, --ar and the absolute a need vectors. A result given as
+    NAME=QUANTITY with one unknown as NAME=? is solved for it (a_c=12m/s^2 --omega 2rad/s
+    vr=?; on the Earth a_c_mag=, a_c_horizontal_mag=, heading north unless --heading).
 
     --latitude sets up the rotating Earth: x east, y north, z up, Omega = Omega_E (0, cos phi,
-    sin phi). --explain lists each term with its numbers, which vanish and why, and on Earth
+    sin phi), Omega_E the sidereal 7.2921159e-5 rad/s (the textbook's 2 pi/day is --omega
+    "1 turn/day"); a_c_horizontal and F_c_horizontal are the parts that push sideways on level
+    ground. --explain lists each term with its numbers, which vanish and why, and on Earth
     the directions of a_c and of the Coriolis force.
 
     \b
     Examples:
       dyncalc coriolis --omega "2 rad/s" --vr "3 m/s"
       dyncalc coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m" --mass 2kg
+      dyncalc coriolis --omega "0,0,2 rad/s" --r "l*cos(30deg), l*sin(30deg), 0" l=2m \\
+          --vr "0.1*5*sin(35deg), 0, 0 m/s" --v0 "1,0,0 m/s"
       dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
       dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
+      dyncalc coriolis a_c_mag=0.01m/s^2 --latitude 45deg vr=?
     """,
     (Parameter("scene", None, "A relative-motion set-up with its own parameters as "
                "NAME=QUANTITY words (radial-slot-release, slotted-link).", "NAME",

@@ -82,6 +82,9 @@ def transport_velocity(Omega, r, v0=None, v_r=None) -> np.ndarray:
     Om_v = _si_vector(Omega, "rad/s", "Omega")
     r_v = _si_vector(r, "m", "r")
     addends = [np.asarray(x, dtype=float) + 0.0 for x in (v0, v_r) if x is not None]
+    finite = all(np.all(np.isfinite(x)) for x in (Om_v, r_v, *addends))
+    if not finite:
+        raise PhysicsError("v: a non-finite input (inf or nan) in v0 + Omega x r")
     Om, rr = _Scaled.of(Om_v), _Scaled.of(r_v)
     value = _scaled_sum(Om, rr, addends)
     if value is None:
@@ -226,7 +229,10 @@ def _transport_velocity_columns(Omega, r, v0=None, v_r=None) -> Columns:
     one-off sums exactly (every row unless an addend and the cross product are some 1e300
     apart) and the value is finite."""
     addends = [np.asarray(x, dtype=float) + 0.0 for x in (v0, v_r) if x is not None]
+    Omega, r = np.asarray(Omega, dtype=float) + 0.0, np.asarray(r, dtype=float) + 0.0
     value, ok = _transport_rows(_ScaledRows.of(Omega), _ScaledRows.of(r), addends)
+    for x in (Omega, r, *addends):
+        ok &= np.all(np.isfinite(x), axis=1)
     return Columns({"v": value}, exact=ok, model="vectors")
 
 
