@@ -1273,6 +1273,13 @@ COMMAND = Command(
     ground. --explain lists each term with its numbers, which vanish and why, and on Earth
     the directions of a_c and of the Coriolis force.
 
+    Motion given in time: --r, --omega (rotating-frame components) and --R0 (the origin's
+    position, fixed-frame components) may be expressions in t with NAME=QUANTITY parameters,
+    evaluated at --t; v_r, a_r, alpha, v0, a0 are their exact derivatives (the frames
+    coincide at t = 0). --basis fixed prints the vectors in the fixed frame's axes; a list of
+    times in --t (or --batch over a t column) gives a table; --plot draws the path.
+    --scene runs radial-slot-release or slotted-link with their NAME=QUANTITY parameters.
+
     \b
     Examples:
       dyncalc coriolis --omega "2 rad/s" --vr "3 m/s"
@@ -1282,6 +1289,9 @@ COMMAND = Command(
       dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
       dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
       dyncalc coriolis a_c_mag=0.01m/s^2 --latitude 45deg vr=?
+      dyncalc coriolis --r "s0 - b*t^2/2, 0, 0 m" s0=4m b=0.5m/s^2 --omega "0,0,2 rad/s" \\
+          --t 2s --basis fixed
+      dyncalc coriolis --scene slotted-link d=0.4m c=0.3m theta=35deg omega=-10rad/s
     """,
     (Parameter("scene", None, "A relative-motion set-up with its own parameters as "
                "NAME=QUANTITY words (radial-slot-release, slotted-link).", "NAME",
