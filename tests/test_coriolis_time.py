@@ -333,3 +333,21 @@ def test_no_sympy_off_the_time_path():
                  ["coriolis", "--help"]):
         assert loads(args) is False, args
     assert loads(["coriolis", "--r", "1 m + t*1 m/s, 0, 0 m", "--t", "1s"]) is True
+
+
+def test_the_plotted_path_is_the_position_R():
+    """The path --plot draws (one integration through every time when the axis turns) is the
+    result R of a one-off at each time, before and after t = 0."""
+    from dyncalc.commands.coriolis_time import read_time
+    from dyncalc.physics.relative_time import motion_in_time
+
+    texts = {"r": "0.3 m + 0.1 m/s*t, 0, 0 m", "omega": "0, w*sin(k*t), w", "t": "1s"}
+    words = ("w=1rad/s", "k=1.3rad/s")
+    inputs = read_time(texts, words)
+    motion = motion_in_time(inputs.vectors["r"], inputs.vectors["omega"], None, inputs.params)
+    times = [-0.7, 0.0, 0.4, 1.9]
+    path = motion.positions(times)
+    for s, point in zip(times, path):
+        one = results("--r", texts["r"], "--omega", texts["omega"], *words, "--t", f"{s}s",
+                      "--basis", "fixed")
+        assert np.allclose(point, one["R"], rtol=0, atol=1e-10), s

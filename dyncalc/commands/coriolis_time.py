@@ -354,11 +354,6 @@ def path_data(values: dict[str, str | None], words=(), *, strict: bool = False) 
     rate = float(np.linalg.norm(result.results["Omega"].si))
     start, end, reason = plot_window(inputs.t, rate, res["v_mag"].si, res["a_mag"].si)
     times = np.linspace(start, end, PATH_POINTS)
-    path = np.full((PATH_POINTS, 3), np.nan)
-    for i, s in enumerate(times):
-        try:
-            path[i] = motion.positions([s])[0]
-        except Exception:  # noqa: BLE001 - a time where an expression is not defined: a gap
-            continue
+    path = motion.positions(times)  # NaN (a gap) where an expression is not defined
     return PathData(times=times, path=path, t=inputs.t, point=np.asarray(res["R"].si),
                     v=np.asarray(res["v"].si), a=np.asarray(res["a"].si), reason=reason)

@@ -124,9 +124,43 @@ class TimeMotion:
                              ("r", "v_r", "a_r", "Omega", "alpha", "R0", "v0", "a0")})
 
     def positions(self, times) -> "np.ndarray":
-        """The point's position in the fixed frame, ``R0 + Q r``, at each of ``times`` (n, 3)."""
-        return np.array([self.vector("R0", s) + self.rotation_matrix(s)[0] @ self.vector("r", s)
-                         for s in times])
+        """The point's position in the fixed frame, ``R0 + Q r``, at each of ``times`` (n, 3);
+        NaN at a time where an expression is not defined. A numerically integrated rotation is
+        integrated once each way from ``t = 0`` through every time asked."""
+        times = np.asarray(times, dtype=float)
+        out = np.full((len(times), 3), np.nan)
+        rotations = self._rotations(times) if self.rotation == "numerical" else None
+        for i, s in enumerate(times):
+            try:
+                Q = rotations[i] if rotations is not None else self.rotation_matrix(s)[0]
+                out[i] = self.vector("R0", s) + Q @ self.vector("r", s)
+            except PhysicsError:
+                continue
+        return out
+
+    def _rotations(self, times):
+        """``Q`` at each of ``times`` from one integration forward and one backward."""
+        from scipy.integrate import solve_ivp
+
+        def rhs(s, y):
+            return (y.reshape(3, 3) @ _cross_matrix(self.vector("Omega", s))).ravel()
+
+        out = [np.eye(3)] * len(times)
+        for side in (times > 0, times < 0):
+            chosen = np.flatnonzero(side)
+            if not len(chosen):
+                continue
+            order = chosen[np.argsort(np.abs(times[chosen]))]
+            end = float(times[order[-1]])
+            sol = solve_ivp(rhs, (0.0, end), np.eye(3).ravel(), method="DOP853", rtol=1e-12,
+                            atol=1e-14, t_eval=times[order])
+            if not sol.success:
+                raise PhysicsError(f"the frame's rotation could not be integrated to t = "
+                                   f"{end:g} s ({sol.message})")
+            for k, index in enumerate(order):
+                u, _, vt = np.linalg.svd(sol.y[:, k].reshape(3, 3))
+                out[index] = u @ vt
+        return out
 
 
 def _rodrigues(n, theta: float):
