@@ -161,7 +161,6 @@ class _Reader:
     def __init__(self, texts: dict[str, str], strict: bool, params: dict | None = None):
         self.texts, self.strict = texts, strict
         self.params = params or {}
-        self.used: set[str] = set()
         self.inputs: dict[str, Entry] = {}
         self.parsed: dict[str, Parsed] = {}
 
@@ -175,7 +174,6 @@ class _Reader:
         if needs_expressions(text, self.params):
             parsed = parse_vector_expression(text, dim, label=f"--{name}", params=self.params,
                                              strict=self.strict)
-            self.used.update(word for word in self.params if word in _words(text))
         else:
             parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
                                   strict=self.strict)
@@ -196,11 +194,6 @@ class _Reader:
 
     def done(self, form: str, warnings: list[str] | None = None,
              degrees: float | None = None) -> CoriolisInputs:
-        unused = [name for name in self.params if name not in self.used]
-        if unused:
-            raise InputError(f"{unused[0]}= is used by no vector component: a parameter "
-                             "names a quantity inside the components of --r, --vr, --omega, "
-                             "... (--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)")
         return CoriolisInputs(form, self.parsed, self.inputs, warnings, degrees)
 
 
@@ -533,7 +526,17 @@ def _parameters(texts: dict[str, str], words) -> dict:
             texts[name] = text
         else:
             given[name] = text
+    for name in given:
+        if not any(name in _words(text) for option, text in texts.items()
+                   if OPTIONS[option][1] and option not in _SCALARS):
+            raise InputError(f"{name}= is used by no vector component: a parameter names a "
+                             "quantity inside the components of --r, --vr, --omega, ... "
+                             "(--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)")
     return read_parameters(given)
+
+
+#: Options that are never vectors (a NAME= parameter is not used in them).
+_SCALARS = ("mass", "latitude", "speed", "heading", "vertical")
 
 
 def _read_vectors(reader: _Reader) -> CoriolisInputs:

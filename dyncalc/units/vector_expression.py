@@ -29,7 +29,8 @@ __all__ = ["needs_expressions", "split_components", "parse_vector_expression",
 _WORD_RE = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
 _OPENERS, _CLOSERS = "([", ")]"
 #: A unit at the end of the last component (``m/s^2``, ``kN*m/rad``), after a space or digit.
-_TRAILING_UNIT_RE = re.compile(r"(?<=[\s\d.])[A-Za-z_°µμΩ][\w°µμΩ*/^·.]*\s*$")
+_TRAILING_UNIT_RE = re.compile(r"(?<=[\s\d.])(?:1\s*/\s*)?[A-Za-z_°µμΩ][\w°µμΩ^·.]*"
+                               r"(?:\s*[*/]\s*[A-Za-z_°µμΩ1][\w°µμΩ^·.]*)*\s*$")
 
 
 def split_components(text: str) -> tuple[list[tuple[int, str]], str]:
