@@ -351,3 +351,16 @@ def test_the_plotted_path_is_the_position_R():
         one = results("--r", texts["r"], "--omega", texts["omega"], *words, "--t", f"{s}s",
                       "--basis", "fixed")
         assert np.allclose(point, one["R"], rtol=0, atol=1e-10), s
+
+
+def test_an_uncertain_mass_carries_to_the_coriolis_force_only():
+    """F_c = -m a_c: u(F_c_mag) = u(m) |a_c| exactly; nothing else depends on m."""
+    out = invoke("coriolis", "--mass", "2kg ± 1%", "--r", "s0 - b*t^2/2, 0, 0 m", "s0=4m",
+                 "b=0.5m/s^2", "--omega", "0, 0, 2 rad/s", "--t", "2s", "--value", "F_c_mag",
+                 "--value", "u(F_c_mag)", "--value", "u(a_mag)")
+    assert out.exit_code == 0, out.stderr
+    assert [float(x) for x in out.stdout.split()] == [8.0, 0.02 * 4.0, 0.0]
+    assert error_line(invoke("coriolis", "--r", "s0 - t*1 m/s, 0, 0 m", "s0=4m ± 1%", "--t",
+                             "2s")) == ("Error: s0=: an uncertainty is not propagated through a "
+                                        "motion given in time; give the value alone (--mass "
+                                        "may carry one)")

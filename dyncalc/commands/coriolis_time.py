@@ -121,6 +121,9 @@ def _parameters(words, strict: bool):
                              "expressions are given as words such as b=0.5m/s^2")
         if name == "t":
             raise InputError("t= is not a parameter: t is the time; give it as --t")
+        if "±" in text or "+/-" in text:
+            raise InputError(f"{name}=: an uncertainty is not propagated through a motion "
+                             "given in time; give the value alone (--mass may carry one)")
         if name in values:
             raise InputError(f"{name}= given twice")
         value, powers, reading = quantity_in_base(text, label=f"{name}=")
@@ -179,6 +182,9 @@ def read_time(texts: dict[str, str | None], words=(), strict: bool = False) -> T
         raise InputError(f"{sorted(unused)[0]}= is not used by --r, --omega or --R0: leave it "
                          "out or use it in an expression")
     t = parse_quantity(texts["t"], TIME, label="--t", strict=strict)
+    if t.uncertainty is not None:
+        raise InputError("--t: an uncertainty is not propagated through a motion given in "
+                         "time; give the time alone")
     entries["t"] = entry_from_parsed("t", t, TIME, description="time of evaluation")
     basis = texts.get("basis", "rotating")
     if basis not in _BASES:
@@ -298,7 +304,22 @@ def compute_time(inputs: TimeInputs) -> Result:
                     "derivatives" + ("; rotation integrated numerically"
                                      if motion.rotation == "numerical" else ""),
                     warnings=warnings, explanation=explanation, extra=extra)
+    if inputs.mass is not None and inputs.mass.uncertainty is not None:
+        result.sensitivity = lambda: _mass_sensitivity(result, m, float(inputs.mass.uncertainty))
     return result
+
+
+def _mass_sensitivity(result: Result, m: float, sigma: float):
+    """Only ``F_c = -m a_c`` and its magnitude depend on the mass, linearly: their slopes are
+    their values over ``m`` (exact); every other result has slope 0."""
+    from ..result.propagate import Sensitivity, UncertainInput
+
+    slopes = {}
+    for name, entry in result.results.items():
+        value = np.asarray(entry.si, dtype=float)
+        slope = value / m if name in ("F_c", "F_c_mag") else np.zeros(np.shape(value))
+        slopes[name] = {0: slope if np.ndim(slope) else float(slope)}
+    return Sensitivity([UncertainInput("mass", m, sigma)], slopes)
 
 
 def time_result(texts: dict[str, str | None], words=(), *, strict: bool = False) -> Result:
