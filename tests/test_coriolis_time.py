@@ -364,3 +364,15 @@ def test_an_uncertain_mass_carries_to_the_coriolis_force_only():
                              "2s")) == ("Error: s0=: an uncertainty is not propagated through a "
                                         "motion given in time; give the value alone (--mass "
                                         "may carry one)")
+
+
+def test_an_angle_without_a_usable_closed_form_is_found_by_quadrature():
+    """sympy integrates sqrt(1 + t^4) to a hypergeometric function: the angle turned then
+    comes from adaptive quadrature, against mpmath's."""
+    import mpmath
+
+    got, data = run("--r", "1,0,0 m", "--omega", "0,0,sqrt(1 + (q*t)^4) rad/s", "q=1rad/s",
+                    "--t", "2s")
+    assert data["extra"]["rotation"] == "quadrature"
+    assert got["theta"] == pytest.approx(float(mpmath.quad(lambda x: mpmath.sqrt(1 + x ** 4),
+                                                           [0, 2])), rel=1e-12)

@@ -251,7 +251,14 @@ def motion_in_time(r: TimeVector | None, omega: TimeVector | None, R0: TimeVecto
     motion.axis = n
     tau = sympy.Symbol("tau", real=True)
     integral = sympy.integrate(w.subs(t, tau), (tau, 0, t))
-    if integral.has(sympy.Integral) or integral.has(sympy.Piecewise):
+    theta = None
+    if not (integral.has(sympy.Integral) or integral.has(sympy.Piecewise)):
+        try:  # a closed form the math module cannot evaluate (hyper, ...) is not one here
+            theta = sympy.lambdify([t], integral, modules=["math"])
+            float(theta(0.5))
+        except Exception:  # noqa: BLE001 - any failure: fall back to quadrature
+            theta = None
+    if theta is None:
         from scipy.integrate import quad
 
         rate = sympy.lambdify([t], w, modules=["math"])
@@ -261,6 +268,5 @@ def motion_in_time(r: TimeVector | None, omega: TimeVector | None, R0: TimeVecto
         motion.rotation = "closed form"
         motion.theta_expr = integral
         motion.derived["theta"] = [text_of(sympy.nsimplify(integral, rational=False))]
-        theta = sympy.lambdify([t], integral, modules=["math"])
         motion._theta = lambda s: float(theta(s))
     return motion
