@@ -794,7 +794,9 @@ SPECS: dict[str, Spec] = {
         {"--omega": "angular rate", "--vr": "velocity", "--r": "length",
          "--alpha": "angular acceleration", "--a0": "acceleration", "--ar": "acceleration",
          "--mass": "mass", "--latitude": "angle", "--speed": "velocity", "--heading": "angle",
-         "--vertical": "velocity"},
+         "--vertical": "velocity",
+         "--v0": "velocity", "--scene": None, "--R0": "length", "--t": "time",
+         "--basis": None, "--plot": None},
         ["a_c", "a_c_mag", "F_c", "F_c_mag", "a_transport", "a", "a_mag", "a_euler",
          "a_centripetal"],
         {"a_c_mag": "acceleration", "F_c_mag": "force", "a_mag": "acceleration"},
@@ -828,6 +830,7 @@ NAMED_VALUES = {
                                       "small-damping", "ODE"],
     "--body": BODIES + ["sphere", "Hoop"],
     "--format": FORMATS + ["CSV", "html", "latex"],
+    "--basis": ["rotating", "fixed", "Fixed", "inertial"],
 }
 
 
