@@ -60,7 +60,7 @@ def test_result_names(monkeypatch, capsys):
         "omega_d", "omega_1"]
     assert values("dyncalc spring-series --check k", monkeypatch, capsys) == ["k_eq=", "k1="]
     assert values("dyncalc coriolis --unit a_c", monkeypatch, capsys) == [
-        "a_c=", "a_c_mag=", "a_centripetal="]
+        "a_c=", "a_c_mag=", "a_centripetal=", "a_c_horizontal=", "a_c_horizontal_mag="]
 
 
 def test_units_after_unit_name_equals(monkeypatch, capsys):

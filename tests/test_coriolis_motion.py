@@ -424,3 +424,15 @@ def test_batch_of_expression_components_equals_the_one_off(tmp_path):
     v, a_mag = one.stdout.split()
     cells = rows[0].split('"')
     assert v in cells and f",{a_mag}," in rows[0]
+
+
+def test_near_parallel_vectors_keep_their_cross_product():
+    """Omega and v_r parallel to 1 part in 2^60: a_c = 2 Omega x v_r is -2^-59 m/s^2 exactly
+    (mpmath), where the float formula of the cross product gives 0; so is a_c in a batch."""
+    Omega, v_r = [1.0 + 2.0 ** -30, 1.0, 0.0], [1.0, 1.0 - 2.0 ** -30, 0.0]
+    with mpmath.workdps(50):
+        z = 2 * (mpmath.mpf(Omega[0]) * mpmath.mpf(v_r[1]) - mpmath.mpf(Omega[1]) * v_r[0])
+    assert float(z) == -(2.0 ** -59)
+    out = run("--omega", vec(Omega), "--vr", vec(v_r), "--r", "1,2,3")
+    assert out["a_c"].tolist() == [0.0, 0.0, float(z)]
+    assert np.cross(Omega, v_r)[2] == 0.0  # what the plain formula would have said

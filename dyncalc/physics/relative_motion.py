@@ -46,9 +46,10 @@ def _scaled_sum(Om: _Scaled, rr: _Scaled, addends) -> np.ndarray | None:
     shift = Om.e + rr.e
     scaled = []
     for x in addends:
-        y = np.ldexp(x, -shift) if shift else x
-        if not np.array_equal(np.ldexp(y, shift), x):
-            return None
+        with np.errstate(over="ignore", under="ignore"):
+            y = np.ldexp(x, -shift) if shift else x
+            if not np.array_equal(np.ldexp(y, shift), x):
+                return None
         scaled.append(y)
     a, b = Om.m, rr.m
     out = np.empty(3)
