@@ -68,7 +68,11 @@ def radial_slot_release(Omega, a, r, m=None, t=None) -> Outcome:
     if not a_ < r_:
         raise PhysicsError(f"a must be below r (the block is released inside the radius it "
                            f"reaches); got a = {a_:.6g} m, r = {r_:.6g} m")
-    gap = math.sqrt(r_ - a_) * math.sqrt(r_ + a_)  # no overflow of the product
+    product = (r_ - a_) * (r_ + a_)
+    if math.isfinite(product) and product >= 2.2250738585072014e-308:
+        gap = math.sqrt(product)  # one rounding fewer
+    else:  # the product leaves float64: its factors' roots do not
+        gap = math.sqrt(r_ - a_) * math.sqrt(r_ + a_)
     v_r = W * gap
     t_R = _acosh_ratio(r_, a_) / W
     values = {"v_r": Q_(v_r, "m/s"), "t_R": Q_(t_R, "s"),
