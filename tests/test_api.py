@@ -303,7 +303,9 @@ def test_physics_errors_and_array_errors():
 
 def test_wrong_keywords_are_type_errors():
     with pytest.raises(TypeError, match="unexpected keyword argument 'foo'"):
-        dyncalc.coriolis(foo=1)
+        dyncalc.rolling_onset(foo=1)
+    with pytest.raises(dyncalc.InputError, match="^foo= is used by no vector component"):
+        dyncalc.coriolis(foo=1)  # coriolis takes NAME= parameters of its components
     with pytest.raises(TypeError, match="keyword arguments only"):
         dyncalc.natural_frequency(2, 1)
     with pytest.raises(TypeError, match="does not take plot="):

@@ -42,8 +42,11 @@ def test_scene_names_only_those_the_command_takes(monkeypatch, capsys):
     from dyncalc.commands.natural_frequency import natural_scene_names
     from dyncalc.scenes.kinetics import kinetics_scene_names
 
+    relative = ["radial-slot-release", "slotted-link"]
     assert values("dyncalc natural-frequency --scene ", monkeypatch, capsys) == \
         natural_scene_names()
+    assert not set(relative) & set(natural_scene_names())
+    assert values("dyncalc coriolis --scene ", monkeypatch, capsys) == relative
     assert values("dyncalc rigid-body --scene ", monkeypatch, capsys) == kinetics_scene_names()
     assert values("dyncalc natural-frequency --scene pend", monkeypatch, capsys) == [
         "pendulum", "pendulum-accelerating-support", "pendulum-on-rotating-disk",
@@ -60,7 +63,7 @@ def test_result_names(monkeypatch, capsys):
         "omega_d", "omega_1"]
     assert values("dyncalc spring-series --check k", monkeypatch, capsys) == ["k_eq=", "k1="]
     assert values("dyncalc coriolis --unit a_c", monkeypatch, capsys) == [
-        "a_c=", "a_c_mag=", "a_centripetal="]
+        "a_c=", "a_c_mag=", "a_centripetal=", "a_c_horizontal=", "a_c_horizontal_mag="]
 
 
 def test_units_after_unit_name_equals(monkeypatch, capsys):
@@ -104,7 +107,8 @@ def test_files(line, monkeypatch, capsys):
 
 def test_scenes_command_option_and_zsh_protocol(monkeypatch, capsys):
     assert values("dyncalc scenes --command ", monkeypatch, capsys) == [
-        "natural-frequency", "damping-ratio", "forced-response", "modes", "rigid-body", "eom"]
+        "natural-frequency", "damping-ratio", "coriolis", "forced-response", "modes",
+        "rigid-body", "eom"]
     assert complete("dyncalc damping-ratio --scene rod", monkeypatch, capsys, "zsh") == [
         ("plain", "rod-in-fluid")]
 
@@ -129,28 +133,31 @@ def test_every_suggested_unit_is_taken_by_unit(monkeypatch, capsys):
                  for r in click_command(c).record.results if r.unit}
     assert canonical == set(COMMON_UNITS)
     tried = set()
+    runs = []
     for command in COMMAND_MODULES:
         if command == "scenes":
             continue
         args = [a for a in _first_example(command) if a != "--explain"]
         if command == "damping-ratio":  # a form with dimensioned results
             args = ["damping-ratio", "--c", "4N*s/m", "--k", "100N/m", "--m", "1kg"]
-        if command == "coriolis":  # with the force
+        if command == "coriolis":  # with the force; and a motion in time (alpha)
             args += ["--mass", "2kg"]
-        forms = [args]
+            runs.append(["coriolis", "--r", "1 m, 0, 0", "--omega", "0, 0, k*t",
+                         "k=1rad/s^2", "--t", "1s"])
+        runs.append(args)
         if command == "rigid-body":  # an impact (N*s, J) and Euler mode (N*m, kg*m^2/s)
-            forms += [["rigid-body", "--scene", "direct-central-impact", "m1=2kg", "m2=3kg",
-                       "v1=4m/s", "v2=-1m/s", "e=0.6"],
-                      ["rigid-body", "--inertia-tensor", "1,0,0;0,1,0;0,0,2", "--omega",
-                       "2,0,3", "--alpha", "0,0,1"]]
-        for args in forms:
-            result = invoke(*args, "--json")
-            assert result.exit_code == 0, (args, result.stderr)
-            for name in json.loads(result.stdout)["results"]:
-                offered = values(f"dyncalc {shlex.join(args)} --unit {name}=", monkeypatch,
-                                 capsys)
-                for item in offered:
-                    shown = invoke(*args, "--unit", item)
-                    assert shown.exit_code == 0, (args, item, shown.stderr)
-                    tried.add(item.partition("=")[2])
+            runs += [["rigid-body", "--scene", "direct-central-impact", "m1=2kg", "m2=3kg",
+                      "v1=4m/s", "v2=-1m/s", "e=0.6"],
+                     ["rigid-body", "--inertia-tensor", "1,0,0;0,1,0;0,0,2", "--omega",
+                      "2,0,3", "--alpha", "0,0,1"]]
+    for args in runs:
+        result = invoke(*args, "--json")
+        assert result.exit_code == 0, (args, result.stderr)
+        for name in json.loads(result.stdout)["results"]:
+            offered = values(f"dyncalc {shlex.join(args)} --unit {name}=", monkeypatch,
+                             capsys)
+            for item in offered:
+                shown = invoke(*args, "--unit", item)
+                assert shown.exit_code == 0, (args, item, shown.stderr)
+                tried.add(item.partition("=")[2])
     assert tried == {u for units in COMMON_UNITS.values() for u in units}

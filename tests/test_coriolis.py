@@ -558,7 +558,8 @@ REFUSALS = [
      "read in radians; write 45deg for degrees)"),
     (["--omega", "0,0,2 rad/s"],
      "Error: --vr is missing: give the velocity relative to the frame, e.g. --vr '3,0,0 m/s' "
-     "(or a magnitude such as '3 m/s' with a magnitude --omega)"),
+     "(or a magnitude such as '3 m/s' with a magnitude --omega), or --r for the velocity and "
+     "acceleration of the frame point"),
     (["--latitude", "45deg"],
      "Error: --vr is missing: give the velocity relative to the Earth as east, north, up "
      "components, e.g. --vr '0,20,0 m/s', or --speed with --heading"),

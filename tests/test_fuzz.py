@@ -679,7 +679,8 @@ def recipe_coriolis(draw) -> list[Piece]:
     else:
         pieces += [vec("--omega", "angular rate"), vec("--vr", "velocity")]
         for name, dim, percent in (("--r", "length", 35), ("--alpha", "angular acceleration", 20),
-                                   ("--a0", "acceleration", 15), ("--ar", "acceleration", 15)):
+                                   ("--a0", "acceleration", 15), ("--ar", "acceleration", 15),
+                                   ("--v0", "velocity", 15)):
             if draw(PERCENT) < percent:
                 pieces.append(vec(name, dim))
     if draw(PERCENT) < 35:
@@ -794,10 +795,12 @@ SPECS: dict[str, Spec] = {
         {"--omega": "angular rate", "--vr": "velocity", "--r": "length",
          "--alpha": "angular acceleration", "--a0": "acceleration", "--ar": "acceleration",
          "--mass": "mass", "--latitude": "angle", "--speed": "velocity", "--heading": "angle",
-         "--vertical": "velocity"},
+         "--vertical": "velocity", "--v0": "velocity",
+         "--scene": None, "--R0": "length", "--t": "time", "--basis": None, "--plot": None},
         ["a_c", "a_c_mag", "F_c", "F_c_mag", "a_transport", "a", "a_mag", "a_euler",
-         "a_centripetal"],
-        {"a_c_mag": "acceleration", "F_c_mag": "force", "a_mag": "acceleration"},
+         "a_centripetal", "v_transport", "v", "v_mag", "a_transport_mag"],
+        {"a_c_mag": "acceleration", "F_c_mag": "force", "a_mag": "acceleration",
+         "v_mag": "velocity"},
         words=False),
     "inertia": Spec(
         recipe_inertia, {"--axis": None},
@@ -828,6 +831,7 @@ NAMED_VALUES = {
                                       "small-damping", "ODE"],
     "--body": BODIES + ["sphere", "Hoop"],
     "--format": FORMATS + ["CSV", "html", "latex"],
+    "--basis": ["rotating", "fixed", "Fixed", "inertial"],
 }
 
 

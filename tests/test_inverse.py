@@ -39,8 +39,9 @@ def mp_precision():
 
 # -- helpers ---------------------------------------------------------------------------------
 
-#: The commands a scene's example runs (forced scenes: forced-response; rigid-body scenes).
-EXAMPLE_COMMANDS = ("natural-frequency", "forced-response", "rigid-body")
+#: The commands a scene's example runs (forced scenes: forced-response; rigid-body and
+#: relative-motion scenes).
+EXAMPLE_COMMANDS = ("natural-frequency", "forced-response", "rigid-body", "coriolis")
 
 
 def example_texts(scene):

@@ -48,6 +48,8 @@ COMMANDS = {
     "coriolis-scalar": "coriolis --omega 2rad/s --vr 3m/s --r 1m --alpha 1rad/s^2 --mass 2kg",
     "coriolis-vector": 'coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m"',
     "coriolis-earth": 'coriolis --latitude 45deg --speed "180 km/h" --heading 0deg',
+    "coriolis-time": 'coriolis --mass 2kg --r "s0 - b*t^2/2, 0, 0 m" s0=4m b=0.5m/s^2 '
+                     '--omega "0, 0, k*t" k=0.3rad/s^2 --t 2s --basis fixed',
     "inertia": 'inertia "rod(m=2kg, l=1m, along=x, at=(0.5, 0, 0) m)" "-point(m=0.1kg)" '
                '--axis "z through (0, 0.1, 0) m"',
     "inertia-density": 'inertia "plate(rho=7.8 kg/m^2, a=40cm, b=20cm)" '

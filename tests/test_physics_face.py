@@ -29,6 +29,12 @@ def _example_texts(scene) -> dict[str, str]:
             texts[first.name] = "0.4" if not first.dim.si else f"1.5 {first.dim.si}"
     if "r" in texts and ("R" in texts or "a" in texts):
         texts["r"] = "0.3 m"
+    if scene.constraints and "a" in texts and "r" in texts and not scene.constraints[0].holds(
+            {"a": 1.5, "r": 0.3}):  # a release radius inside r (radial-slot-release)
+        texts["a"], texts["r"] = "0.3 m", "1.5 m"
+    for p in scene.params:  # a required angle (slotted-link's theta)
+        if p.dim is ANGLE and p.default is None and not p.optional:
+            texts[p.name] = "0.5 rad"
     if "mu" in texts:
         texts["mu"] = "0.4"
     for p in scene.params:  # a required angle (an incline), given in radians

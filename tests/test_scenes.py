@@ -30,6 +30,8 @@ SCENES_MD = {
     "drum-two-blocks", "wheel-incline-block", "two-drums-rope-drive", "direct-central-impact",
     "double-pendulum-impulse", "angled-bar-on-shaft", "precessing-shaft", "beam-spun-up",
     "rotating-angled-arm",
+    # relative-motion scenes (coriolis --scene)
+    "radial-slot-release", "slotted-link",
 }
 
 #: The scenes natural-frequency computes (disk-on-swinging-bar's example is eom's: no
@@ -47,7 +49,7 @@ def run_json(words):
 def example_words(scene):
     words = shlex.split(scene.example)
     assert words[0] == "dyncalc" and words[1] in ("natural-frequency", "forced-response",
-                                                  "rigid-body"), \
+                                                  "rigid-body", "coriolis"), \
         scene.example
     return words[1:]
 
@@ -65,7 +67,7 @@ def test_scenes_json_lists_every_scene_with_dimensions():
             assert p["dimension"], (scene["name"], p["name"])
         command = ("dyncalc eom --scene" if scene["no_frequency"] else
                    ("dyncalc natural-frequency", "dyncalc forced-response",
-                    "dyncalc rigid-body"))
+                    "dyncalc rigid-body", "dyncalc coriolis"))
         assert scene["example"].startswith(command)
 
 

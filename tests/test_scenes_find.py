@@ -117,8 +117,11 @@ def test_command_filter():
     from dyncalc.scenes.kinetics import kinetics_scene_names
 
     rigid = kinetics_scene_names()
-    assert rigid and len(_listing("--command", "natural-frequency")) == len(catalog()) - len(rigid)
+    relative = {"radial-slot-release", "slotted-link"}  # coriolis --scene only
+    assert rigid and len(_listing("--command", "natural-frequency")) == \
+        len(set(catalog()) - relative - set(rigid))
     assert [b[0].split()[0] for b in _listing("--command", "rigid-body")] == rigid
+    assert [b[0].split()[0] for b in _listing("--command", "coriolis")] == sorted(relative)
     data = json_of("scenes", "--command", "damping-ratio")
     assert [s["name"] for s in data["scenes"]] == DAMPED
 
@@ -126,11 +129,11 @@ def test_command_filter():
 @pytest.mark.parametrize("args, message", [
     (["--command", "spring-series"], "Error: spring-series takes no scene; the commands with "
                                      "scenes are natural-frequency, damping-ratio, "
-                                     "forced-response, modes, rigid-body, eom"),
+                                     "coriolis, forced-response, modes, rigid-body, eom"),
     (["--command", "natral-frequency"], "Error: there is no command 'natral-frequency' (did "
                                         "you mean 'natural-frequency'?); the commands with "
                                         "scenes are natural-frequency, damping-ratio, "
-                                        "forced-response, modes, rigid-body, eom"),
+                                        "coriolis, forced-response, modes, rigid-body, eom"),
     (["mass-spring", "--command", "damping-ratio"], "Error: give a scene NAME or --command, "
                                                     "not both"),
 ])

@@ -86,12 +86,13 @@ def parse_example(example: str) -> tuple[dict[str, str], list[str], str | None, 
     """A ``dyncalc natural-frequency ...`` command line -> (standard options, NAME=QUANTITY
     words, scene, method), as :func:`natural_frequency` takes them; a forced scene's
     ``dyncalc forced-response --scene NAME NAME=QUANTITY ...`` is read the same way (its scene
-    and words are the same to either command)."""
+    and words are the same to either command); a relative-motion scene's ``dyncalc coriolis
+    --scene NAME ...`` too."""
     from dyncalc.commands.natural_frequency import STANDARD
 
     words = shlex.split(example)
     if words[:2] not in (["dyncalc", "natural-frequency"], ["dyncalc", "forced-response"],
-                         ["dyncalc", "rigid-body"]):
+                         ["dyncalc", "rigid-body"], ["dyncalc", "coriolis"]):
         raise ValueError(f"not a natural-frequency command: {example!r}")
     options: dict[str, str] = {}
     assignments: list[str] = []
@@ -122,6 +123,10 @@ def run_example(scene):
     from dyncalc.commands.natural_frequency import natural_frequency
 
     options, words, name, method = parse_example(scene.example)
+    if scene.example.split()[1] == "coriolis":
+        from dyncalc.commands.coriolis_scenes import scene_result
+
+        return scene_result(name, {}, words), None
     if scene.example.startswith("dyncalc rigid-body"):
         from dyncalc.commands.rigid_body import rigid_body
 

@@ -70,15 +70,15 @@ from ..errors import EXIT_BAD_INPUT, EXIT_OK, InputError, one_line
 from ..result.propagate import propagate
 from .fast import FastBlock
 from .header import Column, has_own_unit, read_header, with_header_unit
-from .rows import (CoriolisRows, DampingRows, EomRows, ForcedRows, ModesRows,
+from .rows import (CoriolisRows, CoriolisTimeRows, DampingRows, EomRows, ForcedRows, ModesRows,
                    NaturalFrequencyRows, RigidRows,
                    RollingRows, RowSpec, SpringRows)
 from .source import MAX_LINE, _Reader, open_source
 from .write import _BLANK, _FAST, _Writer
 
 __all__ = ["run_batch", "RowSpec", "NaturalFrequencyRows", "SpringRows", "DampingRows",
-           "RollingRows", "CoriolisRows", "ForcedRows", "ModesRows", "EomRows", "RigidRows",
-           "CHUNK_ROWS",
+           "RollingRows", "CoriolisRows", "CoriolisTimeRows", "ForcedRows", "ModesRows", "EomRows",
+           "RigidRows", "CHUNK_ROWS",
            "ON_ERROR", "GENERIC_ENV", "MAX_LINE",
            "open_source", "Column", "read_header", "has_own_unit", "with_header_unit",
            "FastBlock"]
@@ -115,7 +115,8 @@ GENERIC_ENV = "DYNCALC_BATCH_GENERIC"
 def run_batch(spec: RowSpec, source: str, *, as_json: bool = False,
               units: dict[str, str] | None = None, on_error: str = "stop",
               debug: bool = False, out=None, err=None, fast: bool | None = None) -> int:
-    """Run ``spec``'s command on every row of the CSV ``source``; the exit status.
+    """Run ``spec``'s command on every row of the CSV ``source`` (a path, ``-`` for standard
+    input, or an open text stream); the exit status.
 
     ``units`` is ``--unit`` (result name -> unit); ``on_error`` ``stop`` or ``skip``;
     ``fast=False`` sends every row through the generic path (default: the vectorised path
@@ -127,7 +128,7 @@ def run_batch(spec: RowSpec, source: str, *, as_json: bool = False,
     err = sys.stderr if err is None else err
     if fast is None:
         fast = os.environ.get(GENERIC_ENV, "") in ("", "0")
-    stream = open_source(source)
+    stream = open_source(source) if isinstance(source, str) else source
     collecting = gc.isenabled()
     gc.enable()  # the rows stream for long: the collector is on (dyncalc.cli.main pauses it)
     try:
@@ -136,7 +137,7 @@ def run_batch(spec: RowSpec, source: str, *, as_json: bool = False,
     finally:
         if not collecting:
             gc.disable()
-        if source != "-":
+        if isinstance(source, str) and source != "-":
             stream.close()
 
 

@@ -236,6 +236,36 @@ def CoriolisRows(*, strict: bool = False) -> RecordRows:
 
 
 
+class CoriolisTimeRows(RowSpec):
+    """``coriolis`` with a motion given in time, one row per time: the expressions and their
+    parameters come from the command line (``--r``, ``--omega``, ``--R0``, ``NAME=`` words),
+    the rows give ``t`` and may override a parameter."""
+
+    command = "coriolis"
+    example_header = "t [s]"
+
+    def __init__(self, values: dict, words=(), *, strict: bool = False):
+        self.values, self.strict = dict(values), strict
+        self.words = {w.partition("=")[0].strip(): w for w in words}
+
+    def key(self, name):
+        return name if name == "t" or name in self.words else None
+
+    def known(self):
+        names = ", ".join(["t", *self.words])
+        return f"coriolis with a motion given in time reads {names}"
+
+    def compute(self, texts, labels):
+        from ..commands.coriolis import COMMAND
+
+        values = dict(self.values)
+        values["t"] = texts.get("t", values.get("t"))
+        if values["t"] is None:
+            raise InputError("no t in this row: the file's t column gives the time")
+        words = [f"{k}={texts[k]}" if k in texts else w for k, w in self.words.items()]
+        return COMMAND.compute(values, tuple(words), strict=self.strict)
+
+
 def ForcedRows(*, scene: str | None = None, rtol: float | None = None,
                strict: bool = False) -> RecordRows:
     """``forced-response``: its record's columns (``k``, ``m``, ``zeta``, ``F0``, ``Omega``,

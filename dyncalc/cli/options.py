@@ -63,6 +63,8 @@ class Output:
         for spec in self.units:
             name, unit = split_assignment(spec, "--unit")
             entry = result.results.get(name)
+            if entry is None and name in getattr(result, "unavailable", {}):
+                raise InputError(f"--unit {name}: {result.unavailable[name]}")
             if entry is None:
                 raise InputError(f"--unit {name}: there is no result named {name!r}; the "
                                  f"results are {', '.join(result.results)}")
@@ -181,6 +183,7 @@ COMMON_UNITS: dict[str, tuple[str, ...]] = {
     "m": ("m", "mm", "cm", "km", "in", "ft"),
     "m/s": ("m/s", "mm/s", "km/h", "ft/s", "mph"),
     "m/s^2": ("m/s^2", "mm/s^2", "ft/s^2"),
+    "rad/s^2": ("rad/s^2", "deg/s^2", "rpm/s"),
     "N": ("N", "kN", "lbf"),
     "rad": ("rad", "deg"),
     "kg": ("kg", "g", "t", "lb"),
@@ -237,16 +240,22 @@ def _complete_words(words):
     return complete
 
 
-def build_command(record, *, rows=None, after=None, cls=None):
+def build_command(record, *, rows=None, after=None, cls=None, route=None):
     """The click command of a :class:`dyncalc.commands.record.Command`: an option per
     parameter, in the record's order (a ``choice``, or a setting with fixed words, validated
     by click; words given as a function only completed), the free words as an argument, the
     shared output options. The callback runs ``record.compute`` on the texts as typed, or
     with ``--batch`` the row adapter ``rows(settings, out)`` over the file's rows; ``after``
     acts on the result before it is shown (``--plot``); ``cls`` a subclass of
-    :class:`Command` that reads the command line its own way."""
+    :class:`Command` that reads the command line its own way; ``route(values, words, out)``
+    runs first and may take the run over (an exit status) or leave it (``None``): coriolis's
+    list of times."""
 
     def callback(out, words=(), **values):
+        if route is not None:
+            status = route(values, words, out)
+            if status is not None:
+                return status
         if out.batch is not None:
             settings = {p.name: values[p.name] for p in record.parameters
                         if p.kind == "setting"}

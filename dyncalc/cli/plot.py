@@ -10,7 +10,7 @@ import numpy as np
 from ..errors import InputError
 from ..result import Result, format_number
 
-__all__ = ["plot_decay", "plot_forced", "plot_loads", "PLOT_FORMATS"]
+__all__ = ["plot_decay", "plot_forced", "plot_loads", "plot_coriolis", "PLOT_FORMATS"]
 
 PLOT_FORMATS = (".png", ".svg", ".pdf")
 
@@ -213,6 +213,49 @@ def plot_forced(result: Result, path: str) -> str:
                  fontsize=11)
     _save(fig, target, path)
     result.extra["plot"] = str(target)
+    return str(target)
+
+
+def plot_coriolis(data, path: str) -> str:
+    """Draw a motion given in time (``coriolis --t ... --plot``) into ``path``: the point's
+    path in the fixed frame's x-y plane over the window of
+    :func:`dyncalc.commands.coriolis_time.plot_window`, the point at ``--t`` with its velocity
+    and acceleration arrows (each scaled to a fifth of the drawing, its magnitude in the
+    legend). ``data`` is a :class:`~dyncalc.commands.coriolis_time.PathData`. Returns the path
+    written."""
+    target = _target(path)
+    Figure, FigureCanvasAgg = _matplotlib()
+    fig = Figure(figsize=(7.0, 7.0), dpi=100, layout="constrained")
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot(1, 1, 1)
+    xy = data.path[:, :2]
+    ax.plot(xy[:, 0], xy[:, 1], color="tab:blue",
+            label=f"path, t = {data.times[0]:.4g} to {data.times[-1]:.4g} s ({data.reason})")
+    ax.plot([data.point[0]], [data.point[1]], "o", color="black",
+            label=f"point at t = {data.t:.4g} s")
+    finite = xy[np.all(np.isfinite(xy), axis=1)]
+    span = float(np.ptp(finite, axis=0).max()) if len(finite) else 0.0
+    span = span or max(float(np.hypot(*data.point[:2])), 1.0)
+    for vector, colour, name, unit in ((data.v, "tab:green", "v", "m/s"),
+                                       (data.a, "tab:red", "a", "m/s^2")):
+        size = float(np.linalg.norm(vector))
+        planar = float(np.hypot(vector[0], vector[1]))
+        if planar == 0.0:
+            continue
+        scale = 0.2 * span / planar
+        tip = (data.point[0] + scale * vector[0], data.point[1] + scale * vector[1])
+        ax.plot([tip[0]], [tip[1]], alpha=0.0)  # the arrow's tip inside the drawing
+        ax.annotate("", xy=tip, xytext=(data.point[0], data.point[1]), annotation_clip=False,
+                    arrowprops={"arrowstyle": "->", "color": colour, "linewidth": 2})
+        ax.plot([], [], color=colour, linewidth=2,
+                label=f"{name} = {format_number(size, 4)} {unit} (arrow not to scale)")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x (m, fixed frame)")
+    ax.set_ylabel("y (m, fixed frame)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="best")
+    fig.suptitle("coriolis: path in the fixed frame (x-y plane)", fontsize=11)
+    _save(fig, target, path)
     return str(target)
 
 

@@ -38,7 +38,7 @@ from ..lazy import numpy as np
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
 from .record import Command, Parameter, ResultName
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
-                    MASS, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
+                    MASS, TIME, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
                     parse_vector)
 
 __all__ = ["COMMAND", "coriolis_result", "OPTIONS", "read", "compute", "CoriolisInputs"]
@@ -49,6 +49,7 @@ OPTIONS = {
     "vr": (VELOCITY, "velocity relative to the frame"),
     "r": (LENGTH, "position in the frame"),
     "alpha": (ANGULAR_ACCELERATION, "angular acceleration of the frame"),
+    "v0": (VELOCITY, "velocity of the frame's origin"),
     "a0": (ACCELERATION, "acceleration of the frame's origin"),
     "ar": (ACCELERATION, "acceleration relative to the frame"),
     "mass": (MASS, "mass"),
@@ -75,9 +76,23 @@ _KINDS = {  # result name -> (dim, unit, vector symbol, magnitude symbol, descri
                     "transport acceleration (of the frame point)"),
     "a": (ACCELERATION, "m/s^2", "a", "|a|", "absolute acceleration"),
     "a_mag": (ACCELERATION, "m/s^2", "|a|", "|a|", "magnitude of a"),
+    "a_transport_mag": (ACCELERATION, "m/s^2", "|a_transport|", "|a_transport|",
+                        "magnitude of a_transport"),
+    "v_transport": (VELOCITY, "m/s", "v0+Ω×r", "Ωr", "transport velocity (of the frame point)"),
+    "v_transport_mag": (VELOCITY, "m/s", "|v_transport|", "|v_transport|",
+                        "magnitude of v_transport"),
+    "v": (VELOCITY, "m/s", "v", "|v|", "absolute velocity"),
+    "v_mag": (VELOCITY, "m/s", "|v|", "|v|", "magnitude of v"),
     "Omega": (ANGULAR_RATE, "rad/s", "Ω", "Ω", "Earth's angular velocity (east, north, up)"),
     "v_r": (VELOCITY, "m/s", "v_r", "v_r", "velocity relative to the Earth (east, north, up)"),
     "coriolis_parameter": (RATE, "1/s", "2Ω sinφ", "2Ω sinφ", "Coriolis parameter f"),
+    "a_c_horizontal": (ACCELERATION, "m/s^2", "a_c,h", "|a_c,h|",
+                       "horizontal part of a_c (east, north, 0)"),
+    "a_c_horizontal_mag": (ACCELERATION, "m/s^2", "|a_c,h|", "|a_c,h|",
+                           "magnitude of a_c_horizontal"),
+    "F_c_horizontal": (FORCE, "N", "F_c,h", "|F_c,h|",
+                       "horizontal part of F_c (east, north, 0): the sideways push"),
+    "F_c_horizontal_mag": (FORCE, "N", "|F_c,h|", "|F_c,h|", "magnitude of F_c_horizontal"),
 }
 
 _COMPASS = ["north", "north-north-east", "north-east", "east-north-east", "east",
@@ -143,18 +158,25 @@ class _Reader:
     """Parses the option texts, remembering the parsed values and the input entries in the
     order read."""
 
-    def __init__(self, texts: dict[str, str], strict: bool):
+    def __init__(self, texts: dict[str, str], strict: bool, params: dict | None = None):
         self.texts, self.strict = texts, strict
+        self.params = params or {}
         self.inputs: dict[str, Entry] = {}
         self.parsed: dict[str, Parsed] = {}
 
     def vector(self, name: str) -> Parsed | None:
+        from ..units.vector_expression import needs_expressions, parse_vector_expression
+
         text = self.texts.get(name)
         if text is None:
             return None
         dim, description = OPTIONS[name]
-        parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
-                              strict=self.strict)
+        if needs_expressions(text, self.params):
+            parsed = parse_vector_expression(text, dim, label=f"--{name}", params=self.params,
+                                             strict=self.strict)
+        else:
+            parsed = parse_vector(text, dim, label=f"--{name}", allow_scalar=True,
+                                  strict=self.strict)
         self.inputs[name] = _input_entry(name, parsed, dim, description)
         self.parsed[name] = parsed
         return parsed
@@ -173,6 +195,12 @@ class _Reader:
     def done(self, form: str, warnings: list[str] | None = None,
              degrees: float | None = None) -> CoriolisInputs:
         return CoriolisInputs(form, self.parsed, self.inputs, warnings, degrees)
+
+
+def _words(text: str) -> set[str]:
+    import re
+
+    return set(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", text))
 
 
 def _refuse_negative(name: str, parsed: Parsed) -> None:
@@ -196,6 +224,11 @@ def _entry(name: str, si, vector: bool) -> Entry:
                                f"{unit})")
     return Entry(name, value, dim, unit=unit, symbol=vsym if vector else ssym,
                  description=description)
+
+
+def _horizontal(v):
+    """The east and north components of an east-north-up vector, up set to zero."""
+    return np.array([float(v[0]), float(v[1]), 0.0]) + 0.0
 
 
 def _mag(v) -> float:
@@ -264,11 +297,25 @@ def _line(label: str, expression: str, value, unit: str, why: str | None) -> str
     return f"{label} = {expression}{' = ' if expression else ''}{_fmt(value, unit)}"
 
 
-def _vector_lines(fa, full: bool, mass_si: float | None) -> list[str]:
-    """The terms of the formula with their numbers (vectors), and which vanish and why."""
+def _vector_lines(fa, full: bool, mass_si: float | None, motion=None,
+                  known: bool = True) -> list[str]:
+    """The terms of the formula with their numbers (vectors), and which vanish and why;
+    ``motion`` (a :class:`~dyncalc.physics.relative_motion.RelativeMotion`) adds the
+    velocities, ``known`` is whether v_r was given."""
     om, v, r, al = (_fmt(x) for x in (fa.Omega, fa.v_r, fa.r, fa.alpha))
-    lines = [_line("2 Omega x v_r", f"2 {om} rad/s x {v} m/s", fa.a_c, "m/s^2",
-                   _why_zero("a_c", fa, "vector"))]
+    lines = []
+    if motion is not None:
+        lines.append(f"v_transport = v0 + Omega x r = {_fmt(motion.v_transport, 'm/s')}, "
+                     f"|v_transport| = {_fmt(motion.mags['v_transport_mag'], 'm/s')}")
+        if known:
+            lines.append(f"v = v_transport + v_r = {_fmt(motion.v, 'm/s')}, "
+                         f"|v| = {_fmt(motion.mags['v_mag'], 'm/s')}")
+    if known:
+        lines.append(_line("2 Omega x v_r", f"2 {om} rad/s x {v} m/s", fa.a_c, "m/s^2",
+                           _why_zero("a_c", fa, "vector")))
+    else:
+        lines.append("v, a_c = 2 Omega x v_r, a: not computed (give --vr, the velocity "
+                     "relative to the frame)")
     if not full:
         lines.append("a0, alpha x r, Omega x (Omega x r), a_r: not computed (give --r, "
                      "--alpha, --a0 or --ar for the absolute acceleration a)")
@@ -282,9 +329,10 @@ def _vector_lines(fa, full: bool, mass_si: float | None) -> list[str]:
             _line("a_r", "", fa.a_r, "m/s^2", _why_zero("a_r", fa, "vector")),
             f"a_transport = a0 + alpha x r + Omega x (Omega x r) = "
             f"{_fmt(fa.a_transport, 'm/s^2')}",
-            f"a = a_transport + 2 Omega x v_r + a_r = {_fmt(fa.a, 'm/s^2')}, "
-            f"|a| = {_fmt(_mag(fa.a), 'm/s^2')}",
         ]
+        if known:
+            lines.append(f"a = a_transport + 2 Omega x v_r + a_r = {_fmt(fa.a, 'm/s^2')}, "
+                         f"|a| = {_fmt(_mag(fa.a), 'm/s^2')}")
     if fa.F_c is not None:
         lines.append(f"F_c = -m a_c = -{_fmt(mass_si, 'kg')} x {_fmt(fa.a_c, 'm/s^2')} = "
                      f"{_fmt(fa.F_c, 'N')}")
@@ -349,7 +397,8 @@ def _latitude_words(degrees: float) -> str:
 # Reading: every option parsed and checked once
 
 
-def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Result:
+def coriolis_result(texts: dict[str, str | None], words=(), *,
+                    strict: bool = False) -> Result:
     """Compute the ``coriolis`` command from the option texts (``{"omega": "0,0,2 rad/s",
     "vr": "3,0,0 m/s"}``; keys are the option names of :data:`OPTIONS`, ``None`` = not given):
     :func:`read`, then :func:`compute`.
@@ -360,10 +409,73 @@ def coriolis_result(texts: dict[str, str | None], *, strict: bool = False) -> Re
     >>> res.results["a_c"].si, res.results["a_c"].unit
     (12.0, 'm/s^2')
     """
-    return compute(read(texts, strict))
+    solved = _inverse(texts, words, strict)
+    if solved is not None:
+        return solved
+    return compute(read(texts, strict, words))
 
 
-def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
+#: Options an inverse problem reads, by set-up: option -> the scene parameter it gives.
+_INVERSE_OPTIONS = {"perpendicular": {"omega": "omega", "vr": "vr", "mass": "mass"},
+                    "earth": {"latitude": "latitude", "vr": "vr", "speed": "vr",
+                              "heading": "heading", "omega": "omega", "mass": "mass"}}
+
+
+def _inverse(texts: dict[str, str | None], words, strict: bool) -> Result | None:
+    """A scalar inverse problem (``a_c=12m/s^2 --omega 2rad/s vr=?``,
+    ``a_c_mag=0.01m/s^2 --latitude 45deg vr=?``) solved through
+    :func:`dyncalc.scenes.inverse.solve`, or ``None`` when the words pose none."""
+    if not words:
+        return None
+    from ..result.checks import split_assignment
+    from ..scenes.coriolis_scalar import EARTH, PERPENDICULAR, TARGETS
+
+    pairs = [split_assignment(word, "a parameter") for word in words]
+    every = {n for names in TARGETS.values() for n in names}
+    if not any(name in every or text.strip() == "?" for name, text in pairs):
+        return None
+    earthly = ("latitude", "speed", "heading")
+    form = ("earth" if any(texts.get(n) is not None for n in earthly)
+            or any(name in earthly for name, _text in pairs) else "perpendicular")
+    scene = EARTH if form == "earth" else PERPENDICULAR
+    allowed = _INVERSE_OPTIONS[form]
+    scene_texts: dict[str, str] = {}
+    labels: dict[str, str] = {}
+    for option, text in texts.items():
+        if text is None:
+            continue
+        if option not in allowed:
+            raise InputError(f"--{option} does not go with an inverse problem: coriolis "
+                             f"solves {scene.formula} for one unknown from "
+                             f"{', '.join(p.name for p in scene.params)}")
+        if form == "perpendicular" and "," in text:
+            raise InputError(f"--{option}: an inverse problem takes magnitudes (perpendicular "
+                             "vectors), e.g. --omega 2rad/s; give vectors to compute forward")
+        name = allowed[option]
+        if name in scene_texts:
+            raise InputError("give --vr or --speed, not both")
+        scene_texts[name], labels[name] = text, f"--{option}"
+    if not any(name in every for name, _text in pairs):
+        asked = next(name for name, text in pairs if text.strip() == "?")
+        raise InputError(f"{asked}=? needs a result to solve from: one of "
+                         f"{', '.join(TARGETS[form])}, e.g. {TARGETS[form][0]}=0.01m/s^2")
+    for name, text in pairs:
+        if name in every and name not in TARGETS[form]:
+            other = ("--latitude" if form == "perpendicular" else "magnitudes without "
+                     "--latitude")
+            raise InputError(f"{name}= is not a result of this form: with "
+                             f"{'magnitudes' if form == 'perpendicular' else '--latitude'} "
+                             f"give one of {', '.join(TARGETS[form])} (or use {other})")
+        if name in scene_texts:
+            raise InputError(f"{name} is given twice ({labels[name]} and {name}=)")
+        scene_texts[name], labels[name] = text, f"{name}="
+    from ..scenes.inverse import solve
+
+    return solve(scene, scene_texts, labels=labels, method=None, rtol=None, strict=strict,
+                 command="coriolis")
+
+
+def read(texts: dict[str, str | None], strict: bool = False, words=()) -> CoriolisInputs:
     """The option texts -> :class:`CoriolisInputs`: every quantity and vector parsed and
     checked once, the form (vectors, magnitudes, Earth) chosen by the options given.
 
@@ -373,8 +485,9 @@ def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
     unknown = set(texts) - set(OPTIONS)
     if unknown:
         raise InputError(f"coriolis has no option --{sorted(unknown)[0]}")
+    params = _parameters(texts, words)
     if "latitude" in texts:
-        return _read_earth(_Reader(texts, strict))
+        return _read_earth(_Reader(texts, strict, params))
     for name in ("speed", "heading", "vertical"):
         if name in texts:
             raise InputError(f"--{name} describes motion over the Earth and needs --latitude; "
@@ -383,18 +496,51 @@ def read(texts: dict[str, str | None], strict: bool = False) -> CoriolisInputs:
         raise InputError("--omega is missing: give the frame's angular velocity, e.g. --omega "
                          "'0,0,2 rad/s' ('0,0,0 rad/s' for a frame that only translates), or "
                          "--latitude for the rotating Earth")
-    if "vr" not in texts:
+    if "vr" not in texts and "r" not in texts and "v0" not in texts:
         raise InputError("--vr is missing: give the velocity relative to the frame, e.g. --vr "
-                         "'3,0,0 m/s' (or a magnitude such as '3 m/s' with a magnitude --omega)")
-    reader = _Reader(texts, strict)
+                         "'3,0,0 m/s' (or a magnitude such as '3 m/s' with a magnitude --omega),"
+                         " or --r for the velocity and acceleration of the frame point")
+    reader = _Reader(texts, strict, params)
     omega = reader.vector("omega")
     if _is_vector(omega):
         return _read_vectors(reader)
     return _read_scalars(reader, omega)
 
 
+def _parameters(texts: dict[str, str], words) -> dict:
+    """The ``NAME=QUANTITY`` words: an option's name (``omega=...``) joins ``texts``; any
+    other name is a parameter of the component expressions (``l=2m`` for
+    ``--r "l*cos(30deg), l*sin(30deg), 0"``): name -> (SI value, dimension, reading)."""
+    if not words:
+        return {}
+    from ..result.checks import split_assignment
+    from ..units.vector_expression import read_parameters
+
+    given: dict[str, str] = {}
+    for word in words:
+        name, text = split_assignment(word, "a parameter")
+        if name in texts or name in given:
+            where = f"--{name} and {name}=" if name in texts else f"{name}= twice"
+            raise InputError(f"{name} is given twice ({where})")
+        if name in OPTIONS:
+            texts[name] = text
+        else:
+            given[name] = text
+    for name in given:
+        if not any(name in _words(text) for option, text in texts.items()
+                   if OPTIONS[option][1] and option not in _SCALARS):
+            raise InputError(f"{name}= is used by no vector component: a parameter names a "
+                             "quantity inside the components of --r, --vr, --omega, ... "
+                             "(--r \"l*cos(30deg), l*sin(30deg), 0\" l=2m)")
+    return read_parameters(given)
+
+
+#: Options that are never vectors (a NAME= parameter is not used in them).
+_SCALARS = ("mass", "latitude", "speed", "heading", "vertical")
+
+
 def _read_vectors(reader: _Reader) -> CoriolisInputs:
-    for name in ("vr", "r", "alpha", "a0", "ar"):
+    for name in ("vr", "r", "v0", "alpha", "a0", "ar"):
         p = reader.vector(name)
         if p is not None and not _is_vector(p):
             dim = OPTIONS[name][0]
@@ -416,7 +562,11 @@ def _read_scalars(reader: _Reader, omega: Parsed) -> CoriolisInputs:
                              "3 components (e.g. --omega '0,0,2 rad/s') or both as magnitudes "
                              "(the scalar form: perpendicular vectors)")
         _refuse_negative(name, p)
-    for name in ("a0", "ar"):
+    if "vr" not in reader.texts:
+        raise InputError("--vr is missing: the scalar form (a magnitude --omega) gives "
+                         "a_c = 2 Omega v_r; give --vr as a magnitude, e.g. --vr '3 m/s' (or "
+                         "vectors for the velocities of the frame point)")
+    for name in ("v0", "a0", "ar"):
         if name in reader.texts:
             raise InputError(f"--{name} needs a direction: give --omega, --vr and --{name} as "
                              "vectors (3 components, e.g. --omega '0,0,2 rad/s'); the scalar "
@@ -474,7 +624,7 @@ def _read_earth(reader: _Reader) -> CoriolisInputs:
                          "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "
                          "--heading")
 
-    for name in ("r", "alpha", "a0", "ar"):
+    for name in ("r", "v0", "alpha", "a0", "ar"):
         p = reader.vector(name)
         if p is not None and not _is_vector(p):
             raise InputError(f"--{name} with --latitude is a vector of east, north, up "
@@ -508,29 +658,45 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
     each; ``r``, ``alpha``, ``a0``, ``ar`` and ``mass`` as read (vectors and Earth mode).
     ``moves()`` gives how each uncertain input other than the mass moves ``Omega`` and ``v_r``
     (:func:`_frame_slopes`)."""
-    from ..physics.frames import relative_acceleration
+    from ..physics.relative_motion import relative_motion
 
     si = inputs.si
     mass = inputs.parsed.get("mass")
-    fa = relative_acceleration(Omega, v_r, r=si("r"), alpha=si("alpha"), a0=si("a0"),
-                               a_r=si("ar"), m=None if mass is None else mass.si)
+    motion = relative_motion(Omega, si("r"), v_r=v_r, v0=si("v0"), alpha=si("alpha"),
+                             a0=si("a0"), a_r=si("ar"), m=None if mass is None else mass.si)
+    fa = motion.accel
     full = any(n in inputs.parsed for n in ("r", "alpha", "a0", "ar"))
+    moving = any(n in inputs.parsed for n in ("r", "v0"))
+    known = v_r is not None
 
-    results = {"a_c": _entry("a_c", fa.a_c, True),
-               "a_c_mag": _entry("a_c_mag", _mag(fa.a_c), False)}
+    results: dict[str, Entry] = {}
+    if known:
+        results["a_c"] = _entry("a_c", fa.a_c, True)
+        results["a_c_mag"] = _entry("a_c_mag", _mag(fa.a_c), False)
     if fa.F_c is not None:
         results["F_c"] = _entry("F_c", fa.F_c, True)
         results["F_c_mag"] = _entry("F_c_mag", _mag(fa.F_c), False)
     if full:
-        for name in ("a_euler", "a_centripetal", "a_transport", "a"):
+        for name in ("a_euler", "a_centripetal", "a_transport"):
             results[name] = _entry(name, getattr(fa, name), True)
-        results["a_mag"] = _entry("a_mag", _mag(fa.a), False)
+        if known:
+            results["a"] = _entry("a", fa.a, True)
+            results["a_mag"] = _entry("a_mag", _mag(fa.a), False)
+        results["a_transport_mag"] = _entry("a_transport_mag", _mag(fa.a_transport), False)
+    if moving:
+        results["v_transport"] = _entry("v_transport", motion.v_transport, True)
+        results["v_transport_mag"] = _entry("v_transport_mag",
+                                            motion.mags["v_transport_mag"], False)
+        if known:
+            results["v"] = _entry("v", motion.v, True)
+            results["v_mag"] = _entry("v_mag", motion.mags["v_mag"], False)
 
     substituted = []
     assumptions = []
     extra = {}
     if earth is None:
-        substituted.append(f"Omega = {_fmt(fa.Omega, 'rad/s')}, v_r = {_fmt(fa.v_r, 'm/s')}"
+        substituted.append(f"Omega = {_fmt(fa.Omega, 'rad/s')}"
+                           + (f", v_r = {_fmt(fa.v_r, 'm/s')}" if known else "")
                            + (f", r = {_fmt(fa.r, 'm')}" if "r" in fa.given else ""))
         assumptions.append("a rigid frame turning with Omega (and alpha) whose origin "
                            "accelerates with a0; r, v_r and a_r are measured in the frame; all "
@@ -541,9 +707,16 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
             results["v_r"] = _entry("v_r", fa.v_r, True)
         results["coriolis_parameter"] = _entry("coriolis_parameter", 2.0 * float(fa.Omega[2]),
                                                False)
+        for name, vector in (("a_c", fa.a_c), ("F_c", fa.F_c)):
+            if vector is not None:
+                flat = _horizontal(vector)
+                results[name + "_horizontal"] = _entry(name + "_horizontal", flat, True)
+                results[name + "_horizontal_mag"] = _entry(name + "_horizontal_mag",
+                                                           _mag(flat), False)
         substituted += earth["lines"]
         assumptions += earth["assumptions"]
-    substituted += _vector_lines(fa, full, None if mass is None else mass.si)
+    substituted += _vector_lines(fa, full, None if mass is None else mass.si,
+                                 motion if moving else None, known)
     assumptions.append("a_c = 2 Omega x v_r is the Coriolis term of the absolute acceleration; "
                        "an observer in the frame sees the Coriolis force F_c = -m a_c, opposite "
                        "to a_c")
@@ -560,22 +733,52 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
     explanation = Explanation(
         formula=["a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
                  "a_transport = a0 + alpha x r + Omega x (Omega x r), a_c = 2 Omega x v_r, "
-                 "F_c = -m a_c"],
+                 "F_c = -m a_c"] + (["v = v_transport + v_r, v_transport = v0 + Omega x r"]
+                                    if moving else []),
         substituted=substituted, assumptions=assumptions, reference=REFERENCE,
         latex=list(VECTOR_LATEX))
     result = Result(command="coriolis", results=results, inputs=dict(inputs.entries),
                     model=model, method="closed-form",
                     warnings=list(earth["warnings"] if earth else []) + fa.warnings,
                     explanation=explanation, extra=extra)
+    result.unavailable = _unavailable(results, set(inputs.parsed) | (
+        {"vr"} if known else set()))
     m = None if mass is None else float(mass.si)
 
     def slopes_of():
         found = {} if moves is None else moves()
         return lambda name: _frame_slopes(fa, m, found.get(name, _MASS if name == "mass"
-                                                            else _STILL))
+                                                            else _STILL),
+                                          motion.v_transport, motion.v)
 
     result.sensitivity = lambda: _sensitivity(inputs, result, slopes_of())
     return result
+
+
+#: What each result of the vector form needs: groups of options, one of each group.
+_NEEDS = {
+    "a_c": (("vr",),), "F_c": (("vr",), ("mass",)), "v_transport": (("r", "v0"),),
+    "v": (("vr",), ("r", "v0")), "a_transport": (("r", "alpha", "a0", "ar"),),
+    "a_euler": (("r", "alpha", "a0", "ar"),), "a_centripetal": (("r", "alpha", "a0", "ar"),),
+    "a": (("vr",), ("r", "alpha", "a0", "ar")),
+}
+_GROUP_WORDS = {
+    ("vr",): "--vr (the velocity relative to the frame)", ("mass",): "--mass",
+    ("r", "v0"): "--r (the position in the frame) or --v0 (the velocity of its origin)",
+    ("r", "alpha", "a0", "ar"): "--r, --alpha, --a0 or --ar (the terms of the frame's motion)",
+}
+
+
+def _unavailable(results: dict, given) -> dict[str, str]:
+    """Result name -> why it is not among ``results`` (for ``--value``, ``--check`` and
+    ``--unit`` naming one): the options it needs that were not given."""
+    out = {}
+    for name, groups in _NEEDS.items():
+        missing = [_GROUP_WORDS[g] for g in groups if not any(o in given for o in g)]
+        for key in (name, name + "_mag"):
+            if missing and key in _KINDS and key not in results:
+                out[key] = f"{key} needs {' and '.join(missing)}"
+    return out
 
 
 #: The relative-motion formula in LaTeX (vectors).
@@ -730,10 +933,11 @@ def columns(given: dict, settings: dict):
     """The results of a block of batch rows at once, or ``None`` when not vectorised here.
 
     ``given`` maps the columns the block gives (the record's input names: ``omega``, ``vr``,
-    ``r``, ``alpha``, ``a0``, ``ar``, ``mass``) to SI arrays, ``(n, 3)`` for vectors and
-    ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector form and the
-    magnitudes form are vectorised through the kernel of
-    :func:`~dyncalc.physics.frames.relative_acceleration`, magnitudes by the twin of
+    ``r``, ``v0``, ``alpha``, ``a0``, ``ar``, ``mass``) to SI arrays, ``(n, 3)`` for
+    vectors and ``(n,)`` for magnitudes and the mass; ``settings`` is not used. The vector
+    form and the magnitudes form are vectorised through the kernel of
+    :func:`~dyncalc.physics.frames.relative_acceleration` (the velocities through that of
+    :func:`~dyncalc.physics.relative_motion.transport_velocity`), magnitudes by the twin of
     ``math.hypot`` (:func:`~dyncalc.physics.numerics_arrays.hypot_rows`); the Earth form
     (``latitude``, ``speed``, ...) and mixed or missing inputs give ``None``. Exact where the
     one-off gives these values with no warning and no refusal (a term or magnitude beyond
@@ -743,12 +947,16 @@ def columns(given: dict, settings: dict):
     from ..physics.frames import relative_acceleration
     from ..physics.numerics_arrays import hypot_rows
 
+    from ..physics.relative_motion import transport_velocity
+
     keys = set(given)
-    if ("omega" not in keys or "vr" not in keys
-            or keys - {"omega", "vr", "r", "alpha", "a0", "ar", "mass"}):
+    if ("omega" not in keys or not keys & {"vr", "r", "v0"}
+            or keys - {"omega", "vr", "r", "v0", "alpha", "a0", "ar", "mass"}):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     vectors = arrays["omega"].ndim == 2
+    if not vectors and ("vr" not in keys or "v0" in keys):
+        return None
     shapes = {name: value.ndim for name, value in arrays.items() if name != "mass"}
     if set(shapes.values()) != {2 if vectors else 1} or arrays.get("mass", np.ones(1)).ndim != 1:
         return None
@@ -766,18 +974,36 @@ def columns(given: dict, settings: dict):
         return value + 0.0
 
     if vectors:
-        out = relative_acceleration.columns(arrays["omega"], arrays["vr"], r=arrays.get("r"),
-                                            alpha=arrays.get("alpha"), a0=arrays.get("a0"),
-                                            a_r=arrays.get("ar"), m=mass)
+        known = "vr" in keys
+        omega, vr = arrays["omega"], arrays.get("vr")
+        out = relative_acceleration.columns(omega, vr if known else np.zeros_like(omega),
+                                            r=arrays.get("r"), alpha=arrays.get("alpha"),
+                                            a0=arrays.get("a0"), a_r=arrays.get("ar"),
+                                            m=mass if known else None)
         terms = out.values
-        values = {"a_c": terms["a_c"], "a_c_mag": magnitude(terms["a_c"])}
-        if mass is not None:
-            values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
+        exact = out.exact
+        values = {}
+        if known:
+            values.update(a_c=terms["a_c"], a_c_mag=magnitude(terms["a_c"]))
+            if mass is not None:
+                values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
         if keys & {"r", "alpha", "a0", "ar"}:
-            for name in ("a_euler", "a_centripetal", "a_transport", "a"):
+            for name in ("a_euler", "a_centripetal", "a_transport"):
                 values[name] = terms[name]
-            values["a_mag"] = magnitude(terms["a"])
-        return Columns(values, exact=out.exact & ok, model="vectors")
+            if known:
+                values.update(a=terms["a"], a_mag=magnitude(terms["a"]))
+            values["a_transport_mag"] = magnitude(terms["a_transport"])
+        if keys & {"r", "v0"}:
+            r = arrays["r"] if "r" in keys else np.zeros_like(omega)
+            v_t = transport_velocity.columns(omega, r, v0=arrays.get("v0"))
+            values.update(v_transport=v_t.values["v"],
+                          v_transport_mag=magnitude(v_t.values["v"]))
+            exact = exact & v_t.exact
+            if known:
+                v = transport_velocity.columns(omega, r, v0=arrays.get("v0"), v_r=vr)
+                values.update(v=v.values["v"], v_mag=magnitude(v.values["v"]))
+                exact = exact & v.exact
+        return Columns(values, exact=exact & ok, model="vectors")
     if keys & {"a0", "ar"}:
         return None
     for value in arrays.values():
@@ -893,13 +1119,15 @@ def _earth_moves(inputs: CoriolisInputs, rate: float) -> dict[str, tuple]:
     return moves
 
 
-def _frame_slopes(fa, m: float | None, move: tuple) -> dict[str, Any]:
+def _frame_slopes(fa, m: float | None, move: tuple, v_transport=None,
+                  v_abs=None) -> dict[str, Any]:
     """Slopes of every result of the vector formula for an input that moves ``Omega`` by
     ``dOm`` and ``v_r`` by ``dv`` (per SI unit of the input) and the mass ``m`` (kg) by
     ``dm``; ``r``, ``alpha``, ``a0``, ``a_r`` are vectors and carry no uncertainty:
 
     ``da_c = 2 (dOm x v_r + Omega x dv)``, ``da_centripetal = dOm x (Omega x r) +
     Omega x (dOm x r)`` (= ``da_transport``), ``da = da_transport + da_c``,
+    ``dv_transport = dOm x r``, ``dv = dv_transport + dv``,
     ``dF_c = -(m da_c + dm a_c)``, ``d coriolis_parameter = 2 dOm_z``; a magnitude by
     :func:`_norm_slope`.
     """
@@ -907,14 +1135,27 @@ def _frame_slopes(fa, m: float | None, move: tuple) -> dict[str, Any]:
     Om, v, r = fa.Omega, fa.v_r, fa.r
     da_c = 2.0 * (np.cross(dOm, v) + np.cross(Om, dv))
     da_cent = np.cross(dOm, np.cross(Om, r)) + np.cross(Om, np.cross(dOm, r))
+    dv_t = np.cross(dOm, r)
     row = {"a_c": da_c, "a_c_mag": _norm_slope(fa.a_c, da_c, side),
            "a_euler": np.zeros(3), "a_centripetal": da_cent, "a_transport": da_cent,
+           "a_transport_mag": _norm_slope(fa.a_transport, da_cent, side),
            "a": da_cent + da_c, "a_mag": _norm_slope(fa.a, da_cent + da_c, side),
-           "Omega": dOm, "v_r": dv, "coriolis_parameter": 2.0 * float(dOm[2])}
+           "Omega": dOm, "v_r": dv, "coriolis_parameter": 2.0 * float(dOm[2]),
+           "v_transport": dv_t, "v": dv_t + dv}
+    if v_transport is not None:
+        row["v_transport_mag"] = _norm_slope(v_transport, dv_t, side)
+    flat = _horizontal(da_c)
+    row["a_c_horizontal"] = flat
+    row["a_c_horizontal_mag"] = _norm_slope(_horizontal(fa.a_c), flat, side)
+    if v_abs is not None:
+        row["v_mag"] = _norm_slope(v_abs, dv_t + dv, side)
     if m is not None:
         dF_c = -(m * da_c + dm * fa.a_c)
         row["F_c"] = dF_c
         row["F_c_mag"] = _norm_slope(fa.F_c, dF_c, side)
+        row["F_c_horizontal"] = _horizontal(dF_c)
+        row["F_c_horizontal_mag"] = _norm_slope(_horizontal(fa.F_c), _horizontal(dF_c),
+                                                side)
     return row
 
 
@@ -930,6 +1171,19 @@ def _norm_slope(x, dx, side: int) -> float:
 
 # --- the command record ----------------------------------------------------------------------
 
+#: The results of the time path and the scenes (their names are listed for --value completion).
+_TIME_RESULTS = {
+    "r": (LENGTH, "m", "r", "position in the frame (motion given in time)"),
+    "v_r": (VELOCITY, "m/s", "v_r", "velocity relative to the frame (r'; a scene's slide)"),
+    "a_r": (ACCELERATION, "m/s^2", "a_r", "acceleration relative to the frame (r'')"),
+    "alpha": (ANGULAR_ACCELERATION, "rad/s^2", "α", "angular acceleration of the frame "
+                                                      "(Omega')"),
+    "v0": (VELOCITY, "m/s", "v0", "velocity of the frame's origin (R0')"),
+    "a0": (ACCELERATION, "m/s^2", "a0", "acceleration of the frame's origin (R0'')"),
+    "R": (LENGTH, "m", "R", "position of the point from the fixed origin"),
+    "theta": (ANGLE, "rad", "θ", "angle the frame has turned since t = 0"),
+}
+
 _VECTOR = "VEC"
 #: option -> (metavar, help) of ``dyncalc coriolis --help``, in its order
 _HELP = {
@@ -942,6 +1196,8 @@ _HELP = {
           "the rotation axis."),
     "alpha": (_VECTOR, "Angular acceleration of the frame, e.g. '0,0,1 rad/s^2' (a magnitude: "
               "about the axis of --omega)."),
+    "v0": (_VECTOR, "Velocity of the frame's origin, e.g. '1,0,0 m/s' (vectors only): adds "
+           "to v_transport = v0 + Omega x r."),
     "a0": (_VECTOR, "Acceleration of the frame's origin, e.g. '1,0,0 m/s^2' (vectors only)."),
     "ar": (_VECTOR, "Acceleration relative to the frame (vectors only)."),
     "mass": ("M", "Mass: adds the Coriolis force F_c = -m a_c."),
@@ -955,7 +1211,40 @@ _HELP = {
 
 
 def _run(values: dict[str, str | None], words=(), *, rtol=None, strict=False) -> Result:
-    return coriolis_result({name: values.get(name) for name in OPTIONS}, strict=strict)
+    scene = values.get("scene")
+    if scene is not None:
+        from .coriolis_scenes import scene_result
+
+        return scene_result(scene, values, words, rtol=rtol, strict=strict)
+    from .coriolis_time import is_time_motion
+
+    if is_time_motion(values):
+        from .coriolis_time import time_result
+
+        times = values.get("t")
+        if times is not None and "," in times:
+            raise InputError("--t: a list of times gives a table, one row per time; the "
+                             "command line prints it (in Python call once per time)")
+        return time_result({name: values.get(name) for name in _TIME_TEXTS}, words,
+                           strict=strict)
+    if values.get("basis") is not None:
+        raise InputError("--basis goes with a motion given in time (--t): constant vectors "
+                         "are given and shown in one frame's components")
+    if values.get("plot") is not None:
+        raise InputError("--plot draws a motion given in time: give --r (and --omega, --R0) "
+                         "as expressions in t with --t")
+    return coriolis_result({name: values.get(name) for name in OPTIONS}, words,
+                           strict=strict)
+
+
+#: The options the time path reads (the others it refuses by name).
+_TIME_TEXTS = (*OPTIONS, "R0", "t", "basis")
+
+
+def _relative_scenes():
+    from ..scenes.relative import relative_scene_names
+
+    return relative_scene_names()
 
 
 COMMAND = Command(
@@ -965,29 +1254,67 @@ COMMAND = Command(
     a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r, in a machine or on Earth.
 
     Vectors have three components and one unit ("0,0,2 rad/s", "(0, 0, 2) rpm",
-    "[1,0,0] km/h"); results are in SI. With --mass also the Coriolis force F_c = -m a_c (the
-    apparent force, opposite to a_c). Any of --r, --alpha, --a0, --ar adds a_euler
-    (alpha x r), a_centripetal (Omega x (Omega x r)), a_transport and the absolute a; missing
-    ones are zero. a_c_mag, F_c_mag and a_mag are the magnitudes (--check compares those).
+    "[1,0,0] km/h"); a component may be an expression with units ("0.5*sin(35deg), 0, 0 m/s":
+    a bare component takes the trailing unit, one with its own unit is taken as it is) using
+    NAME=QUANTITY parameters (--r "l*cos(30deg), l*sin(30deg), 0" l=2m). Results are in SI.
+
+    Each result is given when its options are: a_c needs --vr; --r (or --v0) adds the
+    velocities v_transport = v0 + Omega x r and, with --vr, v = v_transport + v_r; any of
+    --r, --alpha, --a0, --ar adds a_euler, a_centripetal, a_transport and, with --vr, the
+    absolute a; --mass adds the Coriolis force F_c = -m a_c (the apparent force). Missing
+    vectors are zero; every vector has its magnitude (v_mag, a_mag, ...).
 
     Scalars (--omega 2rad/s --vr 3m/s) are magnitudes of perpendicular vectors: a_c = 2 Omega
     v_r and F_c = m a_c; --r is then the distance from the axis and --alpha turns about the
-    same axis; --a0, --ar and the absolute a need vectors.
+    same axis; --v0, --a0, --ar and the absolute a need vectors. A result given as
+    NAME=QUANTITY with one unknown as NAME=? is solved for it (a_c=12m/s^2 --omega 2rad/s
+    vr=?; on the Earth a_c_mag=, a_c_horizontal_mag=, heading north unless --heading).
 
     --latitude sets up the rotating Earth: x east, y north, z up, Omega = Omega_E (0, cos phi,
-    sin phi). --explain lists each term with its numbers, which vanish and why, and on Earth
+    sin phi), Omega_E the sidereal 7.2921159e-5 rad/s (the textbook's 2 pi/day is --omega
+    "1 turn/day"); a_c_horizontal and F_c_horizontal are the parts that push sideways on level
+    ground. --explain lists each term with its numbers, which vanish and why, and on Earth
     the directions of a_c and of the Coriolis force.
+
+    Motion given in time: --r, --omega (rotating-frame components) and --R0 (the origin's
+    position, fixed-frame components) may be expressions in t with NAME=QUANTITY parameters,
+    evaluated at --t; v_r, a_r, alpha, v0, a0 are their exact derivatives (the frames
+    coincide at t = 0). --basis fixed prints the vectors in the fixed frame's axes; a list of
+    times in --t (or --batch over a t column) gives a table; --plot draws the path.
+    --scene runs radial-slot-release or slotted-link with their NAME=QUANTITY parameters.
 
     \b
     Examples:
       dyncalc coriolis --omega "2 rad/s" --vr "3 m/s"
       dyncalc coriolis --omega "0,0,30 rpm" --vr "0.5,0,0 m/s" --r "0.2,0,0 m" --mass 2kg
+      dyncalc coriolis --omega "0,0,2 rad/s" --r "l*cos(30deg), l*sin(30deg), 0" l=2m \\
+          --vr "0.1*5*sin(35deg), 0, 0 m/s" --v0 "1,0,0 m/s"
       dyncalc coriolis --latitude 45deg --speed "100 km/h" --heading 0deg --mass 1kg --explain
       dyncalc coriolis --latitude 30deg --vr "20,0,0 m/s" --json
+      dyncalc coriolis a_c_mag=0.01m/s^2 --latitude 45deg vr=?
+      dyncalc coriolis --r "s0 - b*t^2/2, 0, 0 m" s0=4m b=0.5m/s^2 --omega "0,0,2 rad/s" \\
+          --t 2s --basis fixed
+      dyncalc coriolis --scene slotted-link d=0.4m c=0.3m theta=35deg omega=-10rad/s
     """,
-    tuple(Parameter(name, dim, _HELP[name][1], _HELP[name][0])
-          for name, (dim, _words) in OPTIONS.items()),
-    tuple(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
+    (Parameter("scene", None, "A relative-motion set-up with its own parameters as "
+               "NAME=QUANTITY words (radial-slot-release, slotted-link).", "NAME",
+               kind="setting", choices=_relative_scenes),
+     *(Parameter(name, dim, _HELP[name][1], _HELP[name][0])
+       for name, (dim, _words) in OPTIONS.items()),
+     Parameter("R0", LENGTH, "Position of the frame's origin in fixed-frame components, as "
+               "expressions in t: motion given in time.", _VECTOR, kind="text"),
+     Parameter("t", TIME, "Time at which a motion given in time is evaluated, e.g. 2s; a "
+               "list ('0, 0.5, 1 s') gives a table, one row per time.", "TIME", kind="text"),
+     Parameter("basis", None, "Components of the vector results of a motion given in time: "
+               "rotating (default, the frame's axes at t) or fixed.", "rotating|fixed",
+               kind="setting", choices=("rotating", "fixed")),
+     Parameter("plot", None, "Draw the path of the point in the fixed frame (a motion given "
+               "in time) with its velocity and acceleration at --t into FILE (.png, .svg or "
+               ".pdf); needs matplotlib.", "FILE.png", kind="after")),
+    (*(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
+     *(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _TIME_RESULTS.items()
+       if name not in _KINDS)),
     _run,
+    words="[NAME=QUANTITY]...",
     columns=columns,
 )

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import InputError
 from ..result import Result
-from ..scenes import Scene, get_scene, scene_names
+from ..scenes import Scene, get_scene
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA,
                      LENGTH, MASS, STIFFNESS, TIME, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
@@ -86,6 +86,9 @@ def natural_frequency(options: dict[str, str | None], words: tuple[str, ...] | l
     name = scene if scene is not None else infer_scene(set(texts))
     chosen = get_scene(name)
     refuse_rigid(chosen.name, "natural-frequency")
+    if chosen.compute.__module__ == _RELATIVE_MODULE:
+        raise InputError(f"--scene {chosen.name} is a relative-motion scene with no "
+                         f"frequency: run it with dyncalc coriolis --scene {chosen.name}")
     return compute_scene(chosen, texts, labels=labels, method=method, rtol=rtol, strict=strict)
 
 
@@ -98,11 +101,18 @@ def refuse_rigid(name: str, command: str) -> None:
                          f"oscillation); run 'dyncalc rigid-body --scene {name} ...'")
 
 
+#: The physics module of the relative-motion scenes (coriolis --scene), which have no frequency.
+_RELATIVE_MODULE = "dyncalc.physics.relative_scenes"
+
+
 def natural_scene_names() -> list[str]:
-    """The scenes ``natural-frequency --scene`` takes: every scene but the rigid-body ones."""
+    """The scenes ``natural-frequency --scene`` takes: every scene but the rigid-body ones and
+    the relative-motion ones (``coriolis --scene``)."""
+    from ..scenes import catalog
     from ..scenes.kinetics import is_kinetics_scene
 
-    return [name for name in scene_names() if not is_kinetics_scene(name)]
+    return [name for name, s in catalog().items()
+            if not is_kinetics_scene(name) and s.compute.__module__ != _RELATIVE_MODULE]
 
 
 # --- the command record ----------------------------------------------------------------------

@@ -14,7 +14,9 @@ force an observer in the frame sees) is ``F_c = -m a_c``.
 
 The functions take pint quantities (any units of the right dimension) or plain SI values and
 return SI magnitudes as numpy arrays (m/s^2, N, rad/s, m/s). Cross products are formed on
-vectors scaled by powers of two (exact), so that no intermediate product overflows or underflows
+vectors scaled by powers of two (exact), each component correctly rounded
+(:func:`~dyncalc.physics.numerics.cross_product`: near-parallel vectors keep their small cross
+product), so that no intermediate product overflows or underflows
 when the result itself is representable: ``Omega x (Omega x r)`` with ``Omega = 1e200 rad/s``
 and ``r = 1e-300 m`` is ``1e100 m/s^2``, not ``inf``. A result beyond float64 is refused
 (:class:`~dyncalc.errors.PhysicsError`); one that underflows to zero from non-zero factors
@@ -35,7 +37,7 @@ from ..lazy import numpy as np
 from ..constants import EARTH_RATE
 from ..errors import InputError, PhysicsError
 from .columns import Columns, column_kernel
-from .numerics import two_product
+from .numerics import cross_product, two_product
 
 __all__ = ["EARTH_RATE", "coriolis_acceleration", "euler_acceleration",
            "centripetal_acceleration", "coriolis_force", "relative_acceleration",
@@ -84,8 +86,13 @@ class _Scaled:
         return cls(np.ldexp(v, -shift), e + shift)
 
     def cross(self, other: "_Scaled") -> "_Scaled":
-        with np.errstate(under="ignore"):
-            return _Scaled.of(np.cross(self.m, other.m), self.e + other.e)
+        """The cross product, each component of the mantissas' product correctly rounded
+        (:func:`~dyncalc.physics.numerics.cross_product`: exact products, one rounding), so
+        near-parallel vectors keep their small cross product."""
+        if not (np.all(np.isfinite(self.m)) and np.all(np.isfinite(other.m))):
+            with np.errstate(all="ignore"):  # inf or nan: non-finite, refused by the caller
+                return _Scaled(np.cross(self.m, other.m), self.e + other.e)
+        return _Scaled.of(cross_product(self.m, other.m), self.e + other.e)
 
     def times(self, factor: float) -> "_Scaled":
         if factor == 0.0 or not self.nonzero:
@@ -348,11 +355,23 @@ class _ScaledRows:
         return cls((rows[:, 0], rows[:, 1], rows[:, 2]))
 
     def cross(self, other: "_ScaledRows") -> "_ScaledRows":
-        """``numpy.cross`` of the mantissas (its products and differences, in its order)."""
+        """The twin of :meth:`_Scaled.cross`: each component of the mantissas' cross product
+        from exact products (:func:`~dyncalc.physics.numerics_arrays.two_product_array`)
+        summed by the twin of ``math.fsum``, bit for bit; rows with a non-finite mantissa
+        give NaN (the one-off refuses them)."""
+        from .numerics_arrays import fsum_rows, two_product_array
+
         (a0, a1, a2), (b0, b1, b2) = self.c, other.c
+
+        def difference(p, q, r, t):
+            h1, l1 = two_product_array(p, q)
+            h2, l2 = two_product_array(r, t)
+            total, ok = fsum_rows(np.stack([h1, l1, -h2, -l2], axis=1))
+            return np.where(ok, total, np.nan)
+
         with np.errstate(over="ignore", under="ignore", invalid="ignore"):
-            return _ScaledRows((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0),
-                               self.e + other.e)
+            return _ScaledRows((difference(a1, b2, a2, b1), difference(a2, b0, a0, b2),
+                                difference(a0, b1, a1, b0)), self.e + other.e)
 
     def times(self, factor) -> "_ScaledRows":
         factor = np.broadcast_to(np.asarray(factor, dtype=float), self.e.shape)
@@ -399,8 +418,8 @@ def _zero_rows(scaled: _ScaledRows, value) -> np.ndarray:
 def _relative_acceleration_columns(Omega, v_r, r=None, alpha=None, a0=None, a_r=None,
                                    m=None) -> Columns:
     """:func:`relative_acceleration` on columns: every vector an ``(n, 3)`` SI array, ``m``
-    an ``(n,)`` array. The same power-of-two scaling (:class:`_ScaledRows`), ``numpy.cross``'s
-    products and sums in the same order, bit for bit; ``values`` are the FrameAcceleration's
+    an ``(n,)`` array. The same power-of-two scaling (:class:`_ScaledRows`), the same exact
+    cross products and sums in the same order, bit for bit; ``values`` are the FrameAcceleration's
     terms ``a_c``, ``a_euler``, ``a_centripetal``, ``a_transport``, ``a`` (and ``F_c`` with
     ``m``). Exact where no term overflows (the one-off refuses) or underflows to zero from
     non-zero factors (it warns). A term of vectors not given is zero (not computed: the

@@ -1,7 +1,9 @@
 """Expression trees of :mod:`dyncalc.units.expression` -> sympy objects, and back to text.
 
-The only modules that import sympy are this one and :mod:`dyncalc.physics.lagrange_equations`, and only
-``eom`` imports them (tests/test_architecture.py checks that no other command loads sympy).
+The only modules that import sympy are this one, :mod:`dyncalc.physics.lagrange_equations` and
+:mod:`dyncalc.physics.relative_time`, and only ``eom`` and ``coriolis`` with a motion given in
+time (``--t``) import them (tests/test_eom.py and tests/test_coriolis_time.py check that no other
+command or path loads sympy).
 Nothing here reads text: the tree was parsed by the closed grammar, never by ``sympify``.
 
 A number typed without a unit becomes an exact sympy number (``2`` an Integer, ``0.5`` the

@@ -63,6 +63,8 @@ def run_checks(result: Result, specs: list[str], rtol: float | None) -> list[Che
     for spec in specs:
         name, text = split_assignment(spec, "--check")
         entry = result.results.get(name)
+        if entry is None and name in getattr(result, "unavailable", {}):
+            raise InputError(f"--check {name}: {result.unavailable[name]}")
         if entry is None:
             raise InputError(f"--check {name}: there is no result named {name!r}; the results "
                              f"are {', '.join(result.results)}")

@@ -159,6 +159,8 @@ def bare_value(result: Result, name: str, units: dict[str, str]) -> str:
                              "an input: 2.0+/-0.1 kg)")
         return full_number(sigma)
     entry = result.results.get(name)
+    if entry is None and name in result.unavailable:
+        raise InputError(f"--value {name}: {result.unavailable[name]}")
     if entry is None:
         raise InputError(f"--value {name}: there is no result named {name!r}; the results are "
                          f"{', '.join(result.results)}")

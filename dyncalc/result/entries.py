@@ -168,7 +168,7 @@ class Result:
     """
 
     __slots__ = ("command", "results", "inputs", "scene", "model", "method", "warnings",
-                 "_explanation", "extra", "slips", "sensitivity")
+                 "_explanation", "extra", "slips", "sensitivity", "unavailable")
 
     def __init__(self, command: str, results: dict[str, Entry],
                  inputs: dict[str, Entry] | None = None, scene: str | None = None,
@@ -185,6 +185,9 @@ class Result:
         self.extra = {} if extra is None else extra
         self.slips = {} if slips is None else slips
         self.sensitivity: Callable[[], Any] | None = None
+        #: result name -> why this run does not give it (what is missing), for the messages
+        #: of --value, --check and --unit; not part of the output
+        self.unavailable: dict[str, str] = {}
 
     @property
     def explanation(self) -> Explanation | None:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import re
 
-from ..units import (ANGLE, ANGULAR_RATE, CYCLE_RATE, DECAY_RATE, DIMENSIONLESS, FORCE,
+from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DECAY_RATE, DIMENSIONLESS, FORCE,
                      INERTIA, LENGTH, LINEAR_DRAG, MASS, STIFFNESS, TIME, VELOCITY, Dim)
 from ..records import Frozen
 
@@ -45,6 +45,15 @@ _FIXED = {
     "Omega": ResultKind(ANGULAR_RATE, "rad/s", "Ω", "forcing angular frequency"),
     "beta_crit": ResultKind(LINEAR_DRAG, "N*s/m^2", "β_crit", "critical drag coefficient"),
     "error_estimate": ResultKind(DIMENSIONLESS, "", "ε", "relative error estimate"),
+    # the coriolis command's scalar set-ups (its inverse problems)
+    "a_c": ResultKind(ACCELERATION, "m/s^2", "a_c", "Coriolis acceleration 2 Omega v_r"),
+    "F_c": ResultKind(FORCE, "N", "F_c", "Coriolis force m a_c"),
+    "a_c_mag": ResultKind(ACCELERATION, "m/s^2", "|a_c|", "magnitude of a_c"),
+    "F_c_mag": ResultKind(FORCE, "N", "|F_c|", "magnitude of F_c"),
+    "a_c_horizontal_mag": ResultKind(ACCELERATION, "m/s^2", "|a_c,h|",
+                                     "horizontal part of a_c"),
+    "F_c_horizontal_mag": ResultKind(FORCE, "N", "|F_c,h|",
+                                     "horizontal part of F_c (the sideways push)"),
     # forced response (forced-response)
     "eta": ResultKind(DIMENSIONLESS, "", "η", "frequency ratio Omega/omega"),
     "X": ResultKind(LENGTH, "m", "X", "steady amplitude"),
@@ -71,6 +80,17 @@ _FIXED = {
     "F": ResultKind(FORCE, "N", "F", "force at time t"),
     "H_max": ResultKind(FORCE, "N", "H_max", "largest contact friction force"),
     "mu0": ResultKind(DIMENSIONLESS, "", "μ0", "least static friction coefficient"),
+    # relative motion (coriolis --scene)
+    "v_r": ResultKind(VELOCITY, "m/s", "v_r", "velocity relative to the moving frame"),
+    "t_R": ResultKind(TIME, "s", "t_R", "time to reach the radius r"),
+    "v_abs": ResultKind(VELOCITY, "m/s", "v_abs", "absolute speed"),
+    "F_slot": ResultKind(FORCE, "N", "F_slot", "side force of the slot wall"),
+    "x_t": ResultKind(LENGTH, "m", "x(t)", "distance from the centre at time t"),
+    "v_t": ResultKind(VELOCITY, "m/s", "v(t)", "speed along the slot at time t"),
+    "F_t": ResultKind(FORCE, "N", "F(t)", "side force of the slot wall at time t"),
+    "rho": ResultKind(LENGTH, "m", "ρ", "distance AC of the pin from the pivot"),
+    "omega_AD": ResultKind(ANGULAR_RATE, "rad/s", "ω_AD", "angular velocity of the link"),
+    "v_C": ResultKind(VELOCITY, "m/s", "v_C", "speed of the pin"),
 }
 
 _STEMS = {

@@ -27,7 +27,7 @@ __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "
 CATALOG_MODULES: tuple[str, ...] = (
     "dyncalc.scenes.basic", "dyncalc.scenes.rigid", "dyncalc.scenes.rotating",
     "dyncalc.scenes.damped", "dyncalc.scenes.forced", "dyncalc.scenes.lagrange",
-    "dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads",
+    "dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads", "dyncalc.scenes.relative",
 )
 
 
