@@ -11,7 +11,6 @@ from dyncalc.cli import cli
 from dyncalc.commands.natural_frequency import STANDARD
 from dyncalc.errors import InputError
 from dyncalc.scenes import catalog, computed_scenes, get_scene
-from dyncalc.result.kinds import result_kind
 from dyncalc.scenes.runner import run_scene, scene_kind
 from dyncalc.units import convert, parse_quantity
 
