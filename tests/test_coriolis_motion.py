@@ -436,3 +436,15 @@ def test_near_parallel_vectors_keep_their_cross_product():
     out = run("--omega", vec(Omega), "--vr", vec(v_r), "--r", "1,2,3")
     assert out["a_c"].tolist() == [0.0, 0.0, float(z)]
     assert np.cross(Omega, v_r)[2] == 0.0  # what the plain formula would have said
+
+
+@pytest.mark.parametrize("latitude, bearing", [("43deg", "bearing 180 deg"),
+                                               ("0.75rad", "bearing 3.142 rad")])
+def test_the_bearing_of_the_force_is_in_the_unit_the_latitude_was_typed_in(latitude, bearing):
+    """The compass bearing (an atan2 of the east and north parts) follows the latitude's unit:
+    radians typed, radians shown (the pi of a southward push, 4 digits); else degrees."""
+    out = CliRunner().invoke(cli, ["coriolis", "--latitude", latitude, "--vr", "50, 0, 0 m/s",
+                                   "--explain"])
+    assert out.exit_code == 0, out.stderr
+    line = next(l for l in out.stdout.splitlines() if "Coriolis force F_c = -m a_c points" in l)
+    assert f"points south ({bearing}," in line

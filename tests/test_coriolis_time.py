@@ -376,3 +376,24 @@ def test_an_angle_without_a_usable_closed_form_is_found_by_quadrature():
     assert data["extra"]["rotation"] == "quadrature"
     assert got["theta"] == pytest.approx(float(mpmath.quad(lambda x: mpmath.sqrt(1 + x ** 4),
                                                            [0, 2])), rel=1e-12)
+
+
+def test_an_integral_sympy_takes_too_long_over_falls_back_to_quadrature(monkeypatch):
+    """sympy's integrate gets INTEGRAL_BUDGET seconds; past it the angle comes from quadrature
+    (never a hang). Here integrate is made to stall, and the budget is short."""
+    import time
+
+    import sympy
+
+    from dyncalc.physics import relative_time
+
+    def stall(*args, **kwargs):
+        time.sleep(30)
+
+    monkeypatch.setattr(relative_time, "INTEGRAL_BUDGET", 0.2)
+    monkeypatch.setattr(sympy, "integrate", stall)
+    started = time.monotonic()
+    got, data = run("--r", "1,0,0 m", "--omega", "0,0,k*t rad/s", "k=1rad/s^2", "--t", "2s")
+    assert time.monotonic() - started < 20  # the 30 s stall was cut short
+    assert data["extra"]["rotation"] == "quadrature"
+    assert got["theta"] == pytest.approx(2.0, rel=1e-12)  # int_0^2 t dt

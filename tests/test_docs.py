@@ -330,3 +330,26 @@ def test_the_code_cites_the_projects_own_docs():
     assert cited >= {"scenes.md", "commands.md", "json.md", "guide/quantities.md"}
     for page in cited:
         assert (ROOT / "docs" / page).is_file(), page
+
+
+def test_scene_counts_in_the_prose_are_the_catalogs():
+    """README, the docs' index and the scenes guide name how many scenes there are (and the
+    guide lists them by command): those numbers and lists follow the catalog."""
+    from dyncalc.cli.scenes import scene_commands
+    from dyncalc.scenes import catalog
+
+    root = Path(__file__).resolve().parents[1]
+    taken = scene_commands()
+    natural = [n for n in taken["natural-frequency"] if not catalog()[n].no_frequency]
+    readme = (root / "README.md").read_text()
+    assert f"lists the {len(catalog())} scenes" in readme
+    index = (root / "docs" / "index.md").read_text()
+    assert f"omega, f, T of {len(natural)} scenes" in index
+    guide = " ".join((root / "docs" / "guide" / "scenes.md").read_text().split())
+    assert f"lists all {len(catalog())} scenes of the catalog: the " \
+        f"{len(taken['natural-frequency'])} that `natural-frequency` takes" in guide
+    assert f"the {len(taken['rigid-body'])} of `rigid-body` (" \
+        f"{', '.join(taken['rigid-body'])})" in guide
+    assert f"the {len(taken['coriolis'])} of `coriolis` ({', '.join(taken['coriolis'])})" in guide
+    listed = guide.split("takes (", 1)[1].split(";", 1)[0].split(", ")
+    assert listed == taken["natural-frequency"]

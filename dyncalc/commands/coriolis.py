@@ -359,14 +359,18 @@ def _direction(v) -> str:
     return " and ".join(parts) if parts else "none"
 
 
-def _direction_line(label: str, v, unit: str) -> str:
+def _direction_line(label: str, v, unit: str, in_radians: bool = False) -> str:
+    """Where ``v`` (east, north, up) points: its compass name, its bearing (an atan2 angle, in
+    radians when the latitude was typed in radians, else in degrees) and its parts."""
     east, north, up = (float(x) for x in v)
     if east == 0.0 and north == 0.0 and up == 0.0:
         return f"{label} is zero"
     parts = []
     if east != 0.0 or north != 0.0:
         name, bearing = _compass(east, north)
-        parts.append(f"{name} (bearing {format_number(bearing, 4)} deg, horizontal part "
+        shown = (f"{format_number(math.radians(bearing), 4)} rad" if in_radians else
+                 f"{format_number(bearing, 4)} deg")
+        parts.append(f"{name} (bearing {shown}, horizontal part "
                      f"{_fmt(math.hypot(east, north), unit)})")
     if up != 0.0:
         parts.append(f"{'up' if up > 0 else 'down'} ({_fmt(abs(up), unit)})")
@@ -722,11 +726,14 @@ def _compute(inputs: CoriolisInputs, Omega, v_r, *, model: str, earth: dict | No
                        "to a_c")
     if earth is not None:
         force = -fa.a_c + 0.0
-        substituted.append(_direction_line("a_c", fa.a_c, "m/s^2"))
+        latitude = inputs.parsed.get("latitude")
+        radians = latitude is not None and (latitude.assumed_si or latitude.unit_text.strip()
+                                            in ("rad", "radian", "radians"))
+        substituted.append(_direction_line("a_c", fa.a_c, "m/s^2", radians))
         if fa.F_c is None:
-            line = _direction_line("the Coriolis force F_c = -m a_c", force, "N/kg")
+            line = _direction_line("the Coriolis force F_c = -m a_c", force, "N/kg", radians)
         else:
-            line = _direction_line("the Coriolis force F_c = -m a_c", fa.F_c, "N")
+            line = _direction_line("the Coriolis force F_c = -m a_c", fa.F_c, "N", radians)
         substituted.append(line + _side(fa.v_r, force))
         extra = {"frame": "east-north-up",
                  "directions": {"a_c": _direction(fa.a_c), "F_c": _direction(force)}}

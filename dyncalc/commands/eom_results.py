@@ -5,7 +5,6 @@ sympy comes in here (through :mod:`dyncalc.physics.lagrange_equations`), and onl
 """
 from __future__ import annotations
 
-import contextlib
 import math
 
 from ..errors import InputError, PhysicsError
@@ -77,54 +76,19 @@ def _state(inputs, cdims):
 BUDGET = 5.0
 
 
-class _OverBudget(Exception):
-    pass
-
-
-@contextlib.contextmanager
-def _budget(seconds: float):
-    """Stop the enclosed sympy work after ``seconds`` (SIGALRM; only where Python can use it:
-    the main thread on a POSIX system, else unbounded).
-
-    The caller's own ITIMER_REAL and SIGALRM handler are saved and given back: the timer
-    re-armed with the time it had left (and its interval). A caller's timer due during the
-    derivation is not lost: it fires as soon as the derivation ends (late by at most its
-    length); one due earlier than the budget shortens nothing."""
-    import signal
-    import threading
-    import time
-
-    usable = hasattr(signal, "setitimer") and threading.current_thread() is \
-        threading.main_thread()
-    if not usable:
-        yield
-        return
-
-    def expire(signum, frame):
-        raise _OverBudget()
-    previous = signal.signal(signal.SIGALRM, expire)
-    started = time.monotonic()
-    their_delay, their_interval = signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    except _OverBudget:
-        raise PhysicsError(f"the derivation did not finish within {seconds:g} s; simplify "
-                           "the energies (expand fewer powers, fewer nested functions)"
-                           ) from None
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
-        if their_delay > 0.0:
-            left = their_delay - (time.monotonic() - started)
-            signal.setitimer(signal.ITIMER_REAL, max(left, 1e-6), their_interval)
-
-
 def build(inputs) -> Result:
     cdims, per_mass = _coordinate_dims(inputs)  # a refusal here costs no sympy import
     state = _state(inputs, cdims) if inputs.state else {}
     _check_powers(inputs)
-    with _budget(BUDGET):
-        return _build(inputs, cdims, per_mass, state)
+    from ..physics.budget import OverBudget, time_budget
+
+    try:
+        with time_budget(BUDGET):
+            return _build(inputs, cdims, per_mass, state)
+    except OverBudget:
+        raise PhysicsError(f"the derivation did not finish within {BUDGET:g} s; simplify "
+                           "the energies (expand fewer powers, fewer nested functions)"
+                           ) from None
 
 
 #: Largest power of an expression in the coordinates eom derives (expansion grows as its cube).

@@ -30,7 +30,12 @@ import sympy
 from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from ..units.timevector import TimeVector
+from .budget import OverBudget, time_budget
 from .symbolic import Symbols, to_sympy, text_of
+
+#: Seconds sympy may spend on the closed-form integral of the frame's rate before the
+#: rotation angle falls back to adaptive quadrature (exact to rtol 1e-13 either way).
+INTEGRAL_BUDGET = 2.0
 
 __all__ = ["TimeMotion", "FrameState", "motion_in_time"]
 
@@ -250,9 +255,14 @@ def motion_in_time(r: TimeVector | None, omega: TimeVector | None, R0: TimeVecto
         return motion
     motion.axis = n
     tau = sympy.Symbol("tau", real=True)
-    integral = sympy.integrate(w.subs(t, tau), (tau, 0, t))
+    try:  # sympy may take long over an integral it cannot do: quadrature instead
+        with time_budget(INTEGRAL_BUDGET):
+            integral = sympy.integrate(w.subs(t, tau), (tau, 0, t))
+    except OverBudget:
+        integral = None
     theta = None
-    if not (integral.has(sympy.Integral) or integral.has(sympy.Piecewise)):
+    if integral is not None and not (integral.has(sympy.Integral)
+                                     or integral.has(sympy.Piecewise)):
         try:  # a closed form the math module cannot evaluate (hyper, ...) is not one here
             theta = sympy.lambdify([t], integral, modules=["math"])
             float(theta(0.5))
