@@ -4,20 +4,14 @@ from resonance: ``1 - eta^2`` exactly rounded as in forced_response.py; with ``z
 every row (JSON lines: in ``warnings``; CSV: a ``warning:`` line a row on stderr)."""
 import math
 import sys
-from fractions import Fraction
 
 import numpy as np
 import polars as pl
 
-from dyncalc.physics.numerics_arrays import (dd_div, fsum_rows, round_certified,
-                                             two_product_array)
+from _forced import one_minus_eta_squared
 from _limit import (arguments, csv_line, json_input, json_result, number, read, text, write)
 
 WARNING = "undamped: X_res, the peak and the bandwidth are unbounded; not given"
-
-
-def exact_sum(*terms):
-    return fsum_rows(np.column_stack(terms))[0]
 
 
 path, as_json = arguments()
@@ -26,14 +20,7 @@ columns = [("k [N/m]", "k", "N/m"), ("m [kg]", "m", "kg"), ("F0 [N]", "F0", "N")
            ("Omega [rad/s]", "Omega", "rad/s")]
 k, m, F0, W = (number(df, c) for c, _, _ in columns)
 
-p, e = two_product_array(W, W)
-q1, f1 = two_product_array(m, p)
-q2, f2 = two_product_array(m, e)
-hi = exact_sum(k, -q1, -f1, -q2, -f2)
-lo = exact_sum(k, -q1, -f1, -q2, -f2, -hi)
-gap, certain = round_certified(*dd_div(hi, lo, k, np.zeros_like(k)), 2.0 ** -100)
-for i in np.flatnonzero(~certain).tolist():
-    gap[i] = float((Fraction(k[i]) - Fraction(m[i]) * Fraction(W[i]) ** 2) / Fraction(k[i]))
+gap = one_minus_eta_squared(k, m, W)
 
 omega = np.sqrt(k / m)
 TR = 1.0 / np.abs(gap)          # hypot(1, 0) / hypot(gap, 0), exactly
