@@ -36,6 +36,7 @@ from typing import Any, Callable
 from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from ..result.entries import Entry, Explanation, Result, entry_from_parsed, format_number
+from .coriolis_time import TIME_KINDS
 from .record import Command, Parameter, ResultName
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, FORCE, LENGTH,
                     MASS, TIME, VELOCITY, Dim, Parsed, format_quantity, parse_quantity,
@@ -1178,19 +1179,6 @@ def _norm_slope(x, dx, side: int) -> float:
 
 # --- the command record ----------------------------------------------------------------------
 
-#: The results of the time path and the scenes (their names are listed for --value completion).
-_TIME_RESULTS = {
-    "r": (LENGTH, "m", "r", "position in the frame (motion given in time)"),
-    "v_r": (VELOCITY, "m/s", "v_r", "velocity relative to the frame (r'; a scene's slide)"),
-    "a_r": (ACCELERATION, "m/s^2", "a_r", "acceleration relative to the frame (r'')"),
-    "alpha": (ANGULAR_ACCELERATION, "rad/s^2", "α", "angular acceleration of the frame "
-                                                      "(Omega')"),
-    "v0": (VELOCITY, "m/s", "v0", "velocity of the frame's origin (R0')"),
-    "a0": (ACCELERATION, "m/s^2", "a0", "acceleration of the frame's origin (R0'')"),
-    "R": (LENGTH, "m", "R", "position of the point from the fixed origin"),
-    "theta": (ANGLE, "rad", "θ", "angle the frame has turned since t = 0"),
-}
-
 _VECTOR = "VEC"
 #: option -> (metavar, help) of ``dyncalc coriolis --help``, in its order
 _HELP = {
@@ -1319,7 +1307,7 @@ COMMAND = Command(
                "in time) with its velocity and acceleration at --t into FILE (.png, .svg or "
                ".pdf); needs matplotlib.", "FILE.png", kind="after")),
     (*(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _KINDS.items()),
-     *(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in _TIME_RESULTS.items()
+     *(ResultName(name, kind[2], kind[0].si, kind[-1]) for name, kind in TIME_KINDS.items()
        if name not in _KINDS)),
     _run,
     words="[NAME=QUANTITY]...",
