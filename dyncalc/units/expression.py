@@ -40,7 +40,8 @@ from fractions import Fraction
 from ..errors import InputError
 
 __all__ = ["Node", "parse_expression", "FUNCTIONS", "MAX_LENGTH", "MAX_DEPTH", "MAX_EXPONENT",
-           "Dimension", "dimension_of", "DimensionError", "names_in", "ExpressionError"]
+           "Dimension", "dimension_of", "DimensionError", "names_in", "ExpressionError",
+           "float_value"]
 
 MAX_LENGTH = 500     #: characters in one expression
 MAX_DEPTH = 32       #: nesting of parentheses, signs, powers and function calls
@@ -50,6 +51,35 @@ MAX_NAME = 32        #: characters in one name
 #: The functions of the grammar and their number of arguments.
 FUNCTIONS = {"sin": 1, "cos": 1, "tan": 1, "exp": 1, "log": 1, "sqrt": 1, "sinh": 1,
              "cosh": 1, "atan2": 2, "abs": 1}
+
+
+def float_value(op: str, args: list[float]) -> float:
+    """The float meaning of the grammar: operator ``op`` (a node's kind: ``neg``, ``add``,
+    ``sub``, ``mul``, ``div``, ``pow``) or function ``op`` (a call's name, of
+    :data:`FUNCTIONS`) at ``args``. ``^`` is ``math.pow``, functions are the math module's.
+    Python's own ZeroDivisionError, ValueError and OverflowError reach the caller, who words
+    them (the parser folding constants, :func:`dyncalc.units.vector_expression.evaluate`).
+
+    >>> float_value("pow", [2.0, 10.0]), float_value("atan2", [1.0, 1.0]) == math.pi / 4
+    (1024.0, True)
+    """
+    if op == "neg":
+        return -args[0]
+    if op == "add":
+        return args[0] + args[1]
+    if op == "sub":
+        return args[0] - args[1]
+    if op == "mul":
+        return args[0] * args[1]
+    if op == "div":
+        return args[0] / args[1]
+    if op == "pow":
+        return math.pow(args[0], args[1])
+    if op == "atan2":
+        return math.atan2(args[0], args[1])
+    if op == "abs":
+        return abs(args[0])
+    return getattr(math, op)(args[0])
 
 _NUMBER_RE = re.compile(r"(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _NAME_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_")
@@ -520,12 +550,7 @@ class Parser:
 
     def _fold(self, fn: str, xs: list[float], pos: int) -> float:
         try:
-            if fn == "atan2":
-                value = math.atan2(xs[0], xs[1])
-            elif fn == "abs":
-                value = abs(xs[0])
-            else:
-                value = getattr(math, fn)(xs[0])
+            value = float_value(fn, xs)
         except (ValueError, OverflowError):
             raise self._fail(pos, f"{fn}() is not defined (or overflows) at "
                                   f"{xs[0]:g}") from None
@@ -541,16 +566,7 @@ class Parser:
         if a.const is not None and b.const is not None:
             x, y = a.const, b.const
             try:
-                if kind == "add":
-                    value = x + y
-                elif kind == "sub":
-                    value = x - y
-                elif kind == "mul":
-                    value = x * y
-                elif kind == "div":
-                    value = x / y
-                else:
-                    value = math.pow(x, y)
+                value = float_value(kind, [x, y])
             except (ZeroDivisionError, OverflowError, ValueError):
                 raise self._fail(pos, "a constant here overflows float64, divides by zero "
                                       "or takes a fractional power of a negative number"

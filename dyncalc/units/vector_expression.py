@@ -20,8 +20,8 @@ import math
 import re
 
 from ..errors import InputError
-from .expression import (Dimension, DimensionError, Node, dimension_of, names_in,
-                         parse_expression)
+from .expression import (Dimension, DimensionError, Node, dimension_of, float_value,
+                         names_in, parse_expression)
 
 __all__ = ["needs_expressions", "split_components", "parse_vector_expression",
            "evaluate", "read_parameters"]
@@ -112,24 +112,7 @@ def evaluate(node: Node, values: dict[str, float], label: str = "expression") ->
         return values[node.name]
     args = [evaluate(a, values, label) for a in node.args]
     try:
-        if kind == "neg":
-            out = -args[0]
-        elif kind == "add":
-            out = args[0] + args[1]
-        elif kind == "sub":
-            out = args[0] - args[1]
-        elif kind == "mul":
-            out = args[0] * args[1]
-        elif kind == "div":
-            out = args[0] / args[1]
-        elif kind == "pow":
-            out = math.pow(args[0], args[1])
-        elif node.name == "atan2":
-            out = math.atan2(args[0], args[1])
-        elif node.name == "abs":
-            out = abs(args[0])
-        else:
-            out = getattr(math, node.name)(args[0])
+        out = float_value(node.name if kind == "call" else kind, args)
     except ZeroDivisionError:
         raise InputError(f"{label}: division by zero at column {node.pos + 1}") from None
     except (ValueError, OverflowError):
