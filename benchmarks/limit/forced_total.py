@@ -4,12 +4,7 @@ Omega [rad/s], x0 [m], v0 [m/s], t [s]), damped below the peak's and the bandwid
 underdamped transient from ``x0 - X cos phi``, ``v0 - X Omega sin phi`` (Python's ``cos``,
 ``sin`` and ``exp`` row by row, as dyncalc calls them).
 
-``1 - eta^2 = (k - m Omega^2)/k``, ``1 - 2 zeta^2`` and ``1 - 8 zeta^2 + 8 zeta^4`` are taken
-exactly as dyncalc takes them (Dekker products summed by fsum's twin; the quotient a
-double-double, certified, with Fraction on the rare row it cannot certify), using the twins
-of dyncalc.physics.numerics_arrays (a numpy-only module); ``hypot`` and ``atan2`` are Python's,
-row by row (numpy's round differently); the rest is plain float arithmetic in dyncalc's
-order."""
+The steady state's terms are rounded as _forced.py's docstring says."""
 
 import math
 

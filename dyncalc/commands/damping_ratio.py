@@ -744,9 +744,9 @@ def _read_scene(name, params, k, m, g, method, rtol, strict) -> SceneTexts:
     scene = get_scene(name)
     damped = damping_scene_names()
     if scene.name not in damped:
-        from .natural_frequency import refuse_rigid
+        from ..scenes import refuse_kinetics
 
-        refuse_rigid(scene.name, "damping-ratio")
+        refuse_kinetics(scene.name, "damping-ratio")
         raise InputError(f"damping-ratio --scene takes a scene with a damper: "
                          f"{', '.join(damped)}; {scene.name} has none (natural-frequency "
                          "computes it)")

@@ -140,9 +140,9 @@ def _read_scene(options, words, name: str, normalize: str, strict: bool) -> Mode
 
     scene = get_scene(name)
     if scene.matrices is None:
-        from .natural_frequency import refuse_rigid
+        from ..scenes import refuse_kinetics
 
-        refuse_rigid(scene.name, "modes")
+        refuse_kinetics(scene.name, "modes")
         raise InputError(f"modes takes a scene with several degrees of freedom; {scene.name} "
                          f"has one: use dyncalc natural-frequency --scene {scene.name}")
     for option in ("M", "K", "C"):

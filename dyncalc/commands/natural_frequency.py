@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import InputError
 from ..result import Result
-from ..scenes import Scene, get_scene
+from ..scenes import Scene, get_scene, refuse_kinetics
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA,
                      LENGTH, MASS, STIFFNESS, TIME, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
@@ -85,20 +85,11 @@ def natural_frequency(options: dict[str, str | None], words: tuple[str, ...] | l
     texts, labels = collect_parameters(options, words)
     name = scene if scene is not None else infer_scene(set(texts))
     chosen = get_scene(name)
-    refuse_rigid(chosen.name, "natural-frequency")
+    refuse_kinetics(chosen.name, "natural-frequency")
     if chosen.compute.__module__ == _RELATIVE_MODULE:
         raise InputError(f"--scene {chosen.name} is a relative-motion scene with no "
                          f"frequency: run it with dyncalc coriolis --scene {chosen.name}")
     return compute_scene(chosen, texts, labels=labels, method=method, rtol=rtol, strict=strict)
-
-
-def refuse_rigid(name: str, command: str) -> None:
-    """Refuse a rigid-body scene (:mod:`dyncalc.scenes.kinetics`) to another command."""
-    from ..scenes.kinetics import is_kinetics_scene
-
-    if is_kinetics_scene(name):
-        raise InputError(f"{command} does not take {name}: it is a rigid-body scene (no "
-                         f"oscillation); run 'dyncalc rigid-body --scene {name} ...'")
 
 
 #: The physics module of the relative-motion scenes (coriolis --scene), which have no frequency.
@@ -108,8 +99,7 @@ _RELATIVE_MODULE = "dyncalc.physics.relative_scenes"
 def natural_scene_names() -> list[str]:
     """The scenes ``natural-frequency --scene`` takes: every scene but the rigid-body ones and
     the relative-motion ones (``coriolis --scene``)."""
-    from ..scenes import catalog
-    from ..scenes.kinetics import is_kinetics_scene
+    from ..scenes import catalog, is_kinetics_scene
 
     return [name for name, s in catalog().items()
             if not is_kinetics_scene(name) and s.compute.__module__ != _RELATIVE_MODULE]

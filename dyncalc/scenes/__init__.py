@@ -21,7 +21,8 @@ from ..errors import InputError
 from ..records import Frozen
 
 __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names",
-           "computed_scenes", "is_example_id", "scenes_of_example"]
+           "computed_scenes", "is_example_id", "scenes_of_example", "KINETICS_MODULES",
+           "is_kinetics_scene", "refuse_kinetics"]
 
 #: Modules whose import registers scenes.
 CATALOG_MODULES: tuple[str, ...] = (
@@ -29,6 +30,9 @@ CATALOG_MODULES: tuple[str, ...] = (
     "dyncalc.scenes.damped", "dyncalc.scenes.forced", "dyncalc.scenes.lagrange",
     "dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads", "dyncalc.scenes.relative",
 )
+
+#: The catalog modules whose scenes the rigid-body command runs (and no other command).
+KINETICS_MODULES = ("dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads")
 
 
 # Param, Constraint and Scene behave as frozen dataclasses (the same constructor, repr,
@@ -191,6 +195,23 @@ def catalog() -> dict[str, Scene]:
         _SCENES.update(ordered)
         _ordered = True
     return _SCENES
+
+
+def is_kinetics_scene(name: str) -> bool:
+    """Whether scene ``name`` is a rigid-body scene: registered by one of
+    :data:`KINETICS_MODULES`. A name already registered (as :func:`get_scene` leaves it) costs
+    no further import; another loads the catalog first."""
+    if name not in _ORIGIN:
+        _load()
+    return _ORIGIN.get(name) in KINETICS_MODULES
+
+
+def refuse_kinetics(name: str, command: str) -> None:
+    """Refuse rigid-body scene ``name`` to ``command`` (natural-frequency, forced-response,
+    modes, damping-ratio), pointing to rigid-body."""
+    if is_kinetics_scene(name):
+        raise InputError(f"{command} does not take {name}: it is a rigid-body scene (no "
+                         f"oscillation); run 'dyncalc rigid-body --scene {name} ...'")
 
 
 def scene_names() -> list[str]:

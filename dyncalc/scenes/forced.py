@@ -200,14 +200,9 @@ def forced_scene(name: str) -> Scene:
         return DRIVEN[scene.name]
     if scene.compute.__module__ == "dyncalc.physics.forced_scenes":
         return scene
-    from .kinetics import is_kinetics_scene
+    from . import refuse_kinetics
 
-    if is_kinetics_scene(scene.name):
-        from ..errors import InputError
-
-        raise InputError(f"forced-response does not take {scene.name}: it is a rigid-body "
-                         f"scene (no oscillation); run 'dyncalc rigid-body --scene "
-                         f"{scene.name} ...'")
+    refuse_kinetics(scene.name, "forced-response")
     if scene.name in COORDINATES:
         return driven_variant(scene.name)
     from ..errors import InputError

@@ -35,14 +35,12 @@ from ..result.explain import Formula
 from ..result.kinds import ResultKind
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, DIMENSIONLESS,
                      ENERGY, FORCE, IMPULSE, INERTIA, LENGTH, MASS, TORQUE, VELOCITY)
-from . import Constraint, Param, Scene, register
+from . import KINETICS_MODULES, Constraint, Param, Scene, is_kinetics_scene, register
 from .basic import gravity
 from .rigid import body, kappa
 
 __all__ = ["KINETICS_MODULES", "NO_ZETA", "kind", "is_kinetics_scene", "kinetics_scene_names"]
 
-#: The catalog modules whose scenes the rigid-body command runs (and no other command).
-KINETICS_MODULES = ("dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads")
 
 #: Why a rigid-body scene takes no ``zeta``.
 NO_ZETA = "it is a rigid-body scene (no oscillation to damp)"
@@ -51,14 +49,6 @@ NO_ZETA = "it is a rigid-body scene (no oscillation to damp)"
 def kind(dim, symbol: str, description: str) -> ResultKind:
     """A result kind shown in the SI unit of ``dim`` (the canonical unit)."""
     return ResultKind(dim, dim.si, symbol, description)
-
-
-def is_kinetics_scene(name: str) -> bool:
-    """Whether scene ``name`` (a registered name) is a rigid-body scene."""
-    from . import _ORIGIN, catalog
-
-    catalog()
-    return _ORIGIN.get(name) in KINETICS_MODULES
 
 
 def kinetics_scene_names() -> list[str]:
