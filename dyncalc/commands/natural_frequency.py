@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import InputError
 from ..result import Result
-from ..scenes import Scene, get_scene, refuse_kinetics
+from ..scenes import RELATIVE_MODULE, Scene, get_scene, refuse_kinetics, registered_by
 from ..units import (ACCELERATION, ANGLE, ANGULAR_RATE, CYCLE_RATE, DIMENSIONLESS, INERTIA,
                      LENGTH, MASS, STIFFNESS, TIME, TORSIONAL_STIFFNESS)
 from .record import Command, Parameter, ResultName
@@ -86,23 +86,19 @@ def natural_frequency(options: dict[str, str | None], words: tuple[str, ...] | l
     name = scene if scene is not None else infer_scene(set(texts))
     chosen = get_scene(name)
     refuse_kinetics(chosen.name, "natural-frequency")
-    if chosen.compute.__module__ == _RELATIVE_MODULE:
+    if registered_by(chosen.name) == RELATIVE_MODULE:
         raise InputError(f"--scene {chosen.name} is a relative-motion scene with no "
                          f"frequency: run it with dyncalc coriolis --scene {chosen.name}")
     return compute_scene(chosen, texts, labels=labels, method=method, rtol=rtol, strict=strict)
 
 
-#: The physics module of the relative-motion scenes (coriolis --scene), which have no frequency.
-_RELATIVE_MODULE = "dyncalc.physics.relative_scenes"
-
-
 def natural_scene_names() -> list[str]:
     """The scenes ``natural-frequency --scene`` takes: every scene but the rigid-body ones and
     the relative-motion ones (``coriolis --scene``)."""
-    from ..scenes import catalog, is_kinetics_scene
+    from ..scenes import KINETICS_MODULES, catalog
 
-    return [name for name, s in catalog().items()
-            if not is_kinetics_scene(name) and s.compute.__module__ != _RELATIVE_MODULE]
+    return [name for name in catalog()
+            if registered_by(name) not in (*KINETICS_MODULES, RELATIVE_MODULE)]
 
 
 # --- the command record ----------------------------------------------------------------------

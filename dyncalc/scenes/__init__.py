@@ -22,7 +22,7 @@ from ..records import Frozen
 
 __all__ = ["Param", "Constraint", "Scene", "register", "catalog", "get_scene", "scene_names",
            "computed_scenes", "is_example_id", "scenes_of_example", "KINETICS_MODULES",
-           "is_kinetics_scene", "refuse_kinetics"]
+           "RELATIVE_MODULE", "registered_by", "is_kinetics_scene", "refuse_kinetics"]
 
 #: Modules whose import registers scenes.
 CATALOG_MODULES: tuple[str, ...] = (
@@ -33,6 +33,8 @@ CATALOG_MODULES: tuple[str, ...] = (
 
 #: The catalog modules whose scenes the rigid-body command runs (and no other command).
 KINETICS_MODULES = ("dyncalc.scenes.kinetics", "dyncalc.scenes.kinetics_loads")
+#: The catalog module whose scenes coriolis runs (relative motion: no frequency).
+RELATIVE_MODULE = "dyncalc.scenes.relative"
 
 
 # Param, Constraint and Scene behave as frozen dataclasses (the same constructor, repr,
@@ -197,13 +199,18 @@ def catalog() -> dict[str, Scene]:
     return _SCENES
 
 
-def is_kinetics_scene(name: str) -> bool:
-    """Whether scene ``name`` is a rigid-body scene: registered by one of
-    :data:`KINETICS_MODULES`. A name already registered (as :func:`get_scene` leaves it) costs
-    no further import; another loads the catalog first."""
+def registered_by(name: str) -> str:
+    """The catalog module that registered scene ``name`` ("" for no scene): which commands
+    take it (:data:`KINETICS_MODULES`, :data:`RELATIVE_MODULE`). A name already registered (as
+    :func:`get_scene` leaves it) costs no further import; another loads the catalog first."""
     if name not in _ORIGIN:
         _load()
-    return _ORIGIN.get(name) in KINETICS_MODULES
+    return _ORIGIN.get(name, "")
+
+
+def is_kinetics_scene(name: str) -> bool:
+    """Whether scene ``name`` is a rigid-body scene (registered by :data:`KINETICS_MODULES`)."""
+    return registered_by(name) in KINETICS_MODULES
 
 
 def refuse_kinetics(name: str, command: str) -> None:

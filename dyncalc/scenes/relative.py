@@ -11,18 +11,14 @@ from ..physics.relative_scenes import radial_slot_release, slotted_link
 from ..units import ANGLE, ANGULAR_RATE, LENGTH, MASS, TIME
 from . import Constraint, Param, Scene, register
 
-__all__ = ["relative_scene_names", "RELATIVE_MODULE"]
-
-#: The physics module of the relative-motion scenes: what ``coriolis --scene`` accepts.
-RELATIVE_MODULE = "dyncalc.physics.relative_scenes"
+__all__ = ["relative_scene_names"]
 
 
 def relative_scene_names() -> list[str]:
-    """The scenes ``coriolis --scene`` takes, in catalog order."""
-    from . import catalog
+    """The scenes ``coriolis --scene`` takes (those this module registers), in catalog order."""
+    from . import RELATIVE_MODULE, catalog, registered_by
 
-    return [name for name, scene in catalog().items()
-            if scene.compute.__module__ == RELATIVE_MODULE]
+    return [name for name in catalog() if registered_by(name) == RELATIVE_MODULE]
 
 
 register(Scene(
