@@ -47,6 +47,38 @@ def _admissible(scene, row: dict[str, float]) -> bool:
     return all(c.holds(row) for c in scene.constraints)
 
 
+def _kernel(scene):
+    """The scene's column kernel (:mod:`dyncalc.physics.kinetics_columns`,
+    :mod:`dyncalc.physics.kinetics_loads_columns`), or ``None``."""
+    from ..physics import kinetics_columns, kinetics_loads_columns  # noqa: F401 (they attach)
+    from ..physics.columns import kernel_of
+
+    return kernel_of(scene.compute)
+
+
+def _by_kernel(scene, kernel, arrays: dict, defaults: dict, n: int):
+    """The block through the scene's kernel: a row is exact where the kernel says so and
+    every input is finite and meets its constraint and the scene's relations (the one-off
+    refuses the others, on the generic path)."""
+    from ..lazy import numpy as np
+
+    ok = np.ones(n, dtype=bool)
+    for name, value in arrays.items():
+        constraint = scene.param(name).constraint
+        ok &= np.isfinite(value)
+        if constraint == "positive":
+            ok &= value > 0.0
+        elif constraint == "nonnegative":
+            ok &= value >= 0.0
+    values = {**{name: np.full(n, value) for name, value in defaults.items()}, **arrays}
+    for c in scene.constraints:
+        ok &= np.broadcast_to(np.asarray(c.holds(values), dtype=bool), (n,))
+    safe = {name: np.where(ok, value, 1.0) for name, value in values.items()}
+    out = kernel(**safe)
+    out.exact = np.asarray(out.exact, dtype=bool) & ok
+    return out
+
+
 def scene_columns(given: dict, settings: dict):
     """The results of a block of rows of scene ``settings["scene"]`` (``given``: the columns
     by parameter name, float64 SI arrays), or ``None`` when the block is not the adapter's."""
@@ -64,6 +96,9 @@ def scene_columns(given: dict, settings: dict):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     n = len(next(iter(arrays.values())))
+    kernel = _kernel(scene)
+    if kernel is not None:
+        return _by_kernel(scene, kernel, arrays, defaults, n)
     columns = {name: array.tolist() for name, array in arrays.items()}
     exact = np.zeros(n, dtype=bool)
     values: dict[str, list] = {}

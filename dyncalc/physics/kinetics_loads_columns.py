@@ -1,0 +1,90 @@
+"""Column kernels of the rigid-body load scenes of :mod:`dyncalc.physics.kinetics_loads`
+(``--batch``).
+
+The one-off's float formulas are evaluated here on whole float64 columns, the same operations
+in the same order (``+ - * /`` are correctly rounded in numpy as in Python), so every value is
+the one-off's to the bit; the beam's normal force, which the one-off forms exactly and rounds
+once, goes through the double-double kernel of :mod:`~dyncalc.physics.kinetics_columns`. A row
+is exact where every value is finite and not zero (a zero only where the one-off calls it
+exact: the free end of the beam, the axis end of the arm) and its section lies on the bar;
+the others are left to the one-off, which gives its message.
+"""
+from __future__ import annotations
+
+from ..lazy import numpy as np
+from .columns import Columns, column_kernel
+from .kinetics_columns import Exact, in_range, rounded
+from .kinetics_loads import angled_bar_on_shaft, beam_spun_up, rotating_angled_arm
+
+__all__ = []
+
+
+def _exact(values: dict, ok, zero_ok=None) -> Columns:
+    """Columns of float results, exact where ``ok``, every value finite and non-zero (or
+    zero where ``zero_ok`` allows it; ``zero_ok`` maps a name to a boolean array)."""
+    exact = np.asarray(ok, dtype=bool)
+    for name, value in values.items():
+        allowed = zero_ok.get(name, False) if zero_ok else False
+        exact = exact & np.isfinite(value) & ((value != 0.0) | allowed)
+    return Columns(values, exact=exact)
+
+
+@column_kernel(angled_bar_on_shaft)
+def _angled_bar_on_shaft_columns(m, l, M0, omega) -> Columns:
+    """:func:`angled_bar_on_shaft` on columns, bit for bit."""
+    centripetal = m * l * omega * omega
+    values = {"alpha": 9.0 * M0 / (20.0 * m * l * l), "A_xi": 0.0 - 0.75 * centripetal,
+              "A_eta": 27.0 * M0 / (80.0 * l), "B_xi": 0.0 - 7.0 * centripetal / 12.0,
+              "B_eta": 21.0 * M0 / (80.0 * l)}
+    return _exact(values, True)
+
+
+@column_kernel(beam_spun_up)
+def _beam_spun_up_columns(m, l, M0, x=None, t=None) -> Columns:
+    """:func:`beam_spun_up` on columns: the float formulas bit for bit, ``N`` formed in
+    double-double and certified (:func:`~dyncalc.physics.kinetics_columns.rounded`)."""
+    ok = np.ones(len(m), dtype=bool)
+    alpha = 3.0 * M0 / (m * l * l)
+    values = {"alpha": alpha}
+    if t is not None:
+        ok &= t >= 0.0
+        values["omega"] = alpha * t
+    zero_ok = {}
+    if x is not None:
+        ok &= (x >= 0.0) & (x <= l)
+        end = x == l
+        zero_ok = {"N": end, "V": end, "M": end}
+        inner, outer = (l - x) / l, (l + x) / l
+        if t is not None:
+            L = Exact(l)
+            exact = (Exact(M0) * Exact(t)) * (Exact(M0) * Exact(t)) * 4.5 * (L - Exact(x)) \
+                * (L + Exact(x)) / (Exact(m) * L * L * L * L * L)
+            normal = rounded({"N": exact}, ok & in_range(m, l, M0, x, t), zeros=("N",))
+            ok &= normal.exact
+            values["N"] = normal.values["N"]
+        values["V"] = 1.5 * M0 / l * (inner * outer)
+        values["M"] = 0.0 - M0 * (inner * inner) * ((l + l + x) / (l + l))
+    return _exact(values, ok, zero_ok)
+
+
+def _leg_a(mu_W2, a, b, x2):
+    return (mu_W2 * (a * b + x2 * (a - 0.5 * x2)), -0.5 * mu_W2 * b * b,
+            0.5 * mu_W2 * b * b * (a - x2))
+
+
+@column_kernel(rotating_angled_arm)
+def _rotating_angled_arm_columns(m, a, b, Omega, x1=None, x2=None) -> Columns:
+    """:func:`rotating_angled_arm` on columns, bit for bit (exactly one of ``x1``, ``x2``)."""
+    if (x1 is None) == (x2 is None):
+        return Columns({}, exact=np.zeros(len(m), dtype=bool))
+    mu_W2 = m / (a + b) * Omega * Omega
+    zero_ok = {}
+    if x1 is not None:
+        ok = (x1 >= 0.0) & (x1 <= b)
+        N, V, M = mu_W2 * x1 * (b - 0.5 * x1), mu_W2 * a * x1, 0.5 * mu_W2 * a * x1 * x1
+    else:
+        ok = (x2 >= 0.0) & (x2 <= a)
+        N, V, M = _leg_a(mu_W2, a, b, x2)
+        zero_ok = {"M": x2 == a}
+    N0, V0, M0 = _leg_a(mu_W2, a, b, 0.0)
+    return _exact({"N": N, "V": V, "M": M, "N0": N0, "V0": V0, "M0": M0}, ok, zero_ok)
