@@ -46,6 +46,9 @@ LIMITS = {
     "forced-response total response (extra)": [str(LIMIT / "forced_total.py")],
     "forced-response undamped (extra)": [str(LIMIT / "forced_undamped.py")],
     "modes two-mass chain (extra)": [str(LIMIT / "modes.py")],
+    # round 6: rigid-body scenes on column kernels (issue 17's brief, rigidbatch)
+    "rigid-body drum-two-blocks": [str(LIMIT / "rigid_body.py"), "drum"],
+    "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 
