@@ -137,6 +137,10 @@ def rounded(values: dict, ok, zeros=()) -> Columns:
         bound = 4.0 * np.asarray(value.err) + 2.0 ** -100
         with np.errstate(all="ignore"):
             z, certain = round_certified(value.hi, value.lo, bound)
+            # a value known exactly (no bound) is rounded by the one addition hi + lo, as
+            # float() rounds the fraction (ties to even, binade edges included)
+            certain = certain | ((np.asarray(value.err) == 0.0) & np.isfinite(z)
+                                 & (np.abs(z) >= 2.0 ** -1022))
         zero = z == 0.0
         allowed = value.is_zero() if name in zeros else False
         exact = exact & np.where(zero, allowed, certain)
