@@ -17,6 +17,9 @@ from ..errors import InputError, PhysicsError
 
 __all__ = ["scene_columns"]
 
+#: The modules whose column kernels serve the rigid-body scenes.
+_KERNEL_MODULES = ("..physics.kinetics_columns", "..physics.kinetics_loads_columns")
+
 
 def _defaults(scene, given: set[str]) -> dict[str, float]:
     """SI values of the defaulted parameters not given (``g``); refuses (``InputError``) a
@@ -50,9 +53,12 @@ def _admissible(scene, row: dict[str, float]) -> bool:
 def _kernel(scene):
     """The scene's column kernel (:mod:`dyncalc.physics.kinetics_columns`,
     :mod:`dyncalc.physics.kinetics_loads_columns`), or ``None``."""
-    from ..physics import kinetics_columns, kinetics_loads_columns  # noqa: F401 (they attach)
+    import importlib
+
     from ..physics.columns import kernel_of
 
+    for module in _KERNEL_MODULES:   # importing them attaches the kernels
+        importlib.import_module(module, __package__)
     return kernel_of(scene.compute)
 
 

@@ -11,9 +11,13 @@ the others are left to the one-off, which gives its message.
 """
 from __future__ import annotations
 
+import math
+
 from ..lazy import numpy as np
 from .columns import Columns, column_kernel
+from .euler_bearing import precessing_shaft
 from .kinetics_columns import Exact, in_range, rounded
+from .numerics_arrays import elementwise
 from .kinetics_loads import angled_bar_on_shaft, beam_spun_up, rotating_angled_arm
 
 __all__ = []
@@ -88,3 +92,38 @@ def _rotating_angled_arm_columns(m, a, b, Omega, x1=None, x2=None) -> Columns:
         zero_ok = {"M": x2 == a}
     N0, V0, M0 = _leg_a(mu_W2, a, b, 0.0)
     return _exact({"N": N, "V": V, "M": M, "N0": N0, "V0": V0, "M0": M0}, ok, zero_ok)
+
+
+def _sin_cos(x):
+    """libm's ``sin`` and ``cos`` row by row, as the one-off calls them (0 and 1 at zero)."""
+    if not np.any(x):
+        return np.zeros(len(x)), np.ones(len(x))
+    return elementwise(math.sin, x), elementwise(math.cos, x)
+
+
+@column_kernel(precessing_shaft)
+def _precessing_shaft_columns(J1, J3, omega0, Omega, J2=None, alpha0=None, t=None,
+                              psi=None) -> Columns:
+    """:func:`precessing_shaft` on columns, bit for bit (its ``sin``/``cos`` by libm)."""
+    n = len(J1)
+    J2 = J3 if J2 is None else J2
+    psi = np.zeros(n) if psi is None else psi
+    if (alpha0 is None) != (t is None):
+        return Columns({}, exact=np.zeros(n, dtype=bool))  # the one-off refuses: t goes with alpha0
+    if alpha0 is None:
+        ok, rate, accel = np.ones(n, dtype=bool), Omega, np.zeros(n)
+    else:
+        ok = t >= 0.0
+        sin, cos = _sin_cos(Omega * t)
+        rate, accel = alpha0 * Omega * cos, 0.0 - alpha0 * Omega * Omega * sin
+    d = J2 - J3
+    s2, c2 = _sin_cos(2.0 * psi)
+    s, c = _sin_cos(psi)
+    values = {"M1": 0.0 - d * s2 * rate * rate / 2.0,
+              "M2": J1 * omega0 * rate + d * (omega0 * rate * c2 + accel * s2 / 2.0),
+              "M3": (J2 * s * s + J3 * c * c) * accel + d * omega0 * rate * s2,
+              "alpha_dot": rate, "alpha_ddot": accel}
+    uniform = alpha0 is None
+    zero_ok = {"M1": J2 == J3, "alpha_ddot": np.full(n, uniform),
+               "M3": (J2 == J3) & uniform}
+    return _exact(values, ok, zero_ok)
