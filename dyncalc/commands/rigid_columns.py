@@ -1,10 +1,14 @@
 """``rigid-body --scene NAME --batch``: the column adapter of a block of rows.
 
-The scene's own physics function is called on each row's SI floats (no parsing, no pint, no
-Result: a few microseconds a row instead of milliseconds), the very function the one-off
-calls, so each value is the one-off's to the bit wherever the one-off is handed the same SI
-numbers (the batch's probe checks one row of each block and sends the block to the generic
-path otherwise). A row is exact when every input is finite and meets its constraint, the
+Every rigid-body scene has a column kernel (:mod:`dyncalc.physics.kinetics_columns`: the
+exact rational closed forms in certified double-double; :mod:`dyncalc.physics.kinetics_loads_columns`:
+the one-off's float formulas in the same order), so a block's rows are computed a column at a
+time, bit for bit the one-off's. The rows a kernel leaves (a rounding it cannot certify, a
+zero, a warning) get the scene's own physics function on the row's SI floats (no parsing, no
+pint, no Result: a few microseconds a row), the very function the one-off calls, so each
+value is the one-off's to the bit wherever the one-off is handed the same SI numbers (the
+batch's probe checks one row of each block and sends the block to the generic path
+otherwise). A row is exact when every input is finite and meets its constraint, the
 scene's relations hold, and the physics neither raises nor warns; the other rows take the
 generic path, which gives their message. A result column (an inverse problem) or a word
 column (``body``) leaves the block to the generic path.
@@ -103,12 +107,16 @@ def scene_columns(given: dict, settings: dict):
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     n = len(next(iter(arrays.values())))
     kernel = _kernel(scene)
-    if kernel is not None:
-        return _by_kernel(scene, kernel, arrays, defaults, n)
-    columns = {name: array.tolist() for name, array in arrays.items()}
+    values: dict = {}
     exact = np.zeros(n, dtype=bool)
-    values: dict[str, list] = {}
-    for i in range(n):
+    if kernel is not None:
+        out = _by_kernel(scene, kernel, arrays, defaults, n)
+        if out.values:
+            values, exact = dict(out.values), out.exact
+    # the rows the kernel leaves (a rounding it cannot certify, a warning, a refusal): the
+    # scene's physics on each row's floats
+    columns = {name: array.tolist() for name, array in arrays.items()}
+    for i in np.flatnonzero(~exact).tolist():
         row = {name: column[i] for name, column in columns.items()}
         if not _admissible(scene, row):
             continue
@@ -121,7 +129,7 @@ def scene_columns(given: dict, settings: dict):
                 and (v != 0.0 or name in out.exact_zeros) for name, v in out.values.items()):
             continue
         if not values:
-            values = {name: [math.nan] * n for name in out.values}
+            values = {name: np.full(n, math.nan) for name in out.values}
         if list(out.values) != list(values):
             continue
         for name, value in out.values.items():
@@ -129,4 +137,4 @@ def scene_columns(given: dict, settings: dict):
         exact[i] = True
     if not values:
         return None
-    return Columns({name: np.array(v, dtype=float) for name, v in values.items()}, exact=exact)
+    return Columns(values, exact=exact)
