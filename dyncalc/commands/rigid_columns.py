@@ -84,7 +84,8 @@ def _by_kernel(scene, kernel, arrays: dict, defaults: dict, n: int):
     for c in scene.constraints:
         ok &= np.broadcast_to(np.asarray(c.holds(values), dtype=bool), (n,))
     safe = {name: np.where(ok, value, 1.0) for name, value in values.items()}
-    out = kernel(**safe)
+    with np.errstate(all="ignore"):
+        out = kernel(**safe)
     out.exact = np.asarray(out.exact, dtype=bool) & ok
     return out
 

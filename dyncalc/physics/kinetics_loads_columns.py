@@ -95,10 +95,14 @@ def _rotating_angled_arm_columns(m, a, b, Omega, x1=None, x2=None) -> Columns:
 
 
 def _sin_cos(x):
-    """libm's ``sin`` and ``cos`` row by row, as the one-off calls them (0 and 1 at zero)."""
-    if not np.any(x):
+    """libm's ``sin`` and ``cos`` row by row, as the one-off calls them (0 and 1 at zero;
+    NaN where ``x`` is not finite, a row the one-off refuses)."""
+    if not np.any(x) and not np.signbit(x).any():
         return np.zeros(len(x)), np.ones(len(x))
-    return elementwise(math.sin, x), elementwise(math.cos, x)
+    finite = np.isfinite(x)
+    x = np.where(finite, x, 0.0)
+    return (np.where(finite, elementwise(math.sin, x), math.nan),
+            np.where(finite, elementwise(math.cos, x), math.nan))
 
 
 @column_kernel(precessing_shaft)
