@@ -10,8 +10,9 @@ value is the one-off's to the bit wherever the one-off is handed the same SI num
 batch's probe checks one row of each block and sends the block to the generic path
 otherwise). A row is exact when every input is finite and meets its constraint, the
 scene's relations hold, and the physics neither raises nor warns; the other rows take the
-generic path, which gives their message. A result column (an inverse problem) or a word
-column (``body``) leaves the block to the generic path.
+generic path, which gives their message. A word column (``body``) stands for its number
+(``kappa``), one word a block; a result column (an inverse problem) leaves the block to the
+generic path.
 """
 from __future__ import annotations
 
@@ -52,6 +53,23 @@ def _admissible(scene, row: dict[str, float]) -> bool:
                 constraint == "nonnegative" and not value >= 0.0):
             return False
     return all(c.holds(row) for c in scene.constraints)
+
+
+def _words(scene, given: dict) -> dict[str, float]:
+    """The number each word column stands for, by the keyword the physics takes (``body``:
+    ``kappa``); the batch hands the adapter one word per block. Refuses (``InputError``) a
+    column of several words or of a word the parameter has not (the generic path answers)."""
+    out = {}
+    for name, column in given.items():
+        param = scene.param(name)
+        if param.choices is None:
+            continue
+        word = column[0] if len(column) else None
+        value = param.choices.get(word) if isinstance(word, str) else None
+        if value is None or isinstance(value, str) or any(w != word for w in column):
+            raise InputError("not one number word")
+        out["kappa" if name == "body" else name] = float(value)
+    return out
 
 
 def _kernel(scene):
@@ -98,15 +116,17 @@ def scene_columns(given: dict, settings: dict):
     from ..scenes import get_scene
 
     scene = get_scene(settings["scene"])
-    if not given or any(scene.param(n) is None or scene.param(n).choices is not None
-                        for n in given):
+    if not given or any(scene.param(n) is None for n in given):
         return None
     try:
         defaults = _defaults(scene, set(given))
+        words = _words(scene, given)
     except InputError:
         return None
-    arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
-    n = len(next(iter(arrays.values())))
+    arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()
+              if scene.param(name).choices is None}
+    n = len(next(iter(given.values())))
+    arrays.update({name: np.full(n, value) for name, value in words.items()})
     kernel = _kernel(scene)
     values: dict = {}
     exact = np.zeros(n, dtype=bool)
