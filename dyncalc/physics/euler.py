@@ -18,7 +18,7 @@ from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from .frames import _Scaled, magnitude as vector_magnitude
 
-__all__ = ["check_tensor", "euler_moment"]
+__all__ = ["check_tensor", "euler_moment", "dot", "matvec"]
 
 #: Relative tolerance (of the largest entry) of the symmetry, definiteness and triangle checks:
 #: a tensor printed by ``inertia --value`` to 17 digits passes, a typing slip does not.
@@ -61,6 +61,26 @@ def check_tensor(J, label: str = "--inertia-tensor") -> None:
                          f"{moments[2]:.6g} kg*m^2 (no rigid body has such moments)")
 
 
+def dot(u, v):
+    """``u . v`` summed left to right, ``(u_0 v_0 + u_1 v_1) + u_2 v_2``, over the last axis
+    (one vector, or rows of them: the same operations, so a batch's columns give the one-off's
+    bits whatever BLAS numpy links, whose ``@`` sums in its own order).
+
+    >>> float(dot(np.array([1.0, 2.0, 3.0]), np.array([4.0, 5.0, 6.0])))
+    32.0
+    """
+    return (u[..., 0] * v[..., 0] + u[..., 1] * v[..., 1]) + u[..., 2] * v[..., 2]
+
+
+def matvec(J, v):
+    """``J v`` for a 3x3 ``J`` (or a stack of them), each component :func:`dot` of a row.
+
+    >>> matvec(np.eye(3) * 2.0, np.array([1.0, 2.0, 3.0])).tolist()
+    [2.0, 4.0, 6.0]
+    """
+    return np.stack([dot(J[..., i, :], v) for i in range(3)], axis=-1)
+
+
 def euler_moment(J, omega, alpha) -> dict:
     """The moment, angular momentum and kinetic energy of a rigid body turning at ``omega``
     with angular acceleration ``alpha``.
@@ -95,10 +115,10 @@ def euler_moment(J, omega, alpha) -> dict:
     J = np.asarray(J, dtype=float)
     w, a = np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float)
     with np.errstate(all="ignore"):
-        H = J @ w
+        H = matvec(J, w)
         gyro = _Scaled.of(w).cross(_Scaled.of(H)).value()
-        M = J @ a + gyro + 0.0
-        T = float(w @ H) / 2.0
+        M = matvec(J, a) + gyro + 0.0
+        T = float(dot(w, H)) / 2.0
     values = {"M": M, "H": H + 0.0, "T": T}
     for name, value in values.items():
         if not np.all(np.isfinite(value)):
