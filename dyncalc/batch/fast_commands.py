@@ -170,6 +170,10 @@ def _read(spec, col: Column, column: list[str], cache: dict, plain=None):
         return ok, words, None, None, "word"
     if param.dim is None:
         return None
+    if param.metavar == "MATRIX":  # a 3x3 matrix a cell (rigid-body's inertia_tensor)
+        from .fast_matrices import read_matrices
+
+        return read_matrices(column, col.unit, param.dim, spec.strict)
     if param.kind == "quantity" and (plain is not None or param.metavar != "VEC"
                                      or not any("," in cell for cell in column)):
         plain = _plain_floats(column) if plain is None else plain
@@ -414,6 +418,8 @@ def _inputs(spec, given, reads, probe) -> list[tuple]:
         (ok, _si, shown, info, kind), column = reads[col.key]
         if kind == "number":
             items.append((name, shown, column, col.unit, info, None))
+        elif kind == "matrix":  # (dyncalc.batch.fast_matrices.Matrices)
+            items.append((name, shown, None, None, False, None))
         elif kind == "word":  # the same word on every row of the block: the probe's entry
             items.append((name, json.dumps(_json_inputs({name: entry}))[1:-1], None, None,
                           False, None))

@@ -289,9 +289,14 @@ def RigidRows(*, scene: str | None = None, rtol: float | None = None,
     ``alpha`` as quoted cells."""
     from ..commands.rigid_body import COMMAND, rigid_scene
 
-    if scene is None:
-        return RecordRows(COMMAND, {"scene": None}, rtol=rtol, strict=strict,
+    if scene is None:  # Euler rows on columns (dyncalc.physics.euler_columns)
+        from ..commands.rigid_columns import euler_columns_of
+        from .fast_commands import _command_fast
+
+        spec = RecordRows(COMMAND, {"scene": None}, rtol=rtol, strict=strict,
                           example="inertia_tensor,omega,alpha")
+        spec.adapter, spec.fast = euler_columns_of, _command_fast
+        return spec
     chosen = rigid_scene(scene)
     spec = RecordRows(COMMAND, {"scene": scene}, rtol=rtol, strict=strict,
                       targets=tuple(chosen.kinds), example="m1 [kg],m2 [kg]")

@@ -20,7 +20,7 @@ import math
 
 from ..errors import InputError, PhysicsError
 
-__all__ = ["scene_columns"]
+__all__ = ["scene_columns", "euler_columns_of"]
 
 #: The modules whose column kernels serve the rigid-body scenes.
 _KERNEL_MODULES = ("..physics.kinetics_columns", "..physics.kinetics_loads_columns")
@@ -77,11 +77,11 @@ def _kernel(scene):
     :mod:`dyncalc.physics.kinetics_loads_columns`), or ``None``."""
     import importlib
 
-    from ..physics.columns import kernel_of
-
-    for module in _KERNEL_MODULES:   # importing them attaches the kernels
+    for module in _KERNEL_MODULES:   # importing them registers the kernels
         importlib.import_module(module, __package__)
-    return kernel_of(scene.compute)
+    from ..physics.kinetics_columns import KERNELS
+
+    return KERNELS.get(scene.compute)
 
 
 def _by_kernel(scene, kernel, arrays: dict, defaults: dict, n: int):
@@ -159,3 +159,23 @@ def scene_columns(given: dict, settings: dict):
     if not values:
         return None
     return Columns(values, exact=exact)
+
+
+def euler_columns_of(given: dict, settings: dict):
+    """Euler rows (``inertia_tensor``, ``omega``, ``alpha`` columns: ``(n, 3, 3)`` and
+    ``(n, 3)`` SI arrays; a vector left out is zero, as the one-off takes it) through
+    :func:`dyncalc.physics.euler_columns.euler_columns`; ``None`` for another block."""
+    from ..lazy import numpy as np
+    from ..physics.euler_columns import euler_columns
+
+    if settings.get("scene") is not None or "inertia_tensor" not in given \
+            or set(given) - {"inertia_tensor", "omega", "alpha"}:
+        return None
+    J = np.asarray(given["inertia_tensor"], dtype=float)
+    if J.ndim != 3 or J.shape[1:] != (3, 3):
+        return None
+    vectors = [np.asarray(given[name], dtype=float) if name in given else np.zeros((len(J), 3))
+               for name in ("omega", "alpha")]
+    if any(v.shape != (len(J), 3) for v in vectors):
+        return None
+    return euler_columns(J, *vectors)

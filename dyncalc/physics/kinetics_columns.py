@@ -24,13 +24,26 @@ from __future__ import annotations
 import math
 
 from ..lazy import numpy as np
-from .columns import Columns, column_kernel
+from .columns import Columns
 from .kinetics import (direct_central_impact, double_pendulum_impulse, drum_two_blocks,
                        two_drums_rope_drive, wheel_incline_block)
 from .numerics_arrays import (dd_add, dd_div, dd_mul, elementwise, round_certified,
                               two_product_array, two_sum_array)
 
-__all__ = ["Exact", "rounded"]
+__all__ = ["Exact", "rounded", "KERNELS", "rigid_kernel"]
+
+#: The rigid-body scenes' kernels by physics function. Kept here, not as the function's
+#: ``columns`` attribute (:func:`~dyncalc.physics.columns.column_kernel`), which
+#: natural-frequency's vectorised path would take up for scenes it refuses.
+KERNELS: dict = {}
+
+
+def rigid_kernel(physics):
+    """Register the decorated kernel as ``physics``'s in :data:`KERNELS`."""
+    def attach(kernel):
+        KERNELS[physics] = kernel
+        return kernel
+    return attach
 
 #: Rounding error of one double-double step (dd_add, dd_mul: 2^-104; dd_div: 2^-103).
 _STEP = 2.0 ** -103
@@ -157,14 +170,14 @@ def _drum(m1, m2, r1, r2, J_A, g):
             "S1": m1_ * (g_ + r1_ * alpha), "S2": m2_ * (g_ - r2_ * alpha)}
 
 
-@column_kernel(drum_two_blocks)
+@rigid_kernel(drum_two_blocks)
 def _drum_two_blocks_columns(m1, m2, r1, r2, J_A, g) -> Columns:
     """:func:`drum_two_blocks` on columns (SI arrays)."""
     values = _drum(m1, m2, r1, r2, J_A, g)
     return rounded(values, in_range(m1, m2, r1, r2, J_A, g), zeros=("alpha", "a1", "a2"))
 
 
-@column_kernel(wheel_incline_block)
+@rigid_kernel(wheel_incline_block)
 def _wheel_incline_block_columns(m1, m2, beta, J_A=None, r=None, kappa=None, g=None) -> Columns:
     """:func:`wheel_incline_block` on columns; ``sin``/``cos`` of the incline by libm, row by
     row, as the one-off calls them."""
@@ -186,7 +199,7 @@ def _wheel_incline_block_columns(m1, m2, beta, J_A=None, r=None, kappa=None, g=N
                    zeros=("a", "H", "mu_min"))
 
 
-@column_kernel(two_drums_rope_drive)
+@rigid_kernel(two_drums_rope_drive)
 def _two_drums_rope_drive_columns(m1, m2, r1, r2, J1, J2, M0, g) -> Columns:
     """:func:`two_drums_rope_drive` on columns; rows whose rope goes slack (warned by the
     one-off) or whose rope force is zero are left to the one-off."""
@@ -203,7 +216,7 @@ def _two_drums_rope_drive_columns(m1, m2, r1, r2, J1, J2, M0, g) -> Columns:
     return out
 
 
-@column_kernel(direct_central_impact)
+@rigid_kernel(direct_central_impact)
 def _direct_central_impact_columns(m1, m2, v1, v2, e) -> Columns:
     """:func:`direct_central_impact` on columns (rows with ``v1 <= v2`` or ``e`` outside
     ``[0, 1]`` are the one-off's to refuse)."""
@@ -219,7 +232,7 @@ def _direct_central_impact_columns(m1, m2, v1, v2, e) -> Columns:
     return rounded(values, ok, zeros=tuple(values))
 
 
-@column_kernel(double_pendulum_impulse)
+@rigid_kernel(double_pendulum_impulse)
 def _double_pendulum_impulse_columns(m, l, F_hat, d=None) -> Columns:
     """:func:`double_pendulum_impulse` on columns (``d`` left out: ``d_0 = 5 l / 8``)."""
     m_, l_, F = Exact(m), Exact(l), Exact(F_hat)

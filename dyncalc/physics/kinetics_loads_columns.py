@@ -14,9 +14,9 @@ from __future__ import annotations
 import math
 
 from ..lazy import numpy as np
-from .columns import Columns, column_kernel
+from .columns import Columns
 from .euler_bearing import precessing_shaft
-from .kinetics_columns import Exact, in_range, rounded
+from .kinetics_columns import Exact, in_range, rigid_kernel, rounded
 from .numerics_arrays import elementwise
 from .kinetics_loads import angled_bar_on_shaft, beam_spun_up, rotating_angled_arm
 
@@ -33,7 +33,7 @@ def _exact(values: dict, ok, zero_ok=None) -> Columns:
     return Columns(values, exact=exact)
 
 
-@column_kernel(angled_bar_on_shaft)
+@rigid_kernel(angled_bar_on_shaft)
 def _angled_bar_on_shaft_columns(m, l, M0, omega) -> Columns:
     """:func:`angled_bar_on_shaft` on columns, bit for bit."""
     centripetal = m * l * omega * omega
@@ -43,7 +43,7 @@ def _angled_bar_on_shaft_columns(m, l, M0, omega) -> Columns:
     return _exact(values, True)
 
 
-@column_kernel(beam_spun_up)
+@rigid_kernel(beam_spun_up)
 def _beam_spun_up_columns(m, l, M0, x=None, t=None) -> Columns:
     """:func:`beam_spun_up` on columns: the float formulas bit for bit, ``N`` formed in
     double-double and certified (:func:`~dyncalc.physics.kinetics_columns.rounded`)."""
@@ -76,7 +76,7 @@ def _leg_a(mu_W2, a, b, x2):
             0.5 * mu_W2 * b * b * (a - x2))
 
 
-@column_kernel(rotating_angled_arm)
+@rigid_kernel(rotating_angled_arm)
 def _rotating_angled_arm_columns(m, a, b, Omega, x1=None, x2=None) -> Columns:
     """:func:`rotating_angled_arm` on columns, bit for bit (exactly one of ``x1``, ``x2``)."""
     if (x1 is None) == (x2 is None):
@@ -105,7 +105,7 @@ def _sin_cos(x):
             np.where(finite, elementwise(math.cos, x), math.nan))
 
 
-@column_kernel(precessing_shaft)
+@rigid_kernel(precessing_shaft)
 def _precessing_shaft_columns(J1, J3, omega0, Omega, J2=None, alpha0=None, t=None,
                               psi=None) -> Columns:
     """:func:`precessing_shaft` on columns, bit for bit (its ``sin``/``cos`` by libm)."""
