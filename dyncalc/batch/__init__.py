@@ -99,12 +99,13 @@ def chunk_rows(as_json: bool, inputs: int, results: list | None, csv_rows: int =
     """Rows in the next chunk. CSV: the command's ``csv_rows`` (:attr:`RowSpec.csv_rows`),
     at most :data:`CHUNK_ROWS`. JSON lines: :data:`FIRST_JSON_ROWS` until the results are
     known, then :data:`CHUNK_CELLS` over the columns (between FIRST_JSON_ROWS and
-    CHUNK_ROWS)."""
+    CHUNK_ROWS, and at most ``csv_rows``)."""
     if not as_json:
         return min(CHUNK_ROWS, csv_rows)
     if not results:
         return min(CHUNK_ROWS, FIRST_JSON_ROWS)
-    return min(CHUNK_ROWS, max(FIRST_JSON_ROWS, CHUNK_CELLS // (inputs + len(results))))
+    return min(CHUNK_ROWS, csv_rows,
+               max(FIRST_JSON_ROWS, CHUNK_CELLS // (inputs + len(results))))
 
 
 ON_ERROR = ("stop", "skip")

@@ -296,6 +296,7 @@ def RigidRows(*, scene: str | None = None, rtol: float | None = None,
         spec = RecordRows(COMMAND, {"scene": None}, rtol=rtol, strict=strict,
                           example="inertia_tensor,omega,alpha")
         spec.adapter, spec.fast = euler_columns_of, _command_fast
+        spec.csv_rows = 4096  # nine numbers a tensor cell: fewer rows a chunk, flat memory
         return spec
     chosen = rigid_scene(scene)
     spec = RecordRows(COMMAND, {"scene": scene}, rtol=rtol, strict=strict,
