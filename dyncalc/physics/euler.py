@@ -14,6 +14,8 @@ References
 """
 from __future__ import annotations
 
+import math
+
 from ..errors import InputError, PhysicsError
 from ..lazy import numpy as np
 from .frames import _Scaled, magnitude as vector_magnitude
@@ -62,23 +64,51 @@ def check_tensor(J, label: str = "--inertia-tensor") -> None:
 
 
 def dot(u, v):
-    """``u . v`` summed left to right, ``(u_0 v_0 + u_1 v_1) + u_2 v_2``, over the last axis
-    (one vector, or rows of them: the same operations, so a batch's columns give the one-off's
-    bits whatever BLAS numpy links, whose ``@`` sums in its own order).
+    """``u . v`` over the last axis (one vector, or rows of them), correctly rounded: the
+    three products split exactly (Dekker's :func:`~dyncalc.physics.numerics.two_product`) and
+    summed by ``math.fsum`` (on rows, their twins :func:`two_product_array` and
+    :func:`fsum_rows`, bit for bit); where a part is not finite or the sum overflows, the
+    float sum ``(u_0 v_0 + u_1 v_1) + u_2 v_2``. Neither depends on the BLAS numpy links, whose
+    ``@`` sums in its own order. On rows, ``(values, ok)``: ``ok`` False where the twin may
+    differ from the one-off.
 
     >>> float(dot(np.array([1.0, 2.0, 3.0]), np.array([4.0, 5.0, 6.0])))
     32.0
     """
-    return (u[..., 0] * v[..., 0] + u[..., 1] * v[..., 1]) + u[..., 2] * v[..., 2]
+    u, v = np.asarray(u, dtype=float), np.asarray(v, dtype=float)
+    plain = (u[..., 0] * v[..., 0] + u[..., 1] * v[..., 1]) + u[..., 2] * v[..., 2]
+    if u.ndim == 1:
+        from .numerics import two_product
+
+        terms = [x for a, b in zip(u.tolist(), v.tolist()) for x in two_product(a, b)]
+        if not all(math.isfinite(x) for x in terms):
+            return plain
+        try:
+            return np.float64(math.fsum(terms))
+        except OverflowError:
+            return plain
+    from .numerics_arrays import fsum_rows, two_product_array
+
+    parts = [x for j in range(3) for x in two_product_array(u[..., j], v[..., j])]
+    terms = np.stack(parts, axis=-1)
+    finite = np.isfinite(terms).all(axis=-1)
+    sums, ok = fsum_rows(np.where(finite[:, None], terms, 0.0))
+    # (a row whose fsum overflows: the one-off's plain sum; its results overflow, refused)
+    return np.where(finite, sums, plain), ok | ~finite
 
 
 def matvec(J, v):
-    """``J v`` for a 3x3 ``J`` (or a stack of them), each component :func:`dot` of a row.
+    """``J v`` for one 3x3 ``J``, each component :func:`dot` of a row; on a stack of them
+    (``(n, 3, 3)`` and ``(n, 3)``), ``(values (n, 3), ok)``.
 
     >>> matvec(np.eye(3) * 2.0, np.array([1.0, 2.0, 3.0])).tolist()
     [2.0, 4.0, 6.0]
     """
-    return np.stack([dot(J[..., i, :], v) for i in range(3)], axis=-1)
+    J = np.asarray(J, dtype=float)
+    if J.ndim == 2:
+        return np.array([dot(J[i], v) for i in range(3)])
+    rows = [dot(J[:, i, :], v) for i in range(3)]
+    return np.stack([r[0] for r in rows], axis=-1), rows[0][1] & rows[1][1] & rows[2][1]
 
 
 def euler_moment(J, omega, alpha) -> dict:

@@ -7,7 +7,7 @@ and ``alpha`` (``dyncalc.commands.rigid_body``'s Euler mode), bit for bit the on
 
 The twin of :func:`~dyncalc.physics.euler.euler_moment`: the products ``J v`` and ``w . H`` by
 :func:`~dyncalc.physics.euler.matvec` and :func:`~dyncalc.physics.euler.dot` (the one-off's
-own, summed left to right), the cross product by the scaled, correctly rounded twin of
+own, correctly rounded, with their row twins), the cross product by the scaled, correctly rounded twin of
 :mod:`dyncalc.physics.frames` (``_ScaledRows``) and ``|M|`` by
 :func:`~dyncalc.physics.numerics_arrays.hypot_rows` (CPython's ``math.hypot``). The tensor
 checks of :func:`~dyncalc.physics.euler.check_tensor` run on the stack (LAPACK's ``syevd`` on
@@ -61,11 +61,14 @@ def euler_columns(J, omega, alpha) -> Columns:
     w, a = np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float)
     ok = tensor_rows_ok(J) & np.isfinite(w).all(axis=1) & np.isfinite(a).all(axis=1)
     with np.errstate(all="ignore"):
-        H = matvec(J, w)
+        H, sure_h = matvec(J, w)
         gyro = _ScaledRows.of(w).cross(_ScaledRows.of(H)).value()
-        M = matvec(J, a) + gyro + 0.0
-        T = dot(w, H) / 2.0
+        Ja, sure_a = matvec(J, a)
+        M = Ja + gyro + 0.0
+        wH, sure_t = dot(w, H)
+        T = wH / 2.0
         H = H + 0.0
+        ok &= sure_h & sure_a & sure_t
         ok &= np.isfinite(M).all(axis=1) & np.isfinite(H).all(axis=1) & np.isfinite(T)
         size, fine = hypot_rows(M[:, 0], M[:, 1], M[:, 2])
     return Columns({"M": M, "M_mag": size, "H": H, "T": T}, exact=ok & fine,
