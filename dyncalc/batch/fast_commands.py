@@ -260,7 +260,7 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
     reads, arrays, good = read
     if not good.any():
         return None
-    settings = {**spec.settings, "units": _typed_units(reads, good),
+    settings = {**spec.settings, "units": _typed_units(reads, good), "json": want_json,
                 "typed": {key: read[2].shown for key, (read, _column) in reads.items()
                           if read[4] == "number"}}
     try:
@@ -344,6 +344,8 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
         texts = _input_texts(_inputs(spec, given, reads, probe), keep, {})
     extra = "{}" if out.error_estimate is None else json.dumps(
         {"error_estimate": out.error_estimate})
+    if out.extra is not None:
+        extra = out.extra
     return FastBlock(rows[keep], values, dims, head, texts, extra, warnings)
 
 
@@ -378,8 +380,10 @@ def _probe(spec, given, cells, row: int, out, values: dict, warnings: tuple = ()
         return None
     if (tuple(result.warnings) != warnings or result.model != out.model or result.method != out.method
             or list(result.results) != list(values)
-            or result.extra.get("error_estimate") != out.error_estimate
-            or set(result.extra) - {"error_estimate"}):
+            or (json.dumps(result.extra, allow_nan=False) != out.extra
+                if out.extra is not None else
+                (result.extra.get("error_estimate") != out.error_estimate
+                 or set(result.extra) - {"error_estimate"}))):
         return None
     for name, entry in result.results.items():
         mine = values[name]
@@ -394,6 +398,8 @@ def _same(theirs, mine) -> bool:
         return theirs == mine
     a = np.asarray(theirs, dtype=float)
     b = np.asarray(mine, dtype=float)
+    if a.size == b.size == 1:  # a 1 x 1 matrix: one number in a CSV cell
+        a, b = a.reshape(1), b.reshape(1)
     return a.shape == b.shape and bool((a.view(np.int64) == b.view(np.int64)).all())
 
 

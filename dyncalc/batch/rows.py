@@ -334,8 +334,8 @@ def ModesRows(*, scene: str | None = None, normalize: str | None = None,
 def EomRows(*, scene: str | None = None, about: str | None = None,
             rtol: float | None = None, strict: bool = False) -> RecordRows:
     """``eom --scene NAME``: columns are the scene's parameters and the state (``x``,
-    ``x_dot``, ``t``); each row derives once more (sympy), so a file of a few hundred rows
-    takes a few seconds per row at most."""
+    ``x_dot``, ``t``); the scenes :mod:`dyncalc.commands.eom_columns` takes are derived once
+    and computed on whole columns, the other rows derive once more each (sympy)."""
     from ..commands.eom import COMMAND
     from ..scenes.energies import energies
 
@@ -346,6 +346,13 @@ def EomRows(*, scene: str | None = None, about: str | None = None,
     state = [*record.coords, *(c + "_dot" for c in record.coords), "t"]
     words = (*(p.name for p in record.params), *state,
              *(("body",) if record.param("kappa") is not None else ()))
-    return RecordRows(COMMAND, {"scene": scene, "about": about}, scene_words=words,
+    spec = RecordRows(COMMAND, {"scene": scene, "about": about}, scene_words=words,
                       rtol=rtol, strict=strict,
                       example=",".join(p.name for p in record.params[:2]))
+    # the vectorised path: derived once, the numbers on columns (commands/eom_columns)
+    from ..commands.eom_columns import scene_columns, scene_parameters
+    from .fast_commands import _command_fast
+
+    spec.parameter = scene_parameters(scene).get
+    spec.adapter, spec.fast = scene_columns, _command_fast
+    return spec
