@@ -46,6 +46,8 @@ LIMITS = {
     "forced-response total response (extra)": [str(LIMIT / "forced_total.py")],
     "forced-response undamped (extra)": [str(LIMIT / "forced_undamped.py")],
     "modes two-mass chain (extra)": [str(LIMIT / "modes.py")],
+    # round 6: eom --scene, derived once (issue 17's brief, eombatch)
+    "eom pendulum": [str(LIMIT / "eom.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

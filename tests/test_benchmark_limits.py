@@ -32,7 +32,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "coriolis", "forced-response",
                       "inertia one disk a row (extra)", "modes two-mass chain (extra)",
                       "forced-response total response (extra)",
-                      "forced-response undamped (extra)"}
+                      "forced-response undamped (extra)", "eom pendulum"}
 
 
 @pytest.mark.parametrize("as_json", [False, True], ids=["csv", "json"])
