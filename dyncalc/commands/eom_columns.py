@@ -40,9 +40,9 @@ def derivation(scene: str, given: frozenset) -> _Derived | None:
 
 
 def _derive(scene: str, given: frozenset):
-    from ..physics.eom_columns import constant_equilibria, plan_of
+    from ..physics.eom_columns import plan_of
     from .eom import read
-    from .eom_results import derive_system
+    from .eom_results import constant_roots, derive_system
 
     inputs = read({}, (), scene=scene)  # the defaults: the derivation does not use values
     if len(inputs.coords) != 1 or any(k.startswith("Q:") for k in inputs.trees) \
@@ -54,7 +54,7 @@ def _derive(scene: str, given: frozenset):
     if plan is None:
         return None
     angle = inputs.coords[0] in inputs.angles
-    roots = constant_equilibria(system, angle)
+    roots = constant_roots(system, angle)
     if not roots:
         return None
     from ..physics.symbolic import text_of

@@ -112,9 +112,26 @@ def _check_powers(inputs) -> None:
                                       "in the coordinates")
 
 
+#: The derivations of this process, by coordinates, energies and signed parameters (the
+#: rows of ``eom --scene --batch`` derive one scene again and again); at most :data:`KEEP`.
+_DERIVED: dict = {}
+KEEP = 32
+
+
 def derive_system(inputs):
     """``(symbols, expressions, System)``: Lagrange's equations of the inputs' energies,
-    every parameter a symbol (the values come in later)."""
+    every parameter a symbol (the values come in later); once per process for the same
+    coordinates, energies and signed parameters."""
+    key = (tuple(inputs.coords), tuple(sorted(inputs.texts.items())),
+           tuple(sorted(inputs.signed)))
+    if key not in _DERIVED:
+        if len(_DERIVED) >= KEEP:
+            _DERIVED.pop(next(iter(_DERIVED)))
+        _DERIVED[key] = _derive_system(inputs)
+    return _DERIVED[key]
+
+
+def _derive_system(inputs):
     import sympy
 
     from ..physics import lagrange_equations as lagrange
@@ -237,10 +254,26 @@ def _in_trig(exprs, q) -> bool:
 
 
 def _plan(system, inputs):
-    """The numpy functions of a one-coordinate derivation with every value known, or None."""
+    """The numpy functions of a one-coordinate derivation with every value known, or None
+    (made once per derivation and set of parameters)."""
     from ..physics.eom_columns import plan_of
 
-    return plan_of(system, list(inputs.values))
+    plans = system.__dict__.setdefault("plans", {})
+    key = frozenset(inputs.values)
+    if key not in plans:
+        plans[key] = plan_of(system, list(inputs.values))
+    return plans[key]
+
+
+def constant_roots(system, angle: bool):
+    """The equilibria of a one-coordinate derivation that do not depend on the values
+    (:func:`dyncalc.physics.eom_columns.constant_equilibria`), once per derivation."""
+    from ..physics.eom_columns import constant_equilibria
+
+    roots = system.__dict__.setdefault("roots", {})
+    if angle not in roots:
+        roots[angle] = constant_equilibria(system, angle)
+    return roots[angle]
 
 
 def _one_row(values: dict) -> dict:
@@ -263,8 +296,12 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
         lengths = [abs(v) for name, v in inputs.values.items()
                    if inputs.dims.get(name) == LENGTH_DIM and v != 0]
         scale = max(lengths) if lengths else 1.0
-        found = lagrange.numeric_equilibria(system, values, angles,
-                                             [scale] * len(s.q))
+        roots = constant_roots(system, angles[0]) if plan is not None else None
+        if roots is not None:  # sympy's roots, as batch takes them: no search
+            found = [[r] for r in roots]
+        else:
+            found = lagrange.numeric_equilibria(system, values, angles,
+                                                 [scale] * len(s.q))
         bounds = _bounds(inputs, values)
         for p in found:
             if any(not lo - 1e-9 <= p[i] <= hi + 1e-9 for i, (lo, hi) in bounds.items()):

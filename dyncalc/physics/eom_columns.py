@@ -98,14 +98,17 @@ def constant_equilibria(system, angle: bool) -> list[float] | None:
     """The equilibria of a one-coordinate derivation when they do not depend on the values
     (sympy's roots are numbers), as the numeric search gives them (angles wrapped to
     (-pi, pi], sorted by size, the positive first); ``None`` otherwise."""
+    q = system.symbols.q[0]
+    equations = [e for e in system.static if e != 0]
+    if not equations or not lagrange.solvable(equations, [q]):
+        return None  # (sympy would list the rest position only: the search finds the rest)
     found = lagrange.symbolic_equilibria(system)
     if not found:
         return None
-    q = system.symbols.q[0]
     points = []
     for f in found:
-        value = f.get(q)
-        if value is None or value.free_symbols:
+        value = sympy.sympify(f.get(q, 0))
+        if value.free_symbols:
             return None
         x = float(value)
         if not math.isfinite(x):
