@@ -355,4 +355,5 @@ def EomRows(*, scene: str | None = None, about: str | None = None,
 
     spec.parameter = scene_parameters(scene).get
     spec.adapter, spec.fast = scene_columns, _command_fast
+    spec.probed = {}  # one probe (a whole one-off) per kind of block, not one per chunk
     return spec
