@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from ..lazy import numpy as np
 
+
 def columns(given: dict, settings: dict):
     """The results of a block of batch rows at once, or ``None`` when not vectorised here.
 
@@ -15,7 +16,8 @@ def columns(given: dict, settings: dict):
     :func:`~dyncalc.physics.frames.relative_acceleration` (the velocities through that of
     :func:`~dyncalc.physics.relative_motion.transport_velocity`), magnitudes by the twin of
     ``math.hypot`` (:func:`~dyncalc.physics.numerics_arrays.hypot_rows`); the Earth form
-    (``latitude``, ``speed``, ...) and mixed or missing inputs give ``None``. Exact where the
+    (``latitude``, ``speed``, ...) by :func:`~dyncalc.commands.coriolis_earth_columns.
+    earth_columns`; mixed or missing inputs give ``None``. Exact where the
     one-off gives these values with no warning and no refusal (a term or magnitude beyond
     float64, an underflow to zero, a negative magnitude).
     """
@@ -23,9 +25,11 @@ def columns(given: dict, settings: dict):
     from ..physics.frames import relative_acceleration
     from ..physics.numerics_arrays import hypot_rows
 
-    from ..physics.relative_motion import transport_velocity
-
     keys = set(given)
+    if "latitude" in keys:
+        from .coriolis_earth_columns import earth_columns
+
+        return earth_columns(given, settings)
     if ("omega" not in keys or not keys & {"vr", "r", "v0"}
             or keys - {"omega", "vr", "r", "v0", "alpha", "a0", "ar", "mass"}):
         return None
@@ -50,35 +54,7 @@ def columns(given: dict, settings: dict):
         return value + 0.0
 
     if vectors:
-        known = "vr" in keys
-        omega, vr = arrays["omega"], arrays.get("vr")
-        out = relative_acceleration.columns(omega, vr if known else np.zeros_like(omega),
-                                            r=arrays.get("r"), alpha=arrays.get("alpha"),
-                                            a0=arrays.get("a0"), a_r=arrays.get("ar"),
-                                            m=mass if known else None)
-        terms = out.values
-        exact = out.exact
-        values = {}
-        if known:
-            values.update(a_c=terms["a_c"], a_c_mag=magnitude(terms["a_c"]))
-            if mass is not None:
-                values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
-        if keys & {"r", "alpha", "a0", "ar"}:
-            for name in ("a_euler", "a_centripetal", "a_transport"):
-                values[name] = terms[name]
-            if known:
-                values.update(a=terms["a"], a_mag=magnitude(terms["a"]))
-            values["a_transport_mag"] = magnitude(terms["a_transport"])
-        if keys & {"r", "v0"}:
-            r = arrays["r"] if "r" in keys else np.zeros_like(omega)
-            v_t = transport_velocity.columns(omega, r, v0=arrays.get("v0"))
-            values.update(v_transport=v_t.values["v"],
-                          v_transport_mag=magnitude(v_t.values["v"]))
-            exact = exact & v_t.exact
-            if known:
-                v = transport_velocity.columns(omega, r, v0=arrays.get("v0"), v_r=vr)
-                values.update(v=v.values["v"], v_mag=magnitude(v.values["v"]))
-                exact = exact & v.exact
+        values, exact = frame_values(arrays, arrays["omega"], arrays.get("vr"), magnitude)
         return Columns(values, exact=exact & ok, model="vectors")
     if keys & {"a0", "ar"}:
         return None
@@ -106,3 +82,42 @@ def columns(given: dict, settings: dict):
     return Columns(values, exact=out.exact & ok, model="magnitudes (perpendicular vectors)")
 
 
+def frame_values(arrays: dict, omega, vr, magnitude):
+    """The results of the vector formula (in the one-off's order) for the columns ``omega``
+    and ``vr`` (``(n, 3)``, rad/s and m/s; ``vr`` ``None`` when not given) and the other
+    vectors and the mass in ``arrays`` (SI), and the rows where they are exact;
+    ``magnitude(vector)`` gives a vector's magnitude (and marks the rows it cannot give)."""
+    from ..physics.frames import relative_acceleration
+    from ..physics.relative_motion import transport_velocity
+
+    keys = set(arrays)
+    mass = arrays.get("mass")
+    known = vr is not None
+    out = relative_acceleration.columns(omega, vr if known else np.zeros_like(omega),
+                                        r=arrays.get("r"), alpha=arrays.get("alpha"),
+                                        a0=arrays.get("a0"), a_r=arrays.get("ar"),
+                                        m=mass if known else None)
+    terms = out.values
+    exact = out.exact
+    values = {}
+    if known:
+        values.update(a_c=terms["a_c"], a_c_mag=magnitude(terms["a_c"]))
+        if mass is not None:
+            values.update(F_c=terms["F_c"], F_c_mag=magnitude(terms["F_c"]))
+    if keys & {"r", "alpha", "a0", "ar"}:
+        for name in ("a_euler", "a_centripetal", "a_transport"):
+            values[name] = terms[name]
+        if known:
+            values.update(a=terms["a"], a_mag=magnitude(terms["a"]))
+        values["a_transport_mag"] = magnitude(terms["a_transport"])
+    if keys & {"r", "v0"}:
+        r = arrays["r"] if "r" in keys else np.zeros_like(omega)
+        v_t = transport_velocity.columns(omega, r, v0=arrays.get("v0"))
+        values.update(v_transport=v_t.values["v"],
+                      v_transport_mag=magnitude(v_t.values["v"]))
+        exact = exact & v_t.exact
+        if known:
+            v = transport_velocity.columns(omega, r, v0=arrays.get("v0"), v_r=vr)
+            values.update(v=v.values["v"], v_mag=magnitude(v.values["v"]))
+            exact = exact & v.exact
+    return values, exact
