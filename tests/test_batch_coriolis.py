@@ -1,0 +1,163 @@
+"""``coriolis --batch`` on the vectorised paths against the one-off, byte for byte: the Earth
+form (``--latitude``) on whole columns, with the array twins it stands on
+(:mod:`dyncalc.physics.earth_columns`) checked against the one-off functions."""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from dyncalc.batch import GENERIC_ENV
+from dyncalc.cli import cli
+from dyncalc.commands import coriolis_earth_columns
+from dyncalc.constants import EARTH_RATE
+from dyncalc.physics.earth_columns import compass_sectors, cos_sin_degrees_rows
+from dyncalc.physics.frames import cos_sin_degrees
+
+RNG_SEED = 20261124
+
+
+def _bits(a) -> np.ndarray:
+    return np.asarray(a, dtype=float).view(np.int64)
+
+
+def test_cos_sin_degrees_rows_is_the_one_off_bit_for_bit():
+    rng = np.random.default_rng(RNG_SEED)
+    degrees = np.concatenate([
+        rng.uniform(-90, 90, 4000), rng.uniform(-1e6, 1e6, 2000),
+        np.arange(-720.0, 720.5, 7.5),                      # multiples of 90, 45, 30, 22.5
+        [0.0, -0.0, 45.0, -45.0, 135.0, 1e300, -1e300, 5e-324, 89.99999999999999]])
+    c, s = cos_sin_degrees_rows(degrees)
+    expected = np.array([cos_sin_degrees(float(d)) for d in degrees])
+    assert (_bits(c) == _bits(expected[:, 0])).all()
+    assert (_bits(s) == _bits(expected[:, 1])).all()
+    # the exact values at the quarter turns and 30 degrees, as the one-off's doctest
+    c, s = cos_sin_degrees_rows(np.array([90.0, 180.0, 30.0]))
+    assert c.tolist()[:2] == [0.0, -1.0] and s.tolist()[2] == 0.5
+
+
+def _one_off_sector(east: float, north: float) -> int:
+    bearing = math.degrees(math.atan2(east, north)) % 360.0
+    return round(bearing / 22.5) % 16
+
+
+def test_compass_sectors_match_the_one_off_also_at_the_boundaries():
+    rng = np.random.default_rng(RNG_SEED + 1)
+    n = 20000
+    east = rng.normal(size=n) * 10.0 ** rng.integers(-300, 300, n)
+    north = rng.normal(size=n) * 10.0 ** rng.integers(-300, 300, n)
+    east[:500], north[500:1000] = 0.0, 0.0
+    north[1000:1200] = -0.0
+    # on and next to the boundaries between compass points (11.25 + 22.5 k degrees)
+    angles = np.radians(11.25 + 22.5 * np.arange(16))
+    edge_e = np.concatenate([np.sin(angles), np.nextafter(np.sin(angles), 2.0),
+                             np.nextafter(np.sin(angles), -2.0)])
+    edge_n = np.concatenate([np.cos(angles)] * 3)
+    east, north = np.concatenate([east, edge_e]), np.concatenate([north, edge_n])
+    expected = [_one_off_sector(e, n_) for e, n_ in zip(east.tolist(), north.tolist())]
+    assert compass_sectors(east, north).tolist() == expected
+
+
+def _run(args, stdin):
+    return CliRunner().invoke(cli, args, input=stdin)
+
+
+def _fast_and_generic(monkeypatch, args, text):
+    """The output of ``args`` with the file ``text`` on the vectorised path and on the
+    generic one, and the number of rows the Earth adapter marked exact."""
+    exact = []
+    adapter = coriolis_earth_columns.earth_columns
+
+    def counting(given, settings):
+        out = adapter(given, settings)
+        if out is not None:
+            exact.append(int(np.count_nonzero(out.exact)))
+        return out
+
+    monkeypatch.setattr(coriolis_earth_columns, "earth_columns", counting)
+    fast = _run(args, text)
+    monkeypatch.setenv(GENERIC_ENV, "1")
+    generic = _run(args, text)
+    monkeypatch.delenv(GENERIC_ENV)
+    assert (fast.exit_code, fast.stdout, fast.stderr) == (
+        generic.exit_code, generic.stdout, generic.stderr)
+    return fast, sum(exact)
+
+
+def _random_rows(rng, n: int, form: str) -> list[str]:
+    rows = []
+    for i in range(n):
+        lat = float(rng.uniform(-90, 90))
+        lat_text = (f"{lat!r}deg" if i % 5 else f"{math.radians(lat)!r} rad")
+        if form == "speed":
+            speed, heading, vertical, mass = (float(x) for x in (
+                10.0 ** rng.uniform(-3, 4), rng.uniform(-720, 720), rng.uniform(-5, 5),
+                10.0 ** rng.uniform(-2, 3)))
+            rows.append(f"{lat_text},{speed!r} km/h,{heading!r}deg,{vertical!r},{mass!r}kg")
+        else:
+            v = (rng.normal(size=3) * 10.0 ** rng.uniform(-3, 3) * (rng.random(3) > 0.2)).tolist()
+            rows.append(f'{lat_text},"{v[0]!r},{v[1]!r},{v[2]!r}",'
+                        f"{float(abs(rng.normal())) * 1e-4!r}")
+    return rows
+
+
+_EXTREMES = {
+    "speed": ["90deg,10m/s,0deg,0,1kg", "-90deg,10m/s,90deg,0,1kg", "0deg,0m/s,0deg,0,1kg",
+              "0,3m/s,0,0,1kg",                     # bare zeros: no warning, vectorised
+              "0.5,3m/s,10deg,0,1kg",               # a bare latitude warns: row by row
+              "45deg,3m/s,1,0,1kg",                 # a bare heading warns: row by row
+              "91deg,3m/s,0deg,0,1kg",              # refused: beyond the pole
+              "45deg,-3m/s,0deg,0,1kg",             # refused: a negative speed
+              "45deg,1e300m/s,45deg,1e300,1e300kg", # F_c overflows: refused as the one-off does
+              "45deg,1e-320m/s,45deg,0,1kg",        # underflows: the one-off's warning
+              "30deg,20m/s,90deg,0,-1kg"],          # refused: a negative mass
+    "vr": ['90deg,"10,0,0",7.2921159e-5', '-33deg,"0,0,0",7.2921159e-5',
+           '45deg,"0,0,5",0', '45deg,"1e-320,0,0",1e-4', '45deg,"1,2,3",-1e-4',
+           '1.5707963267948966 rad,"0,20,0",1e-4'],
+}
+_HEADERS = {"speed": "latitude,speed,heading,vertical [m/s],mass",
+            "vr": "latitude,vr [m/s],omega [rad/s]"}
+
+
+@pytest.mark.parametrize("form", ["speed", "vr"])
+@pytest.mark.parametrize("as_json", [False, True])
+def test_earth_batch_is_the_one_off_byte_for_byte(monkeypatch, form, as_json):
+    rng = np.random.default_rng(RNG_SEED + (form == "vr"))
+    rows = _random_rows(rng, 300, form) + _EXTREMES[form]
+    text = "\n".join([_HEADERS[form], *rows]) + "\n"
+    args = ["coriolis", "--batch", "-", "--on-error", "skip"] + (["--json"] if as_json else [])
+    fast, exact = _fast_and_generic(monkeypatch, args, text)
+    assert fast.exit_code == 2 and exact >= 300  # the random rows went through the columns
+    assert "Error: line" in fast.stderr       # the refused rows, as the one-off refuses them
+
+
+def test_earth_batch_rows_that_warn_keep_the_one_offs_warning(monkeypatch):
+    text = "latitude,vr [m/s]\n0.5,\"0,20,0\"\n45deg,\"0,20,0\"\n"
+    fast, exact = _fast_and_generic(monkeypatch, ["coriolis", "--batch", "-", "--json"], text)
+    lines = [json.loads(line) for line in fast.stdout.splitlines()]
+    assert exact == 1
+    assert lines[0]["warnings"] == ["--latitude 0.5 has no unit and is read in radians "
+                                    "(28.6479 deg); write 0.5deg for degrees"]
+    assert lines[1]["warnings"] == []
+
+
+def test_earth_batch_numbers_and_directions():
+    """At 45 deg N a northward 20 m/s: a_c = 2 Omega x v_r = (-2 W sin45 v, 0, 0), to the
+    west; the Coriolis force pushes east (to the right of the motion). At the pole an
+    eastward 10 m/s: a_c = (0, 2 W v, 0), north; the force south."""
+    text = "latitude,vr [m/s],mass [kg]\n45deg,\"0,20,0\",2\n90deg,\"10,0,0\",1\n"
+    out = _run(["coriolis", "--batch", "-", "--json"], text)
+    assert out.exit_code == 0, out.stderr
+    first, pole = (json.loads(line) for line in out.stdout.splitlines())
+    a_c = first["results"]["a_c"]["value"]
+    assert a_c[0] == pytest.approx(-2 * EARTH_RATE * math.sqrt(0.5) * 20, rel=1e-15)
+    assert a_c[1:] == [0.0, 0.0]
+    assert first["results"]["F_c_horizontal"]["value"] == [-2 * a_c[0], 0.0, 0.0]
+    assert first["extra"] == {"frame": "east-north-up",
+                              "directions": {"a_c": "west", "F_c": "east"}}
+    assert pole["results"]["a_c"]["value"] == [0.0, 2 * EARTH_RATE * 10, 0.0]
+    assert pole["results"]["coriolis_parameter"]["value"] == 2 * EARTH_RATE
+    assert pole["extra"]["directions"] == {"a_c": "north", "F_c": "south"}
