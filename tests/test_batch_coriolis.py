@@ -161,3 +161,62 @@ def test_earth_batch_numbers_and_directions():
     assert pole["results"]["a_c"]["value"] == [0.0, 2 * EARTH_RATE * 10, 0.0]
     assert pole["results"]["coriolis_parameter"]["value"] == 2 * EARTH_RATE
     assert pole["extra"]["directions"] == {"a_c": "north", "F_c": "south"}
+
+
+# --- a motion given in time: derived once per batch ------------------------------------------
+
+_TIME_ARGS = ["coriolis", "--r", "s0 - b*t^2/2, 0, 0 m", "s0=4m", "--omega", "0, 0, c*t",
+              "c=0.5rad/s^2", "--mass", "2kg", "b=0.5m/s^2"]
+
+
+def _counting_derivations(monkeypatch) -> list:
+    from dyncalc.physics import relative_time
+
+    calls = []
+    derive = relative_time._derive
+
+    def counting(*args):
+        calls.append(1)
+        return derive(*args)
+
+    monkeypatch.setattr(relative_time, "_derive", counting)
+    monkeypatch.setattr(relative_time, "_DERIVED", {})
+    return calls
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_a_batch_over_times_derives_once_and_is_the_one_off(monkeypatch, as_json):
+    """Each row's output equals a one-off run that derives afresh (sympy, no memory), while
+    the batch derives once; a parameter column derives once per distinct value."""
+    from dyncalc.physics import relative_time
+
+    rng = np.random.default_rng(RNG_SEED + 7)
+    times = [float(x) for x in rng.uniform(-3, 6, 40)] + [0.0, 1e-300]
+    flag = ["--json"] if as_json else []
+    calls = _counting_derivations(monkeypatch)
+    batch = _run(_TIME_ARGS + ["--batch", "-", *flag],
+                 "t [s]\n" + "".join(f"{t!r}\n" for t in times))
+    assert batch.exit_code == 0, batch.stderr
+    assert len(calls) == 1
+    lines = batch.stdout.splitlines()
+    if not as_json:
+        lines = lines[1:]
+    for t, line in zip(times, lines):
+        relative_time._DERIVED.clear()
+        if as_json:
+            one = _run(_TIME_ARGS + ["--t", f"{t!r} s", "--json"], "")
+            assert one.exit_code == 0, one.stderr
+            mine = json.loads(line)
+            del mine["line"], mine["inputs"]["t"]
+            theirs = json.loads(one.stdout)
+            del theirs["inputs"]["t"]
+            assert json.dumps(mine) == json.dumps(theirs)
+        else:  # the same row alone, derived afresh
+            alone = _run(_TIME_ARGS + ["--batch", "-"], f"t [s]\n{t!r}\n")
+            assert alone.stdout.splitlines() == [batch.stdout.splitlines()[0], line]
+    assert len(calls) == 1 + len(times)
+    calls.clear()
+    relative_time._DERIVED.clear()
+    text = "t [s],b [m/s^2]\n" + "".join(f"{t!r},{0.5 + (i % 3)}\n" for i, t in enumerate(times))
+    assert _run(_TIME_ARGS + ["--batch", "-"], text).exit_code == 0
+    assert len(calls) == 3

@@ -60,7 +60,7 @@ def earth_columns(given: dict, settings: dict):
     from ..physics.columns import Columns
     from ..physics.earth_columns import earth_angular_velocity_rows, enu_velocity_rows
     from ..physics.numerics_arrays import hypot_rows
-    from .coriolis_columns import frame_values
+    from .coriolis_frame_columns import frame_values
 
     keys = set(given)
     motion = keys & {"speed", "heading", "vertical"}

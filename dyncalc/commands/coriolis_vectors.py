@@ -9,9 +9,9 @@ from typing import Callable
 from ..result.entries import Entry, Explanation, Result
 from .coriolis_read import CoriolisInputs
 from .coriolis_slopes import _MASS, _STILL, _frame_slopes, _scalar_slopes, _sensitivity
-from .coriolis_terms import (REFERENCE, VECTOR_LATEX, _direction, _direction_line,
-                             _entry, _fmt, _horizontal, _line, _mag, _scalar_latex, _side, _unavailable,
-                             _vector_lines, _why_zero)
+from .coriolis_terms import (REFERENCE, VECTOR_LATEX, _direction, _direction_line, _entry,
+                             _fmt, _horizontal, _line, _mag, _scalar_latex, _side,
+                             _unavailable, _vector_lines, _why_zero)
 
 def _vectors(inputs: CoriolisInputs) -> Result:
     return _compute(inputs, inputs.si("omega"), inputs.si("vr"), model="vectors")
