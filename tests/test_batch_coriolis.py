@@ -220,3 +220,42 @@ def test_a_batch_over_times_derives_once_and_is_the_one_off(monkeypatch, as_json
     text = "t [s],b [m/s^2]\n" + "".join(f"{t!r},{0.5 + (i % 3)}\n" for i, t in enumerate(times))
     assert _run(_TIME_ARGS + ["--batch", "-"], text).exit_code == 0
     assert len(calls) == 3
+
+
+# --- inverse rows: a result column and a ? cell, row by row through the one-off --------------
+
+@pytest.mark.parametrize("header, cells, one_off", [
+    ("a_c [m/s^2],omega [rad/s],vr", "12,2,?", ["a_c=12 m/s^2", "--omega", "2 rad/s", "vr=?"]),
+    ("F_c [N],vr [m/s],mass [kg],omega", "6,3,2,?",
+     ["F_c=6 N", "--vr", "3 m/s", "--mass", "2 kg", "omega=?"]),
+    ("a_c_mag [m/s^2],latitude [deg],vr", "0.01,45,?",
+     ["a_c_mag=0.01 m/s^2", "--latitude", "45 deg", "vr=?"]),
+    ("a_c_horizontal_mag [m/s^2],vr [m/s],latitude", "0.0001,10,?",
+     ["a_c_horizontal_mag=0.0001 m/s^2", "--vr", "10 m/s", "latitude=?"]),
+])
+def test_inverse_rows_are_the_one_offs(header, cells, one_off):
+    """Before round 6 a result column was refused ("unknown column"); now each such row is
+    the one-off's inverse problem, its JSON line the one-off's JSON (line number aside)."""
+    batch = _run(["coriolis", "--batch", "-", "--json"], f"{header}\n{cells}\n")
+    one = _run(["coriolis", *one_off, "--json"], "")
+    assert batch.exit_code == 0 and one.exit_code == 0, batch.stderr + one.stderr
+    mine, theirs = json.loads(batch.stdout), json.loads(one.stdout)
+    del mine["line"]
+    assert mine == theirs
+    assert theirs["extra"]["inverse"]["unknown"] == one_off[-1][:-2]
+
+
+def test_inverse_rows_numbers_and_an_unknown_column():
+    """a_c = 2 Omega v_r: 12 m/s^2 at 2 rad/s is 3 m/s; on the Earth the horizontal part
+    2 Omega_E v |sin phi| = 1e-4 m/s^2 at 10 m/s gives sin phi = 1e-4 / (2 Omega_E 10)."""
+    out = _run(["coriolis", "--batch", "-"], "a_c [m/s^2],omega [rad/s],vr\n12,2,?\n")
+    assert float(out.stdout.splitlines()[1].split(",")[3]) == pytest.approx(3.0, rel=1e-15)
+    out = _run(["coriolis", "--batch", "-"],
+               "a_c_horizontal_mag [m/s^2],vr [m/s],latitude\n0.0001,10,?\n")
+    latitude = float(out.stdout.splitlines()[1].split(",")[3])
+    assert latitude == pytest.approx(math.asin(1e-4 / (2 * EARTH_RATE * 10)), rel=1e-12)
+    bad = _run(["coriolis", "--batch", "-"], "a_x,vr\n1,2\n")
+    assert bad.exit_code == 2
+    assert bad.stderr == ("Error: line 1: unknown column 'a_x'; coriolis reads omega, vr, r, "
+                          "alpha, v0, a0, ar, mass, latitude, speed, heading, vertical, R0, t "
+                          "and a result to solve from (a_c, a_c_mag, F_c, ...)\n")
