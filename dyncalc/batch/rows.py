@@ -240,7 +240,14 @@ def CoriolisRows(*, strict: bool = False) -> RecordRows:
 class _CoriolisRows(RecordRows):
     """:class:`RecordRows` of ``coriolis`` that also read its inverse problems: a result column
     (:data:`dyncalc.scenes.coriolis_scalar.TARGETS`) and a ``?`` cell go to the one-off as
-    ``NAME=QUANTITY`` and ``NAME=?`` words, row by row."""
+    ``NAME=QUANTITY`` and ``NAME=?`` words (the perpendicular ones solved on columns:
+    :mod:`dyncalc.batch.fast_coriolis`)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        from .fast_coriolis import coriolis_fast
+
+        self.fast = coriolis_fast
 
     def key(self, name):
         from ..scenes.coriolis_scalar import TARGETS
@@ -248,9 +255,6 @@ class _CoriolisRows(RecordRows):
         if any(name in names for names in TARGETS.values()):
             return name
         return super().key(name)
-
-    def known(self):
-        return f"{super().known()} and a result to solve from (a_c, a_c_mag, F_c, ...)"
 
     def compute(self, texts, labels):
         asked = {name: "?" for name, text in texts.items()
