@@ -29,7 +29,7 @@ def cos_sin_degrees_rows(degrees):
 
     >>> c, s = cos_sin_degrees_rows(np.array([90.0, -180.0, 30.0]))
     >>> c.tolist(), s.tolist()
-    ([0.0, -1.0, 0.8660254037844387], [1.0, -0.0, 0.5])
+    ([0.0, -1.0, 0.8660254037844387], [1.0, 0.0, 0.5])
     """
     from .frames import DEG_HI, DEG_LO
     from .numerics_arrays import elementwise, two_product_array
