@@ -39,6 +39,7 @@ LIMITS = {
     "damping-ratio": [str(LIMIT / "damping_ratio.py")],
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],
+    "coriolis Earth": [str(LIMIT / "coriolis_earth.py")],
     "forced-response": [str(LIMIT / "forced_response.py")],
     # extra rows (issue 17's brief, round 4): commands outside the 16 cases of the goal table
     "inertia one disk a row (extra)": [str(LIMIT / "inertia.py")],

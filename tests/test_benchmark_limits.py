@@ -29,7 +29,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
     labels = {case[0] for case in CASES}
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
-                      "coriolis", "forced-response",
+                      "coriolis", "coriolis Earth", "forced-response",
                       "inertia one disk a row (extra)", "modes two-mass chain (extra)",
                       "forced-response total response (extra)",
                       "forced-response undamped (extra)", "eom pendulum"}

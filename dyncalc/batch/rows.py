@@ -229,10 +229,41 @@ def RollingRows(*, method: str | None = None, rtol: float | None = None,
 
 
 def CoriolisRows(*, strict: bool = False) -> RecordRows:
-    """``coriolis``: its record's columns (``omega``, ``vr``, ``r``, ...)."""
+    """``coriolis``: its record's columns (``omega``, ``vr``, ``r``, ...) and the results an
+    inverse problem starts from (``a_c``, ``a_c_mag``, ...), with ``?`` in the option column
+    to solve for (``vr=?`` in the one-off)."""
     from ..commands.coriolis import COMMAND
 
-    return RecordRows(COMMAND, strict=strict, example="omega [rad/s],vr [m/s]")
+    return _CoriolisRows(COMMAND, strict=strict, example="omega [rad/s],vr [m/s]")
+
+
+class _CoriolisRows(RecordRows):
+    """:class:`RecordRows` of ``coriolis`` that also read its inverse problems: a result column
+    (:data:`dyncalc.scenes.coriolis_scalar.TARGETS`) and a ``?`` cell go to the one-off as
+    ``NAME=QUANTITY`` and ``NAME=?`` words (the perpendicular ones solved on columns:
+    :mod:`dyncalc.batch.fast_coriolis`)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        from .fast_coriolis import coriolis_fast
+
+        self.fast = coriolis_fast
+
+    def key(self, name):
+        from ..scenes.coriolis_scalar import TARGETS
+
+        if any(name in names for names in TARGETS.values()):
+            return name
+        return super().key(name)
+
+    def compute(self, texts, labels):
+        asked = {name: "?" for name, text in texts.items()
+                 if name in self.columns and text is not None and text.strip() == "?"}
+        values = {name: texts.get(name) for name in self.columns if name not in asked}
+        values.update(self.settings)
+        words = tuple(f"{k}={v}" for k, v in {**texts, **asked}.items()
+                      if k not in self.columns or k in asked)
+        return self.record.compute(values, words, rtol=self.rtol, strict=self.strict)
 
 
 

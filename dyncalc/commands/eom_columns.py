@@ -164,4 +164,4 @@ def scene_columns(arrays: dict, settings: dict):
              "about": {d.coord: chosen}}
     return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
                    warnings=d.warnings, warned=np.ones(n, dtype=bool) if d.warnings else None,
-                   extra=json.dumps(extra))
+                   extras=lambda _keep, text=json.dumps(extra): [text])
