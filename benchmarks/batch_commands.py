@@ -91,9 +91,15 @@ CASES = [
      "m [kg],l [m],M0 [N*m],omega [rad/s]",
      lambda r: [f"{r.uniform(0.5, 20):.6g}", f"{r.uniform(0.1, 2):.6g}",
                 f"{r.uniform(1, 100):.6g}", f"{r.uniform(0.5, 50):.6g}"]),
+    ("eom pendulum", ["eom", "--scene", "pendulum"], "l [m],phi [rad],phi_dot [rad/s]",
+     lambda r: [f"{r.uniform(0.1, 5):.6g}", f"{r.uniform(-3, 3):.6g}",
+                f"{r.uniform(-2, 2):.6g}"]),
     ("coriolis", ["coriolis"], "omega [rad/s],vr [m/s]",
      lambda r: ['"0,0,%.6g"' % r.uniform(0.1, 5), '"%.6g,%.6g,0"' % (r.uniform(-3, 3),
                                                                    r.uniform(-3, 3))]),
+    ("coriolis Earth", ["coriolis"], "latitude [deg],speed [m/s],heading [deg],mass [kg]",
+     lambda r: [f"{r.uniform(-90, 90):.6g}", f"{r.uniform(0, 300):.6g}",
+                f"{r.uniform(0, 360):.6g}", f"{r.uniform(0.1, 1e3):.6g}"]),
 ]
 
 

@@ -39,6 +39,7 @@ LIMITS = {
     "damping-ratio": [str(LIMIT / "damping_ratio.py")],
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],
+    "coriolis Earth": [str(LIMIT / "coriolis_earth.py")],
     "forced-response": [str(LIMIT / "forced_response.py")],
     # extra rows (issue 17's brief, round 4): commands outside the 16 cases of the goal table
     "inertia one disk a row (extra)": [str(LIMIT / "inertia.py")],
@@ -49,6 +50,8 @@ LIMITS = {
     # round 6: rigid-body scenes on column kernels (issue 17's brief, rigidbatch)
     "rigid-body drum-two-blocks": [str(LIMIT / "rigid_body.py"), "drum"],
     "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],
+    # round 6: eom --scene, derived once (issue 17's brief, eombatch)
+    "eom pendulum": [str(LIMIT / "eom.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

@@ -29,11 +29,11 @@ def test_every_command_of_the_brief_has_a_limit_script():
     labels = {case[0] for case in CASES}
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
-                      "coriolis", "forced-response",
+                      "coriolis", "coriolis Earth", "forced-response",
                       "inertia one disk a row (extra)", "modes two-mass chain (extra)",
                       "forced-response total response (extra)",
-                      "forced-response undamped (extra)", "rigid-body drum-two-blocks",
-                      "rigid-body angled-bar-on-shaft"}
+                      "forced-response undamped (extra)", "eom pendulum",
+                      "rigid-body drum-two-blocks", "rigid-body angled-bar-on-shaft"}
 
 
 @pytest.mark.parametrize("as_json", [False, True], ids=["csv", "json"])

@@ -16,7 +16,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from dyncalc.commands import coriolis as coriolis_module
+from dyncalc.commands import coriolis_read as coriolis_module
 from dyncalc.commands.coriolis import coriolis_result, read
 from dyncalc.physics import frames
 from dyncalc.result.propagate import propagate
@@ -305,7 +305,7 @@ def test_earth_corners_of_the_magnitudes():
 ], ids=["scalars", "vectors", "earth"])
 def test_propagation_reads_every_text_once(monkeypatch, texts):
     """Each option text is parsed exactly once (through the parse_quantity and parse_vector
-    names coriolis.py uses) and the formula is computed once: no re-runs per input."""
+    names coriolis_read.py uses) and the formula is computed once: no re-runs per input."""
     reads = Counter()
     computed = []
     originals = {name: getattr(coriolis_module, name)

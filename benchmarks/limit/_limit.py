@@ -74,11 +74,13 @@ def csv_line(df: pl.DataFrame, results: dict, header_of: dict) -> None:
     out.write_csv(sys.stdout.buffer, quote_style="necessary")
 
 
-def json_lines(n: int, head: str, inputs: list, results: list, extra: str = "{}") -> None:
-    """JSON lines: ``inputs`` and ``results`` are lists of parts (str or Series)."""
+def json_lines(n: int, head: str, inputs: list, results: list, extra="{}") -> None:
+    """JSON lines: ``inputs`` and ``results`` are lists of parts (str or Series), ``extra`` a
+    str or such a list."""
     line = pl.Series(np.arange(2, n + 2)).cast(pl.String)
+    extra = [extra] if isinstance(extra, str) else extra
     write(['{"line": ', line, ", " + head + ', "inputs": {', *inputs, '}, "results": {',
-           *results, '}, "warnings": [], "extra": ' + extra + "}"])
+           *results, '}, "warnings": [], "extra": ', *extra, "}"])
 
 
 def json_input(df: pl.DataFrame, column: str, name: str, unit: str, first: bool = False):

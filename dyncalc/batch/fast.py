@@ -22,7 +22,8 @@ class FastBlock:
     """Rows of a chunk computed together: their positions in the chunk, the result arrays (SI,
     in the order the one-off gives them; vectors as rows of an (n, 3) array, words as str
     arrays) and their dimensions (``None`` for words), and for JSON the constant part of each
-    line (``head``), each row's ``inputs`` object text and the ``extra`` object text;
+    line (``head``), each row's ``inputs`` object text and the ``extra`` object text (or
+    its parts, where rows differ: :attr:`~dyncalc.physics.columns.Columns.extras`);
     ``warnings``: the one-off's warnings, the same on every row of the block."""
 
     __slots__ = ("rows", "values", "dims", "head", "inputs", "extra", "warnings")

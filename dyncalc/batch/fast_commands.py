@@ -264,7 +264,7 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
     reads, arrays, good = read
     if not good.any():
         return None
-    settings = {**spec.settings, "units": _typed_units(reads, good),
+    settings = {**spec.settings, "units": _typed_units(reads, good), "json": want_json,
                 "typed": {key: read[2].shown for key, (read, _column) in reads.items()
                           if read[4] == "number"}}
     try:
@@ -298,7 +298,7 @@ def _split_by_results(spec, given, rows, cells, want_json, reads, good, out):
         part = Columns({name: out.values[name] for name, has in zip(names, pattern) if has},
                        exact=mask, model=out.model, method=out.method,
                        error_estimate=out.error_estimate, warnings=out.warnings,
-                       warned=out.warned)
+                       warned=out.warned, extras=out.extras)
         block = _finish(spec, given, rows, cells, want_json, reads, mask, part)
         if block is not None:
             blocks.append(block)
@@ -332,11 +332,22 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
         first = bool(out.warned[int(np.argmax(good))])
         good = good & (out.warned if first else ~out.warned)
         warnings = out.warnings if first else ()
-    probe = _probe(spec, given, cells, int(rows[np.argmax(good)]), out,
-                   {name: array[int(np.argmax(good))] for name, array in out.values.items()},
-                   warnings)
+    first = int(np.argmax(good))
+    first_extra = None if out.extras is None else _joined(out.extras(np.array([first])))
+    # a spec with ``probed`` (a dict) probes each kind of block once a run (eom: a probe is
+    # a whole one-off, with its explanation); the others probe every block
+    probed = getattr(spec, "probed", None)
+    key = (tuple(col.key for col in given), out.model, out.method, first_extra, warnings,
+           tuple(out.values))
+    probe = probed.get(key) if probed is not None else None
     if probe is None:
-        return None
+        probe = _probe(spec, given, cells, int(rows[first]), out,
+                       {name: array[first] for name, array in out.values.items()}, warnings,
+                       first_extra)
+        if probe is None:
+            return None
+        if probed is not None:
+            probed[key] = probe
     keep = np.flatnonzero(good)
     values = {name: array[keep] for name, array in out.values.items()}
     dims = {name: entry.dim for name, entry in probe.results.items()}
@@ -348,7 +359,14 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
         texts = _input_texts(_inputs(spec, given, reads, probe), keep, {})
     extra = "{}" if out.error_estimate is None else json.dumps(
         {"error_estimate": out.error_estimate})
+    if out.extras is not None:
+        extra = out.extras(keep) if want_json else "{}"
     return FastBlock(rows[keep], values, dims, head, texts, extra, warnings)
+
+
+def _joined(parts: list) -> str:
+    """The one line of :func:`~dyncalc.batch.assemble.lines` parts made for one row."""
+    return "".join(part if isinstance(part, str) else part[0] for part in parts)
 
 
 def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
@@ -372,9 +390,11 @@ def _typed_units(reads: dict, good: np.ndarray) -> dict[str, str]:
     return units
 
 
-def _probe(spec, given, cells, row: int, out, values: dict, warnings: tuple = ()):
+def _probe(spec, given, cells, row: int, out, values: dict, warnings: tuple = (),
+           extra: str | None = None):
     """The one-off Result of ``row``, or ``None`` where it is not the adapter's to the bit,
-    warnings included (then the whole block takes the generic path)."""
+    warnings and the JSON text of a row's own ``extra`` (``out.extras``) included (then the
+    whole block takes the generic path)."""
     texts = {col.key: with_header_unit(cells[col.key][row], col.unit) for col in given}
     try:
         result = spec.compute(texts, {col.key: col.name for col in given})
@@ -383,7 +403,8 @@ def _probe(spec, given, cells, row: int, out, values: dict, warnings: tuple = ()
     if (tuple(result.warnings) != warnings or result.model != out.model or result.method != out.method
             or list(result.results) != list(values)
             or result.extra.get("error_estimate") != out.error_estimate
-            or set(result.extra) - {"error_estimate"}):
+            or (set(result.extra) - {"error_estimate"} if extra is None
+                else json.dumps(result.extra) != extra)):
         return None
     for name, entry in result.results.items():
         mine = values[name]
@@ -398,6 +419,8 @@ def _same(theirs, mine) -> bool:
         return theirs == mine
     a = np.asarray(theirs, dtype=float)
     b = np.asarray(mine, dtype=float)
+    if a.size == b.size == 1:  # a 1 x 1 matrix: one number in a CSV cell
+        a, b = a.reshape(1), b.reshape(1)
     return a.shape == b.shape and bool((a.view(np.int64) == b.view(np.int64)).all())
 
 

@@ -229,10 +229,41 @@ def RollingRows(*, method: str | None = None, rtol: float | None = None,
 
 
 def CoriolisRows(*, strict: bool = False) -> RecordRows:
-    """``coriolis``: its record's columns (``omega``, ``vr``, ``r``, ...)."""
+    """``coriolis``: its record's columns (``omega``, ``vr``, ``r``, ...) and the results an
+    inverse problem starts from (``a_c``, ``a_c_mag``, ...), with ``?`` in the option column
+    to solve for (``vr=?`` in the one-off)."""
     from ..commands.coriolis import COMMAND
 
-    return RecordRows(COMMAND, strict=strict, example="omega [rad/s],vr [m/s]")
+    return _CoriolisRows(COMMAND, strict=strict, example="omega [rad/s],vr [m/s]")
+
+
+class _CoriolisRows(RecordRows):
+    """:class:`RecordRows` of ``coriolis`` that also read its inverse problems: a result column
+    (:data:`dyncalc.scenes.coriolis_scalar.TARGETS`) and a ``?`` cell go to the one-off as
+    ``NAME=QUANTITY`` and ``NAME=?`` words (the perpendicular ones solved on columns:
+    :mod:`dyncalc.batch.fast_coriolis`)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        from .fast_coriolis import coriolis_fast
+
+        self.fast = coriolis_fast
+
+    def key(self, name):
+        from ..scenes.coriolis_scalar import TARGETS
+
+        if any(name in names for names in TARGETS.values()):
+            return name
+        return super().key(name)
+
+    def compute(self, texts, labels):
+        asked = {name: "?" for name, text in texts.items()
+                 if name in self.columns and text is not None and text.strip() == "?"}
+        values = {name: texts.get(name) for name in self.columns if name not in asked}
+        values.update(self.settings)
+        words = tuple(f"{k}={v}" for k, v in {**texts, **asked}.items()
+                      if k not in self.columns or k in asked)
+        return self.record.compute(values, words, rtol=self.rtol, strict=self.strict)
 
 
 
@@ -340,8 +371,8 @@ def ModesRows(*, scene: str | None = None, normalize: str | None = None,
 def EomRows(*, scene: str | None = None, about: str | None = None,
             rtol: float | None = None, strict: bool = False) -> RecordRows:
     """``eom --scene NAME``: columns are the scene's parameters and the state (``x``,
-    ``x_dot``, ``t``); each row derives once more (sympy), so a file of a few hundred rows
-    takes a few seconds per row at most."""
+    ``x_dot``, ``t``); the scenes :mod:`dyncalc.commands.eom_columns` takes are derived once
+    and computed on whole columns, the other rows derive once more each (sympy)."""
     from ..commands.eom import COMMAND
     from ..scenes.energies import energies
 
@@ -352,6 +383,14 @@ def EomRows(*, scene: str | None = None, about: str | None = None,
     state = [*record.coords, *(c + "_dot" for c in record.coords), "t"]
     words = (*(p.name for p in record.params), *state,
              *(("body",) if record.param("kappa") is not None else ()))
-    return RecordRows(COMMAND, {"scene": scene, "about": about}, scene_words=words,
+    spec = RecordRows(COMMAND, {"scene": scene, "about": about}, scene_words=words,
                       rtol=rtol, strict=strict,
                       example=",".join(p.name for p in record.params[:2]))
+    # the vectorised path: derived once, the numbers on columns (commands/eom_columns)
+    from ..commands.eom_columns import scene_columns, scene_parameters
+    from .fast_commands import _command_fast
+
+    spec.parameter = scene_parameters(scene).get
+    spec.adapter, spec.fast = scene_columns, _command_fast
+    spec.probed = {}  # one probe (a whole one-off) per kind of block, not one per chunk
+    return spec

@@ -14,6 +14,8 @@ frame's (``x_fixed = Q(t) x_rotating``, ``Q(0) = I``).
 """
 from __future__ import annotations
 
+import copy
+import functools
 import math
 
 from ..errors import InputError
@@ -136,12 +138,37 @@ def _parameters(words, strict: bool):
     return values, dims, entries
 
 
-def read_time(texts: dict[str, str | None], words=(), strict: bool = False) -> TimeInputs:
-    """The option texts and ``NAME=QUANTITY`` words of the time path -> :class:`TimeInputs`:
-    every expression read by the closed grammar and its dimension checked (no sympy)."""
+@functools.lru_cache(maxsize=32)
+def _read_motion(texts: tuple, words: tuple, strict: bool):
+    """``(parameter values, vectors, entries)`` of the texts of ``--r``, ``--omega``, ``--R0``
+    (in :data:`TIME_OPTIONS`' order, ``None`` when not given) and the ``NAME=QUANTITY``
+    words: read once for the same texts (a batch over times reads them once; the callers copy
+    what they keep)."""
     from .eom_units import dimension_of_dim
     from ..units.timevector import read_time_vector
 
+    values, dims, entries = _parameters(words, strict)
+    vectors = {}
+    for (name, (dim, words_, hint, frame)), text in zip(TIME_OPTIONS.items(), texts):
+        if text is None:
+            continue
+        vec = read_time_vector(text, dimension_of_dim(dim), label=f"--{name}",
+                               params=dims, dim_words=words_, unit_hint=hint, strict=strict)
+        vectors[name] = vec
+        what = "position" if name != "omega" else "angular velocity"
+        entries[name] = Entry(name, text, None, text=text, assumed_si=bool(vec.assumed_si),
+                              description=f"{what} in {frame}-frame components, in t")
+    unused = set(values) - set().union(*(v.names for v in vectors.values()))
+    if unused:
+        raise InputError(f"{sorted(unused)[0]}= is not used by --r, --omega or --R0: leave it "
+                         "out or use it in an expression")
+    return values, vectors, entries
+
+
+def read_time(texts: dict[str, str | None], words=(), strict: bool = False) -> TimeInputs:
+    """The option texts and ``NAME=QUANTITY`` words of the time path -> :class:`TimeInputs`:
+    every expression read by the closed grammar and its dimension checked (no sympy); the
+    expressions and parameters once for the same texts (:func:`_read_motion`)."""
     texts = {k: v for k, v in texts.items() if v is not None}
     for name, how in _DERIVED.items():
         if name in texts:
@@ -165,22 +192,10 @@ def read_time(texts: dict[str, str | None], words=(), strict: bool = False) -> T
                          "to evaluate it at, e.g. --t 2s")
     if not any(name in texts for name in TIME_OPTIONS):
         raise InputError("--t needs a motion: give --r, --omega or --R0 as expressions in t")
-    values, dims, entries = _parameters(words, strict)
-    vectors = {}
-    for name, (dim, words_, hint, frame) in TIME_OPTIONS.items():
-        if name not in texts:
-            continue
-        vec = read_time_vector(texts[name], dimension_of_dim(dim), label=f"--{name}",
-                               params=dims, dim_words=words_, unit_hint=hint, strict=strict)
-        vectors[name] = vec
-        entries[name] = Entry(name, texts[name], None, text=texts[name],
-                              assumed_si=bool(vec.assumed_si),
-                              description=f"{'position' if name != 'omega' else 'angular velocity'}"
-                                          f" in {frame}-frame components, in t")
-    unused = set(values) - set().union(*(v.names for v in vectors.values()))
-    if unused:
-        raise InputError(f"{sorted(unused)[0]}= is not used by --r, --omega or --R0: leave it "
-                         "out or use it in an expression")
+    values, vectors, read = _read_motion(tuple(texts.get(name) for name in TIME_OPTIONS),
+                                         tuple(words), strict)
+    values, vectors = dict(values), dict(vectors)
+    entries = {name: copy.copy(entry) for name, entry in read.items()}
     t = parse_quantity(texts["t"], TIME, label="--t", strict=strict)
     if t.uncertainty is not None:
         raise InputError("--t: an uncertainty is not propagated through a motion given in "
@@ -250,50 +265,53 @@ def compute_time(inputs: TimeInputs) -> Result:
     if s.theta is not None:
         results["theta"] = _entry("theta", s.theta)
     warnings = list(moving.warnings) + [w for w in fa.warnings if w not in moving.warnings]
-    rotation = {"none": "the frame does not turn (Omega = 0): Q = I",
-                "closed form": "the frame turns about a fixed axis n = "
-                               f"{_fmt(motion.axis, '')}by theta = int_0^t |Omega| dt "
-                               f"= {motion.derived.get('theta', [''])[0]} rad (exact)",
-                "quadrature": f"the frame turns about a fixed axis n = {_fmt(motion.axis, '')}"
-                              "by theta = int_0^t |Omega| dt (adaptive quadrature: sympy "
-                              "found no closed form)",
-                "numerical": "the frame's axis turns in time: Q' = Q [Omega]x, Q(0) = I "
-                             "integrated numerically (DOP853, rtol 1e-12)"}[motion.rotation]
     if motion.rotation == "numerical":
         warnings.append("the frame's axis of rotation turns in time: the rotation Q(t) from "
                         "the rotating to the fixed frame (theta, R, --basis fixed, v0 and a0 in "
                         "rotating components) is integrated numerically (rtol 1e-12)")
-    lines = []
-    for name, how in (("v_r", "r'"), ("a_r", "r''"), ("alpha", "Omega'"), ("v0", "R0'"),
-                      ("a0", "R0''")):
-        source = {"v_r": "r", "a_r": "r", "alpha": "omega", "v0": "R0", "a0": "R0"}[name]
-        if source in vec:
-            lines.append(f"{name} = {how} = ({', '.join(motion.derived[name])})")
-    lines.append(f"at t = {format_number(inputs.t, 6)} s: r = {_fmt(s.r, 'm')}, v_r = "
-                 f"{_fmt(s.v_r, 'm/s')}, a_r = {_fmt(s.a_r, 'm/s^2')}, Omega = "
-                 f"{_fmt(s.Omega, 'rad/s')}, alpha = {_fmt(s.alpha, 'rad/s^2')}")
-    lines.append(rotation)
-    if "R0" in vec:
-        lines.append(f"v0 = {_fmt(s.v0, 'm/s')}, a0 = {_fmt(s.a0, 'm/s^2')} (fixed "
-                     "components), Q^T times them in the rotating frame")
-    lines.append(f"v = v0 + Omega x r + v_r = {_fmt(v, 'm/s')} (rotating components)")
-    lines.append(f"a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r = "
-                 f"{_fmt(fa.a, 'm/s^2')} (rotating components)")
-    basis_words = ("fixed frame's axes (x_fixed = Q(t) x_rotating)" if fixed
-                   else "rotating frame's axes at t")
-    explanation = Explanation(
-        formula=["v_r = r', a_r = r'', alpha = Omega', v0 = R0', a0 = R0'' (exact, sympy)",
-                 "v = v0 + Omega x r + v_r",
-                 "a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
-                 "Q' = Q [Omega]x, Q(0) = I (rotating -> fixed components)"],
-        substituted=lines,
-        assumptions=["--r and --omega are rotating-frame components, --R0 fixed-frame "
-                     "components; the two frames coincide at t = 0",
-                     f"vector results are components in the {basis_words}; magnitudes do not "
-                     "depend on the basis",
-                     "t in an expression is always time (never the tonne)"],
-        reference="Gross et al., Engineering Mechanics 3, Chapter 6 (relative motion): E6.6, "
-                  "E6.7, E6.10, E6.12")
+
+    def explain() -> Explanation:  # built only when shown (never in batch)
+        rotation = {"none": "the frame does not turn (Omega = 0): Q = I",
+                    "closed form": "the frame turns about a fixed axis n = "
+                                   f"{_fmt(motion.axis, '')}by theta = int_0^t |Omega| dt "
+                                   f"= {motion.derived.get('theta', [''])[0]} rad (exact)",
+                    "quadrature": f"the frame turns about a fixed axis n = {_fmt(motion.axis, '')}"
+                                  "by theta = int_0^t |Omega| dt (adaptive quadrature: sympy "
+                                  "found no closed form)",
+                    "numerical": "the frame's axis turns in time: Q' = Q [Omega]x, Q(0) = I "
+                                 "integrated numerically (DOP853, rtol 1e-12)"}[motion.rotation]
+        lines = []
+        for name, how in (("v_r", "r'"), ("a_r", "r''"), ("alpha", "Omega'"), ("v0", "R0'"),
+                          ("a0", "R0''")):
+            source = {"v_r": "r", "a_r": "r", "alpha": "omega", "v0": "R0", "a0": "R0"}[name]
+            if source in vec:
+                lines.append(f"{name} = {how} = ({', '.join(motion.derived[name])})")
+        lines.append(f"at t = {format_number(inputs.t, 6)} s: r = {_fmt(s.r, 'm')}, v_r = "
+                     f"{_fmt(s.v_r, 'm/s')}, a_r = {_fmt(s.a_r, 'm/s^2')}, Omega = "
+                     f"{_fmt(s.Omega, 'rad/s')}, alpha = {_fmt(s.alpha, 'rad/s^2')}")
+        lines.append(rotation)
+        if "R0" in vec:
+            lines.append(f"v0 = {_fmt(s.v0, 'm/s')}, a0 = {_fmt(s.a0, 'm/s^2')} (fixed "
+                         "components), Q^T times them in the rotating frame")
+        lines.append(f"v = v0 + Omega x r + v_r = {_fmt(v, 'm/s')} (rotating components)")
+        lines.append(f"a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r = "
+                     f"{_fmt(fa.a, 'm/s^2')} (rotating components)")
+        basis_words = ("fixed frame's axes (x_fixed = Q(t) x_rotating)" if fixed
+                       else "rotating frame's axes at t")
+        return Explanation(
+            formula=["v_r = r', a_r = r'', alpha = Omega', v0 = R0', a0 = R0'' (exact, sympy)",
+                     "v = v0 + Omega x r + v_r",
+                     "a = a0 + alpha x r + Omega x (Omega x r) + 2 Omega x v_r + a_r",
+                     "Q' = Q [Omega]x, Q(0) = I (rotating -> fixed components)"],
+            substituted=lines,
+            assumptions=["--r and --omega are rotating-frame components, --R0 fixed-frame "
+                         "components; the two frames coincide at t = 0",
+                         f"vector results are components in the {basis_words}; magnitudes do not "
+                         "depend on the basis",
+                         "t in an expression is always time (never the tonne)"],
+            reference="Gross et al., Engineering Mechanics 3, Chapter 6 (relative motion): E6.6, "
+                      "E6.7, E6.10, E6.12")
+
     extra = {"basis": inputs.basis, "rotation": motion.rotation,
              "derivatives": {name: motion.derived[name] for name in
                              ("v_r", "a_r", "alpha", "v0", "a0")}}
@@ -303,7 +321,7 @@ def compute_time(inputs: TimeInputs) -> Result:
                     model=f"motion given in time ({inputs.basis} basis)", method="exact "
                     "derivatives" + ("; rotation integrated numerically"
                                      if motion.rotation == "numerical" else ""),
-                    warnings=warnings, explanation=explanation, extra=extra)
+                    warnings=warnings, explanation=explain, extra=extra)
     if inputs.mass is not None and inputs.mass.uncertainty is not None:
         result.sensitivity = lambda: _mass_sensitivity(result, m, float(inputs.mass.uncertainty))
     return result

@@ -112,19 +112,47 @@ def _check_powers(inputs) -> None:
                                       "in the coordinates")
 
 
-def _build(inputs, cdims, per_mass, state) -> Result:
+#: The derivations of this process, by coordinates, energies and signed parameters (the
+#: rows of ``eom --scene --batch`` derive one scene again and again); at most :data:`KEEP`.
+_DERIVED: dict = {}
+KEEP = 32
 
+
+def derive_system(inputs):
+    """``(symbols, expressions, System)``: Lagrange's equations of the inputs' energies,
+    every parameter a symbol (the values come in later); once per process for the same
+    coordinates, energies and signed parameters."""
+    key = (tuple(inputs.coords), tuple(sorted(inputs.texts.items())),
+           tuple(sorted(inputs.signed)))
+    if key not in _DERIVED:
+        if len(_DERIVED) >= KEEP:
+            _DERIVED.pop(next(iter(_DERIVED)))
+        _DERIVED[key] = _derive_system(inputs)
+    return _DERIVED[key]
+
+
+def _derive_system(inputs):
     import sympy
 
     from ..physics import lagrange_equations as lagrange
-    from ..physics.symbolic import Symbols, latex_of, text_of, to_sympy
+    from ..physics.symbolic import Symbols, to_sympy
 
     s = Symbols(inputs.coords, signed=inputs.signed)
     exprs = {key: to_sympy(tree, s) for key, tree in inputs.trees.items()}
     forces = None
     if any(k.startswith("Q:") for k in exprs):
         forces = [exprs.get(f"Q:{c}", sympy.Integer(0)) for c in inputs.coords]
-    system = lagrange.derive(s, exprs["T"], exprs["V"], exprs.get("D"), forces)
+    return s, exprs, lagrange.derive(s, exprs["T"], exprs["V"], exprs.get("D"), forces)
+
+
+def _build(inputs, cdims, per_mass, state) -> Result:
+
+    import sympy
+
+    from ..physics import lagrange_equations as lagrange
+    from ..physics.symbolic import latex_of, text_of
+
+    s, exprs, system = derive_system(inputs)
     warnings: list[str] = []
     inputs.warnings_out = warnings
     values = {s.param(name): v for name, v in inputs.values.items()}
@@ -142,7 +170,9 @@ def _build(inputs, cdims, per_mass, state) -> Result:
               else _in_trig(exprs, s.q[i]) for i, c in enumerate(inputs.coords)]
     numeric = all(not (e.free_symbols - set(s.q)) - set(values)
                   for e in system.static) if system.static else True
-    equilibria, stabilities, numbers = _equilibria(system, values, angles, inputs, numeric)
+    plan = _plan(system, inputs) if numeric else None
+    equilibria, stabilities, numbers = _equilibria(system, values, angles, inputs, numeric,
+                                                   plan)
     extra: dict = {}
     if not equilibria:
         warnings.append("no equilibrium: the system is never at rest" + (
@@ -171,13 +201,24 @@ def _build(inputs, cdims, per_mass, state) -> Result:
         if not M.free_symbols and not K.free_symbols:
             import numpy as np
 
-            Mn = np.array(M.tolist(), dtype=float)
-            Kn = np.array(K.tolist(), dtype=float)
+            if plan is not None:  # the numbers batch gives too (dyncalc.physics.eom_columns)
+                with np.errstate(all="ignore"):
+                    Mn, Kn = (x.reshape(1, 1) for x in plan.matrices(
+                        np.array([float(point[s.q[0]])]), _one_row(inputs.values)))
+            else:
+                Mn = np.array(M.tolist(), dtype=float)
+                Kn = np.array(K.tolist(), dtype=float)
             _matrix(results, extra, "mass_matrix", Mn, inputs.coords, cdims, per_mass, known,
                     False)
             _matrix(results, extra, "stiffness_matrix", Kn, inputs.coords, cdims, per_mass,
                     known, True)
-            omegas, stable = lagrange.frequencies(M, K)
+            if plan is not None:
+                from ..physics.eom_columns import one_frequency
+
+                omega, stable_rows = one_frequency(Mn[:, 0], Kn[:, 0])
+                omegas, stable = [float(omega[0])], bool(stable_rows[0])
+            else:
+                omegas, stable = lagrange.frequencies(M, K)
             if not stable:
                 warnings.append("the equilibrium linearised about is unstable: no natural "
                                 "frequency (a small disturbance grows)")
@@ -200,7 +241,7 @@ def _build(inputs, cdims, per_mass, state) -> Result:
                                                 description="linearised stiffness matrix")
         latex_lines += [r"M = " + latex_of(M, s), r"K = " + latex_of(K, s)]
     if inputs.state:
-        _accelerations(results, inputs, system, s, values, cdims, state)
+        _accelerations(results, inputs, system, s, values, cdims, state, plan)
     return _result(inputs, results, warnings, extra, equations, latex_lines, exprs, s,
                    per_mass)
 
@@ -212,7 +253,37 @@ def _in_trig(exprs, q) -> bool:
                for f in e.atoms(sympy.sin, sympy.cos, sympy.tan))
 
 
-def _equilibria(system, values, angles, inputs, numeric):
+def _plan(system, inputs):
+    """The numpy functions of a one-coordinate derivation with every value known, or None
+    (made once per derivation and set of parameters)."""
+    from ..physics.eom_columns import plan_of
+
+    plans = system.__dict__.setdefault("plans", {})
+    key = frozenset(inputs.values)
+    if key not in plans:
+        plans[key] = plan_of(system, list(inputs.values))
+    return plans[key]
+
+
+def constant_roots(system, angle: bool):
+    """The equilibria of a one-coordinate derivation that do not depend on the values
+    (:func:`dyncalc.physics.eom_columns.constant_equilibria`), once per derivation."""
+    from ..physics.eom_columns import constant_equilibria
+
+    roots = system.__dict__.setdefault("roots", {})
+    if angle not in roots:
+        roots[angle] = constant_equilibria(system, angle)
+    return roots[angle]
+
+
+def _one_row(values: dict) -> dict:
+    """Parameter name -> a float64 array of one row (the batch's arrays, one row long)."""
+    import numpy as np
+
+    return {name: np.array([float(v)]) for name, v in values.items()}
+
+
+def _equilibria(system, values, angles, inputs, numeric, plan=None):
     """``(points, stabilities, numbers)``: each point a list (None for a free coordinate)."""
     import sympy
 
@@ -225,13 +296,27 @@ def _equilibria(system, values, angles, inputs, numeric):
         lengths = [abs(v) for name, v in inputs.values.items()
                    if inputs.dims.get(name) == LENGTH_DIM and v != 0]
         scale = max(lengths) if lengths else 1.0
-        found = lagrange.numeric_equilibria(system, values, angles,
-                                             [scale] * len(s.q))
+        roots = constant_roots(system, angles[0]) if plan is not None else None
+        if roots is not None:  # sympy's roots, as batch takes them: no search
+            found = [[r] for r in roots]
+        else:
+            found = lagrange.numeric_equilibria(system, values, angles,
+                                                 [scale] * len(s.q))
         bounds = _bounds(inputs, values)
         for p in found:
             if any(not lo - 1e-9 <= p[i] <= hi + 1e-9 for i, (lo, hi) in bounds.items()):
                 continue
             point = [None if i in free else v for i, v in enumerate(p)]
+            if plan is not None:
+                import numpy as np
+
+                from ..physics.eom_columns import one_frequency
+
+                with np.errstate(all="ignore"):
+                    Mp, Kp = plan.matrices(np.array([float(p[0])]), _one_row(inputs.values))
+                points.append(point)
+                stabilities.append(bool(one_frequency(Mp, Kp)[1][0]))
+                continue
             M, K = lagrange.linearise(system, {s.q[i]: v for i, v in enumerate(p)})
             M, K = M.subs(values), K.subs(values)
             if M.free_symbols or K.free_symbols:
@@ -382,7 +467,7 @@ def _matrix(results, extra, name, array, coords, cdims, per_mass, known, stiffne
         extra.setdefault("matrix_units", {})[name] = units
 
 
-def _accelerations(results, inputs, system, s, values, cdims, state):
+def _accelerations(results, inputs, system, s, values, cdims, state, plan=None):
     subs = dict(values)
     for i, c in enumerate(inputs.coords):
         if c in state:
@@ -398,7 +483,16 @@ def _accelerations(results, inputs, system, s, values, cdims, state):
             shown = ", ".join(m.replace("''", "_ddot").replace("'", "_dot") + "="
                               for m in missing)
             raise InputError(f"{c}_ddot at the state needs {shown} too")
-        number = complex(value.evalf())
+        if plan is not None:  # the batch's numbers (dyncalc.physics.eom_columns)
+            import numpy as np
+
+            with np.errstate(all="ignore"):
+                number = complex(float(plan.accelerations(
+                    np.array([float(state.get(c, 0.0))]),
+                    np.array([float(state.get(c + "_dot", 0.0))]),
+                    np.array([float(state.get("t", 0.0))]), _one_row(inputs.values))[0]))
+        else:
+            number = complex(value.evalf())
         if abs(number.imag) > 1e-12 * max(1.0, abs(number.real)) or \
                 not math.isfinite(number.real):
             raise PhysicsError(f"{c}_ddot is not a finite real number at this state")

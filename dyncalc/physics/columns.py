@@ -37,19 +37,25 @@ class Columns(Record):
     ``warnings``: the one-off's warnings (the same texts on every row) of the exact rows that
     ``warned`` marks (a boolean array; ``None``: no row warns); the batch keeps together only
     rows that all warn so or all do not, and its probe checks the texts against the one-off.
+    ``extras``: where the one-off's ``extra`` differs from row to row (``coriolis``' Earth
+    directions), a function of the rows kept (an index array) giving the parts of their JSON
+    ``extra`` objects (texts every line shares and lists of one text a row, as
+    :func:`dyncalc.batch.assemble.lines` takes them); ``None``: no ``extra``.
     """
 
     _FIELDS = ("values", "exact", "model", "method", "error_estimate", "optional",
-               "warnings", "warned")
+               "warnings", "warned", "extras")
     __slots__ = _FIELDS
     __hash__ = None
 
     def __init__(self, values: dict[str, Any], exact: Any, model: str = "linear",
                  method: str = "closed-form", error_estimate: float | None = None,
-                 optional: bool = False, warnings: tuple[str, ...] = (), warned: Any = None):
+                 optional: bool = False, warnings: tuple[str, ...] = (), warned: Any = None,
+                 extras: Any = None):
         self.values, self.exact, self.model, self.method, self.error_estimate = (
             values, exact, model, method, error_estimate)
         self.optional, self.warnings, self.warned = optional, tuple(warnings), warned
+        self.extras = extras
 
 
 class TypedColumn(Record):

@@ -336,3 +336,17 @@ def _finite_term(name: str, value: float) -> float:
     if not math.isfinite(value):
         raise PhysicsError(f"{name} overflows float64 at these inputs")
     return value
+
+
+@column_kernel(coriolis_perpendicular)
+def _coriolis_perpendicular_columns(omega, vr, mass=None):
+    """:func:`coriolis_perpendicular` on columns (SI arrays), bit for bit: ``a_c = 2 Omega v_r``
+    and ``F_c = m a_c`` in the one-off's order of operations; exact where finite."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        a_c = 2.0 * np.asarray(omega, dtype=float) * np.asarray(vr, dtype=float)
+        values = {"a_c": a_c}
+        exact = np.isfinite(a_c)
+        if mass is not None:
+            values["F_c"] = np.asarray(mass, dtype=float) * a_c
+            exact = exact & np.isfinite(values["F_c"])
+    return Columns(values, exact=exact, model="magnitudes (perpendicular vectors)")

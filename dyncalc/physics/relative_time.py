@@ -202,10 +202,32 @@ def _fixed_axis(Omega: list, t: sympy.Symbol):
     return np.array(ratios) / size, f * sympy.Float(size, 17)
 
 
+#: The motions derived so far (:func:`motion_in_time`), by what they are derived from; a
+#: batch over times derives once. Bounded: the oldest goes first.
+_DERIVED: dict = {}
+_DERIVED_MAX = 32
+
+
+def _node_key(node) -> tuple:
+    """What an expression tree is, as a hashable tuple (the numbers by their SI values)."""
+    return (node.kind, node.name, node.order, node.value if node.kind == "num" else None,
+            tuple(_node_key(a) for a in node.args))
+
+
+def _vector_key(vector: TimeVector | None):
+    if vector is None:
+        return None
+    return tuple((_node_key(c.node), c.scale) for c in vector.components)
+
+
 def motion_in_time(r: TimeVector | None, omega: TimeVector | None, R0: TimeVector | None,
                    params: dict[str, float]) -> TimeMotion:
     """Derive the motion: ``v_r = r'``, ``a_r = r''``, ``alpha = Omega'``, ``v0 = R0'``,
     ``a0 = R0''`` exactly, and the rotation of the frame.
+
+    The derivation (sympy, and the numeric functions compiled from it) is done once for the
+    same expressions and parameter values and kept (:data:`_DERIVED`): every row of a batch
+    over times, and every call of the one-off, evaluates the same compiled functions.
 
     Parameters
     ----------
@@ -231,6 +253,20 @@ def motion_in_time(r: TimeVector | None, omega: TimeVector | None, R0: TimeVecto
     >>> s.r.tolist(), s.v_r.tolist(), s.a_r.tolist(), round(s.theta, 12)
     ([3.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [-0.5, 0.0, 0.0], 4.0)
     """
+    key = (_vector_key(r), _vector_key(omega), _vector_key(R0),
+           tuple(sorted((name, float(value)) for name, value in params.items())))
+    motion = _DERIVED.get(key)
+    if motion is None:
+        motion = _derive(r, omega, R0, params)
+        if len(_DERIVED) >= _DERIVED_MAX:
+            del _DERIVED[next(iter(_DERIVED))]
+        _DERIVED[key] = motion
+    return motion
+
+
+def _derive(r: TimeVector | None, omega: TimeVector | None, R0: TimeVector | None,
+            params: dict[str, float]) -> TimeMotion:
+    """:func:`motion_in_time` without the memory: sympy every time."""
     symbols = Symbols([], params, signed=params)
     t = symbols.t
     values = {symbols.param(name): sympy.Float(value, 17) for name, value in params.items()}

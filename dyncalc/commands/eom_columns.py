@@ -1,0 +1,167 @@
+"""``eom --scene NAME --batch`` on whole columns: the scene is derived once (sympy) for the
+parameters a block gives, and each row's numbers come from the numpy functions of that
+derivation (:mod:`dyncalc.physics.eom_columns`), the ones the one-off evaluates too.
+
+Taken here: one-coordinate scenes, not forced, whose equilibria do not depend on the values
+(``pendulum``: 0 and pi), every row with the first row's stabilities, the chosen equilibrium
+stable, no ``--about``. Every other row runs the one-off (:func:`scene_columns` leaves it).
+"""
+from __future__ import annotations
+
+import json
+import math
+
+from ..lazy import numpy as np
+
+__all__ = ["scene_columns", "derivation", "scene_parameters"]
+
+#: (scene, parameters given) -> the derivation's numbers (:func:`derivation`), per process.
+_CACHE: dict = {}
+
+
+class _Derived:
+    """What a block needs of one derivation: the equation texts, the :class:`Plan`, the
+    constant equilibria, the coordinate and whether it is an angle, the one-off's warnings."""
+
+    __slots__ = ("texts", "plan", "roots", "coord", "angle", "warnings")
+
+    def __init__(self, **kw):
+        for name in self.__slots__:
+            setattr(self, name, kw[name])
+
+
+def derivation(scene: str, given: frozenset) -> _Derived | None:
+    """The scene derived with every parameter a symbol (once per process and set of
+    parameters given), or ``None`` where the vectorised path does not take it."""
+    key = (scene, given)
+    if key not in _CACHE:
+        _CACHE[key] = _derive(scene, given)
+    return _CACHE[key]
+
+
+def _derive(scene: str, given: frozenset):
+    from ..physics.eom_columns import plan_of
+    from .eom import read
+    from .eom_results import constant_roots, derive_system
+
+    inputs = read({}, (), scene=scene)  # the defaults: the derivation does not use values
+    if len(inputs.coords) != 1 or any(k.startswith("Q:") for k in inputs.trees) \
+            or inputs.domain:
+        return None
+    names = set(inputs.values) | set(given)
+    s, _exprs, system = derive_system(inputs)
+    plan = plan_of(system, names)
+    if plan is None:
+        return None
+    angle = inputs.coords[0] in inputs.angles
+    roots = constant_roots(system, angle)
+    if not roots:
+        return None
+    from ..physics.symbolic import text_of
+
+    texts = [f"{c}'' = {text_of(a)}" for c, a in zip(inputs.coords, system.accelerations)]
+    warnings = ("omega_i are the undamped natural frequencies (D is left out of them)",) \
+        if "D" in inputs.trees else ()
+    return _Derived(texts=texts, plan=plan, roots=roots, coord=inputs.coords[0],
+                    angle=angle, warnings=warnings)
+
+
+def scene_parameters(scene: str) -> dict:
+    """Column key -> :class:`~dyncalc.commands.record.Parameter` of the columns the
+    vectorised path reads: the scene's parameters and the state (coordinate, rate, ``t``)."""
+    from ..scenes.energies import energies
+    from ..units import ANGLE, ANGULAR_RATE, LENGTH, TIME, VELOCITY
+    from .record import Parameter
+
+    record = energies(scene)
+    out = {p.name: Parameter(p.name, p.dim, p.description) for p in record.params}
+    for c in record.coords:
+        angle = c in record.angles
+        out[c] = Parameter(c, ANGLE if angle else LENGTH, "coordinate")
+        out[c + "_dot"] = Parameter(c + "_dot", ANGULAR_RATE if angle else VELOCITY, "rate")
+    out["t"] = Parameter("t", TIME, "time")
+    return out
+
+
+def _defaults(record, given, n: int):
+    """SI arrays of the parameters not given, from their defaults; ``None`` where one has
+    none (the one-off keeps it a symbol)."""
+    from ..units import parse_quantity
+
+    out = {}
+    for p in record.params:
+        if p.name in given:
+            continue
+        if p.default is None:
+            return None
+        out[p.name] = np.full(n, parse_quantity(p.default, p.dim, label=p.name).si)
+    return out
+
+
+def scene_columns(arrays: dict, settings: dict):
+    """The adapter of ``eom --scene --batch``: SI columns in, a
+    :class:`~dyncalc.physics.columns.Columns` out (or ``None``: the one-off answers)."""
+    from ..physics.columns import Columns
+    from ..physics.eom_columns import one_frequency
+    from ..scenes.energies import energies
+    from .eom_results import _equilibria_text
+
+    scene = settings.get("scene")
+    if scene is None or settings.get("about") is not None:
+        return None
+    record = energies(scene)
+    params = {p.name: p for p in record.params}
+    given = frozenset(k for k in arrays if k in params)
+    d = derivation(scene, given)
+    if d is None:
+        return None
+    n = len(next(iter(arrays.values())))
+    values = _defaults(record, given, n)
+    if values is None:
+        return None
+    exact = np.ones(n, dtype=bool)
+    for name in given:
+        column = np.asarray(arrays[name], dtype=float)
+        values[name] = column
+        if not params[name].signed:  # the one-off's constraints: refused rows go there
+            exact &= (column >= 0) if name in ("kappa", "b") else (column > 0)
+        exact &= np.isfinite(column)
+    state = [k for k in arrays if k not in params]
+    with np.errstate(all="ignore"):
+        stable = []
+        for root in d.roots:
+            M, K = d.plan.matrices(np.full(n, root), values)
+            stable.append(one_frequency(M, K)[1])
+            exact &= np.isfinite(M) & np.isfinite(K)
+        first = int(np.argmax(exact)) if exact.any() else 0
+        pattern = [bool(s[first]) for s in stable]
+        for s, want in zip(stable, pattern):
+            exact &= s == want
+        if not any(pattern):
+            return None  # the one-off linearises about an unstable one: warnings, no omega
+        chosen = d.roots[pattern.index(True)]
+        M, K = d.plan.matrices(np.full(n, chosen), values)
+        omega, _stable = one_frequency(M, K)
+        out = {"eom_1": np.full(n, d.texts[0], dtype=object),
+               "equilibria": np.full(n, _equilibria_text([d.coord], [[r] for r in d.roots],
+                                                         pattern, True, {}), dtype=object)}
+        shape = (n, 1, 1) if settings.get("json") else (n,)
+        out["mass_matrix"], out["stiffness_matrix"] = M.reshape(shape), K.reshape(shape)
+        out["omega_1"], out["f_1"] = omega, omega / (2 * math.pi)
+        exact &= np.isfinite(omega)
+        if state:
+            c = d.coord
+            if c not in arrays or c + "_dot" not in arrays or (d.plan.uses_t
+                                                               and "t" not in arrays):
+                return None  # the one-off asks for the rest of the state
+            t = arrays.get("t", np.zeros(n))
+            acc = d.plan.accelerations(np.asarray(arrays[c], dtype=float),
+                                       np.asarray(arrays[c + "_dot"], dtype=float),
+                                       np.asarray(t, dtype=float), values)
+            exact &= np.isfinite(acc) & np.isfinite(arrays[c]) & np.isfinite(arrays[c + "_dot"])
+            out[f"{c}_ddot"] = acc
+    extra = {"equilibria": [{d.coord: r, "stable": s} for r, s in zip(d.roots, pattern)],
+             "about": {d.coord: chosen}}
+    return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
+                   warnings=d.warnings, warned=np.ones(n, dtype=bool) if d.warnings else None,
+                   extras=lambda _keep, text=json.dumps(extra): [text])

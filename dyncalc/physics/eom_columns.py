@@ -1,0 +1,126 @@
+"""The numbers of a one-coordinate ``eom`` derivation on arrays: the linearised mass and
+stiffness, the natural frequency and the acceleration at a state, each a numpy function of
+the parameters (``sympy.lambdify`` of the symbolic derivation, once per derivation).
+
+The one-off (:mod:`dyncalc.commands.eom_results`) and ``eom --scene --batch`` both evaluate
+these functions on float64 arrays (the one-off on arrays of one row), so they agree bit for
+bit; the equations themselves (their text) do not depend on the values.
+
+For ``q'' = a(q, q', t)`` linearised about ``q0``:
+
+.. math:: M = \\partial^2 T / \\partial q'^2 |_{q_0}, \\quad
+          K = \\partial E_{static} / \\partial q |_{q_0}, \\quad
+          \\omega = \\sqrt{K / M}\\ (K / M > 0)
+
+Reference: Gross et al., *Engineering Mechanics 3*, 2nd ed., 4.3.
+"""
+from __future__ import annotations
+
+import math
+
+import sympy
+
+from ..lazy import numpy as np
+from . import lagrange_equations as lagrange
+
+__all__ = ["Plan", "plan_of", "one_frequency", "constant_equilibria"]
+
+
+class Plan:
+    """The numpy functions of one derivation with one coordinate: ``names`` (the parameters,
+    in the order the functions take them after the coordinate), ``mass(q, *p)``,
+    ``stiffness(q, *p)`` and ``acceleration(q, q', t, *p)``; ``uses_t``: whether the
+    acceleration depends on ``t``."""
+
+    __slots__ = ("names", "mass", "stiffness", "acceleration", "uses_t")
+
+    def __init__(self, names, mass, stiffness, acceleration, uses_t):
+        self.names, self.mass, self.stiffness = names, mass, stiffness
+        self.acceleration, self.uses_t = acceleration, uses_t
+
+    def matrices(self, q, params: dict):
+        """``(M, K)`` at ``q`` (arrays) for ``params`` (name -> array of the same length)."""
+        args = [params[name] for name in self.names]
+        return _array(self.mass(q, *args), q), _array(self.stiffness(q, *args), q)
+
+    def accelerations(self, q, qd, t, params: dict):
+        """``q''`` at the state (arrays)."""
+        args = [params[name] for name in self.names]
+        return _array(self.acceleration(q, qd, t, *args), q)
+
+
+def _array(value, like):
+    """A lambdified function's answer as a float64 array of ``like``'s length (a constant
+    expression gives a scalar)."""
+    out = np.asarray(value, dtype=float)
+    return out if out.shape == np.shape(like) else np.full(np.shape(like), float(out))
+
+
+def plan_of(system, names) -> Plan | None:
+    """The :class:`Plan` of a derivation (``names``: the parameters given a value), or
+    ``None``: more than one coordinate, a forcing in ``t``, a coordinate free of the static
+    equations, or a parameter without a value in ``M`` or ``K``."""
+    s = system.symbols
+    if len(s.q) != 1 or system.forced or lagrange.free_coordinates(system):
+        return None
+    q = s.q[0]
+    rest = {s.qd[0]: 0, s.qdd[0]: 0}
+    m = system.mass[0, 0].subs(rest)
+    k = sympy.diff(system.static[0], q)
+    names = sorted(names)
+    params = [s.param(name) for name in names]
+    if (m.free_symbols | k.free_symbols) - set(params) - {q}:
+        return None
+    acc = system.accelerations[0]
+    return Plan(names, sympy.lambdify([q, *params], m, "numpy"),
+                sympy.lambdify([q, *params], k, "numpy"),
+                sympy.lambdify([q, s.qd[0], s.t, *params], acc, "numpy"), acc.has(s.t))
+
+
+def one_frequency(M, K):
+    """``(omega, stable)`` arrays of ``M q'' + K q = 0``: ``lam = K / M``; stable where
+    ``lam >= -1e-10 |lam|`` (the rule of :func:`lagrange_equations.frequencies`),
+    ``omega = sqrt(lam)`` where ``lam > 1e-10 |lam|``, else 0.
+
+    >>> import numpy as np
+    >>> one_frequency(np.array([2.0]), np.array([200.0]))
+    (array([10.]), array([ True]))
+    """
+    with np.errstate(all="ignore"):
+        lam = K / M
+        tol = 1e-10 * np.abs(lam)
+        stable = lam >= -tol
+        omega = np.where(lam > tol, np.sqrt(np.where(lam > tol, lam, 0.0)), 0.0)
+    return omega, stable
+
+
+def constant_equilibria(system, angle: bool) -> list[float] | None:
+    """The equilibria of a one-coordinate derivation when they do not depend on the values
+    (sympy's roots are numbers), as the numeric search gives them (angles wrapped to
+    (-pi, pi], sorted by size, the positive first); ``None`` otherwise."""
+    q = system.symbols.q[0]
+    equations = [e for e in system.static if e != 0]
+    if not equations or not lagrange.solvable(equations, [q]):
+        return None  # (sympy would list the rest position only: the search finds the rest)
+    found = lagrange.symbolic_equilibria(system)
+    if not found:
+        return None
+    points = []
+    for f in found:
+        value = sympy.sympify(f.get(q, 0))
+        if value.free_symbols:
+            return None
+        x = float(value)
+        if not math.isfinite(x):
+            return None
+        if angle:
+            x = math.remainder(x, 2 * math.pi)
+            if x <= -math.pi + 1e-12:
+                x = math.pi
+        if abs(x) < 1e-12:
+            x = 0.0
+        if any(abs(x - y) <= 1e-7 * max(1.0, abs(x)) for y in points):
+            continue
+        points.append(x)
+    points.sort(key=lambda v: (abs(v), -v))
+    return points
