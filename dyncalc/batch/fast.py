@@ -22,7 +22,8 @@ class FastBlock:
     """Rows of a chunk computed together: their positions in the chunk, the result arrays (SI,
     in the order the one-off gives them; vectors as rows of an (n, 3) array, words as str
     arrays) and their dimensions (``None`` for words), and for JSON the constant part of each
-    line (``head``), each row's ``inputs`` object text and the ``extra`` object text;
+    line (``head``), each row's ``inputs`` object text and the ``extra`` object text (or a
+    list of one text per row);
     ``warnings``: the one-off's warnings, the same on every row of the block."""
 
     __slots__ = ("rows", "values", "dims", "head", "inputs", "extra", "warnings")
@@ -251,8 +252,11 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
         values = {name: array[keep] for name, array in values.items()}
     dims = {name: result_kind(name).dim for name in values}
     head = texts = None
-    extra = "{}"
-    if out.error_estimate is not None:
+    extra: Any = "{}"
+    if isinstance(out.error_estimate, np.ndarray):  # one per row (the shell's quadrature)
+        extra = _per_row_estimates(out.error_estimate[keep] if len(keep) != len(good)
+                                   else out.error_estimate) if want_json else "{}"
+    elif out.error_estimate is not None:
         extra = json.dumps({"error_estimate": out.error_estimate})
     if want_json:
         head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
@@ -260,6 +264,14 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
                 f'"method": {json.dumps(out.method)}')
         texts = _input_texts(inputs, keep, words)
     return FastBlock(rows, values, dims, head, texts, extra)
+
+
+def _per_row_estimates(estimates) -> list[str]:
+    """The ``extra`` object text of each row, ``{"error_estimate": e}`` (finite floats, as
+    ``json.dumps`` writes them)."""
+    from .floats import reprs
+
+    return ['{"error_estimate": ' + text + "}" for text in reprs(estimates)]
 
 
 def _as_typed(plan: _Plan, arguments: dict, inputs: list, cache: dict) -> dict:

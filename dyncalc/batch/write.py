@@ -216,7 +216,7 @@ class _Writer:
             return ['{"line": ', np.asarray(numbers, dtype=np.int64),
                     ", " + block.head + ', "inputs": {', *block.inputs, '}, "results": {',
                     *parts, '}, "warnings": ' + json.dumps(list(block.warnings))
-                    + ', "extra": ' + block.extra + "}"]
+                    + ', "extra": ', *_extra_parts(block.extra)]
         parts = [chunk.echo(None if whole else rows)]
         for name in self.columns:
             parts += [","] if name not in shown else [",", *shown[name][0]]
@@ -265,6 +265,14 @@ class _Writer:
                                f"{entry.dim.name if entry.dim else 'word'}); give such rows a "
                                "file of their own") from None
         return _csv_lines([row])[0]
+
+
+def _extra_parts(extra) -> list:
+    """The parts of the ``extra`` objects and the closing brace: one text for the block, or
+    one per row of the block (a list)."""
+    if isinstance(extra, str):
+        return [extra + "}"]
+    return [extra, "}"]
 
 
 def _number_parts(array, as_json: bool) -> list:
