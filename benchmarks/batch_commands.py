@@ -38,6 +38,13 @@ def _chain(r) -> list[str]:
     return [f'"[[{m1!r},0],[0,{m2!r}]]"', f'"[[{k1 + k2!r},{-k2!r}],[{-k2!r},{k2!r}]]"']
 
 
+def _annulus(r) -> list[str]:
+    """A disk and a concentric hole (``-disk``), lighter and smaller: a valid composite."""
+    m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
+    return ['"disk(m=%.6g kg, r=%.6g m)"' % (m, a),
+            '"-disk(m=%.6g kg, r=%.6g m)"' % (m * r.uniform(0.05, 0.3), a * r.uniform(0.1, 0.6))]
+
+
 CASES = [
     ("natural-frequency mass-spring", ["natural-frequency"], "k [N/m],m [kg]",
      lambda r: [f"{r.uniform(10, 1e4):.6g}", f"{r.uniform(0.1, 50):.6g}"]),
@@ -81,6 +88,7 @@ CASES = [
                 f"{r.uniform(1, 1e3):.6g}", f"{r.uniform(1, 300):.6g}"]),
     ("inertia one disk a row", ["inertia"], "b1",
      lambda r: ['"disk(m=%.6g kg, r=%.6g m)"' % (r.uniform(0.1, 50), r.uniform(0.01, 2))]),
+    ("inertia composite", ["inertia"], "b1,b2", lambda r: _annulus(r)),
     ("modes two-mass chain", ["modes"], "M,K", lambda r: _chain(r)),
     ("coriolis", ["coriolis"], "omega [rad/s],vr [m/s]",
      lambda r: ['"0,0,%.6g"' % r.uniform(0.1, 5), '"%.6g,%.6g,0"' % (r.uniform(-3, 3),

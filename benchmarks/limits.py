@@ -42,6 +42,8 @@ LIMITS = {
     "forced-response": [str(LIMIT / "forced_response.py")],
     # round 4 (issue 17): inertia and modes
     "inertia one disk a row": [str(LIMIT / "inertia.py")],
+    # round 6: composites of centred bodies (issue 17's brief, batchrest3)
+    "inertia composite": [str(LIMIT / "inertia_composite.py")],
     # round 5: forced-response rows with --t (issue 17's brief, batchrest2)
     "forced-response total response": [str(LIMIT / "forced_total.py")],
     "forced-response undamped": [str(LIMIT / "forced_undamped.py")],

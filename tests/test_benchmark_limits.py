@@ -30,7 +30,8 @@ def test_every_command_of_the_brief_has_a_limit_script():
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
                       "coriolis", "forced-response",
-                      "inertia one disk a row", "modes two-mass chain",
+                      "inertia one disk a row", "inertia composite",
+                      "modes two-mass chain",
                       "forced-response total response",
                       "forced-response undamped"}
 
