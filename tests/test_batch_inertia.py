@@ -157,7 +157,8 @@ def _centred(rng, hole: bool) -> str:
 @pytest.mark.parametrize("seed", [4, 5])
 def test_centred_composites_are_the_one_off_byte_for_byte(tmp_path, as_json, seed):
     """Composites of two or three bodies at the origin (holes among them, holes that cut too
-    much, extremes, empty cells between the bodies), through the composite kernel."""
+    much, extremes, empty cells between the bodies; world axes, signed, and other axes),
+    through the composite kernel."""
     rng = random.Random(seed)
     rows = []
     for _ in range(200):
@@ -166,7 +167,8 @@ def test_centred_composites_are_the_one_off_byte_for_byte(tmp_path, as_json, see
             cells[rng.randrange(3)] = ""
         if rng.random() < 0.2:  # a hole the size of the body: a total mass of zero
             cells = ['"disk(m=1kg, r=0.2m)"', '"-disk(m=1kg, r=0.1m)"', ""]
-        rows.append(",".join(cells) + ",")
+        axis = rng.choice(["", "", "z", " -x", "+y", "(1, 1, 0)", "z through (0.1, 0, 0) m"])
+        rows.append(",".join(cells) + "," + (f'"{axis}"' if "," in axis else axis))
     rows += ['"disk(m=4kg, r=0.2m)","-disk(m=1kg, r=0.1m)",,z',
              '"disk(m=4kg, r=0.2m)","-disk(m=1kg, r=0.1m, at=(0.05, 0, 0) m)",,']
     path = tmp_path / "composites.csv"
@@ -208,3 +210,21 @@ def test_a_disk_with_a_concentric_hole_is_the_textbook_annulus(tmp_path):
     assert results["m"]["value"] == 3.0
     assert results["J_3"]["value"] == pytest.approx(0.075, rel=1e-15)
     assert results["J_1"]["value"] == pytest.approx(4 * 0.04 / 4 - 0.01 / 4, rel=1e-15)
+
+
+def test_world_axis_rows_take_the_vectorised_path_with_the_textbook_moment():
+    """``axis`` x, -y, z through the origin: J_axis is the diagonal element (a disk: m r^2/4
+    across, m r^2/2 along z; Table 3.1) and k = sqrt(J_axis / m)."""
+    from dyncalc.batch.fast_inertia import inertia_fast
+    from dyncalc.batch.header import read_header
+
+    spec = InertiaRows()
+    table = [['disk(m=4kg, r=0.2m)'] * 3, ['-disk(m=1kg, r=0.1m)'] * 3, ["x", " -y", "z"]]
+    blocks = inertia_fast(spec, read_header(1, ["b1", "b2", "axis"], spec), table, True, {})
+    assert sorted(i for b in blocks for i in b.rows.tolist()) == [0, 1, 2]
+    found = {int(b.rows[0]): b.values for b in blocks}
+    along, across = 4 * 0.04 / 2 - 0.01 / 2, 4 * 0.04 / 4 - 0.01 / 4
+    for i, expected in enumerate([across, across, along]):
+        assert found[i]["J_axis"][0] == pytest.approx(expected, rel=1e-15)
+        assert found[i]["radius_of_gyration"][0] == pytest.approx(math.sqrt(expected / 3.0),
+                                                                  rel=1e-15)

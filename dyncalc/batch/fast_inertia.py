@@ -83,12 +83,14 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
     bodies = [col for col in columns if spec.is_body(col.key)]
     if not bodies or any(col.unit for col in bodies):
         return []
-    others = [table[col.index] for col in columns if not spec.is_body(col.key)]
+    axes = [list(table[col.index]) for col in columns if not spec.is_body(col.key)]
     body_cells = [list(table[col.index]) for col in bodies]
     n = len(body_cells[0])
     candidates = range(n)
-    if any("".join(column).strip() for column in others):  # rows with an axis
-        candidates = [i for i in candidates if not any(c[i].strip() for c in others)]
+    axis_cells = axes[0] if axes else [""] * n
+    if "".join(axis_cells).strip():  # rows with an axis: a world axis (x, -y, ...) only
+        candidates = [i for i in candidates if axis_cells[i].strip().lstrip("+-").strip()
+                      in ("", "x", "y", "z")]
     if not candidates or any("\n" in "".join(cells) for cells in body_cells):
         return []
     whole = len(candidates) == n
@@ -97,7 +99,7 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
         picked = cells if whole else [cells[i] for i in candidates]
         templates.append([t if t.strip() else "" for t in
                           _VALUE_RE.sub("#", "\n".join(picked)).split("\n")])
-    keys = list(zip(*templates))
+    keys = list(zip(*templates, axis_cells if whole else [axis_cells[i] for i in candidates]))
     groups: dict[tuple, list[int]] = {}
     if keys.count(keys[0]) == len(keys):
         groups[keys[0]] = list(candidates)
@@ -106,6 +108,7 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
             groups.setdefault(key, []).append(i)
     blocks = []
     for key, members in groups.items():
+        key, axis = key[:-1], key[-1]
         used = [j for j, template in enumerate(key) if template]
         shapes = [_template(key[j], cache) for j in used]
         if not used or any(shape is None for shape in shapes):
@@ -120,7 +123,7 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
             parts.append((bodies[j], shape, found))
         else:
             block = _block(spec, parts, np.asarray(members, dtype=np.intp), body_cells,
-                           bodies, want_json, cache)
+                           bodies, axis, want_json, cache)
             if block is not None:
                 blocks.append(block)
     return blocks
@@ -153,9 +156,10 @@ def _dim(kind: str, key: str):
     return DENSITY[DENSITY_KIND[kind]] if key == "rho" else LENGTH
 
 
-def _block(spec, parts, rows, body_cells, bodies, want_json, cache):
+def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     """One template's rows: ``parts`` holds each body's column, template shape and number
-    literals, in the order of the row's bodies (``b1``, ``b2``, ... of the one-off)."""
+    literals, in the order of the row's bodies (``b1``, ``b2``, ... of the one-off);
+    ``axis`` the rows' axis cell (a world axis, perhaps signed, or empty)."""
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_columns import centred_composite
 
@@ -189,6 +193,9 @@ def _block(spec, parts, rows, body_cells, bodies, want_json, cache):
     if out is None:
         return None
     good &= out.exact
+    if axis.strip():
+        _about_world_axis(out, axis)
+        good &= out.values["J_axis"] > 0.0   # a zero moment: the one-off's signed zero
     if not good.any():
         return None
     keep = np.flatnonzero(good)
@@ -196,18 +203,36 @@ def _block(spec, parts, rows, body_cells, bodies, want_json, cache):
     row = int(rows[first])
     texts = {column.key: body_cells[bodies.index(column)][row] for column, _s, _l in parts}
     labels = {column.key: column.name for column, _s, _l in parts}
+    if axis.strip():
+        texts["axis"], labels["axis"] = axis.strip(), "axis"
     probe = _probe(spec, texts, labels, out, first)
-    if probe is None or (want_json and _entries(reads, np.array([first]), 1)[0]
-                         != _probe_inputs(probe)):
+    if probe is None:
         return None
+    tail = ""
+    if want_json:  # the axis entry, the same on every row: the probe's
+        mine, theirs = _entries(reads, np.array([first]), 1)[0], _probe_inputs(probe)
+        tail = theirs[len(mine):]
+        if not theirs.startswith(mine) or (tail and not tail.startswith(', "axis": ')):
+            return None
     values = {name: array[keep] for name, array in out.values.items()}
     result_dims = {name: entry.dim for name, entry in probe.results.items()}
     head = inputs = None
     if want_json:
         head = (f'"schema": "dyncalc/2", "command": "inertia", "scene": null, '
                 f'"model": {json.dumps(out.model)}, "method": {json.dumps(probe.method)}')
-        inputs = _entries(reads, keep, None)
+        inputs = _entries(reads, keep, None) + ([tail] if tail else [])
     return FastBlock(rows[keep], values, result_dims, head, inputs)
+
+
+def _about_world_axis(out, axis: str) -> None:
+    """Add ``J_axis`` and ``radius_of_gyration`` about a world axis through the origin (the
+    centre of mass of a centred composite): the one-off's ``n^T (J_C + 0) n`` with ``n`` a
+    signed unit axis is the diagonal element exactly (every other product is a zero)."""
+    k = "xyz".index(axis.strip().lstrip("+-").strip())
+    J = np.ascontiguousarray(out.values["J_C"][:, k, k])
+    with np.errstate(all="ignore"):
+        out.values["J_axis"] = J
+        out.values["radius_of_gyration"] = np.sqrt(J / out.values["m"])
 
 
 def _probe(spec, texts: dict, labels: dict, out, i: int):
