@@ -34,6 +34,8 @@ __all__ = ["bracketed_columns", "FINE_POINTS"]
 
 #: Points the one-off adds inside an interval with a sign change (FINE_ANGLE - 1).
 FINE_POINTS = 7
+#: Rows sampled on the whole grid at a time (about 100 samples each: flat memory).
+SLICE = 256
 
 
 def _grid(unknown) -> list[float]:
@@ -71,46 +73,15 @@ def bracketed_columns(scene, kernel, unknown, target: str, arguments: dict, goal
         return np.where(ok, out.values[target], np.nan), ok, out
 
     xs = np.array(_grid(unknown)[1:])   # the first (0) is on the small-angle model
-    m = len(xs)
     every = np.arange(n)
+    exact = np.zeros(n, dtype=bool)
+    a, b = np.ones(n), np.ones(n)
     with np.errstate(all="ignore"):
-        flat, fine, _ = y(np.tile(xs, n), np.repeat(every, m))
-        Y = flat.reshape(n, m)
-        answered = (fine & np.isfinite(flat)).reshape(n, m)
-        last = answered.sum(axis=1) - 1                    # the last sample answered ...
-        exact = answered[:, 0] & (last >= 1)
-        exact &= (answered == (np.arange(m)[None, :] <= last[:, None])).all(axis=1)  # a prefix
-        inside = np.arange(m - 1)[None, :] < last[:, None]
-        steps = np.diff(Y, axis=1)
-        rising = ((steps > 0) | ~inside).all(axis=1)
-        falling = ((steps < 0) | ~inside).all(axis=1)
-        exact &= rising | falling
-        g = Y - goal[:, None]
-        exact &= ~((g == 0) & (np.arange(m)[None, :] <= last[:, None])).any(axis=1)
-        change = ((g[:, :-1] > 0) != (g[:, 1:] > 0)) & inside
-        exact &= change.sum(axis=1) == 1
-        i = np.argmax(change, axis=1)
-        exact &= i + 1 < last                              # not next to the scene's end
+        for start in range(0, n, SLICE):  # a slice of rows at a time: flat memory
+            part = every[start:start + SLICE]
+            exact[part], a[part], b[part] = _bracket(y, xs, part, goal[part], FINE_ANGLE)
         rows = np.flatnonzero(exact)
-        lo_x, hi_x = xs[i[rows]], xs[i[rows] + 1]
-        # the one-off's refinement of the interval: x + (x' - x) j / FINE_ANGLE
-        points = [lo_x] + [lo_x + (hi_x - lo_x) * j / FINE_ANGLE
-                           for j in range(1, FINE_POINTS + 1)] + [hi_x]
-        X = np.column_stack(points)
-        inner, ok, _ = y(X[:, 1:-1].ravel(), np.repeat(rows, FINE_POINTS))
-        V = np.column_stack([Y[rows, i[rows]], inner.reshape(len(rows), FINE_POINTS),
-                             Y[rows, i[rows] + 1]])
-        good = ok.reshape(len(rows), FINE_POINTS).all(axis=1) & np.isfinite(V).all(axis=1)
-        up = rising[rows]
-        step = np.diff(V, axis=1)
-        good &= np.where(up, (step > 0).all(axis=1), (step < 0).all(axis=1))
-        G = V - goal[rows, None]
-        good &= ~(G == 0).any(axis=1)
-        sub = np.argmax((G[:, :-1] > 0) != (G[:, 1:] > 0), axis=1)
-        pick = np.arange(len(rows))
-        a, b = X[pick, sub], X[pick, sub + 1]
-        exact[rows[~good]] = False
-        rows, a, b = rows[good], a[good], b[good]
+        a, b = a[rows], b[rows]
         missed = np.zeros(n, dtype=bool)
 
         def f(x, which):
@@ -130,3 +101,46 @@ def bracketed_columns(scene, kernel, unknown, target: str, arguments: dict, goal
             return None
         exact &= fine & np.isfinite(value)
     return ClosedForm(x, out, exact, np.full(n, "", dtype=object))
+
+
+def _bracket(y, xs, part, goal, fine: int):
+    """``(exact, a, b)`` of the rows ``part``: whether the one-off's samples give exactly one
+    sign change, provably (see the module), and its refined bracket ``[a, b]``."""
+    n, m = len(part), len(xs)
+    flat, ok, _ = y(np.tile(xs, n), np.repeat(part, m))
+    Y = flat.reshape(n, m)
+    answered = (ok & np.isfinite(flat)).reshape(n, m)
+    last = answered.sum(axis=1) - 1                    # the last sample answered ...
+    exact = answered[:, 0] & (last >= 1)
+    exact &= (answered == (np.arange(m)[None, :] <= last[:, None])).all(axis=1)  # a prefix
+    inside = np.arange(m - 1)[None, :] < last[:, None]
+    steps = np.diff(Y, axis=1)
+    rising = ((steps > 0) | ~inside).all(axis=1)
+    exact &= rising | ((steps < 0) | ~inside).all(axis=1)
+    g = Y - goal[:, None]
+    exact &= ~((g == 0) & (np.arange(m)[None, :] <= last[:, None])).any(axis=1)
+    change = ((g[:, :-1] > 0) != (g[:, 1:] > 0)) & inside
+    exact &= change.sum(axis=1) == 1
+    i = np.argmax(change, axis=1)
+    exact &= i + 1 < last                              # not next to the scene's end
+    a, b = np.ones(n), np.ones(n)
+    rows = np.flatnonzero(exact)
+    if not len(rows):
+        return exact, a, b
+    lo_x, hi_x = xs[i[rows]], xs[i[rows] + 1]
+    # the one-off's refinement of the interval: x + (x' - x) j / fine
+    X = np.column_stack([lo_x] + [lo_x + (hi_x - lo_x) * j / fine
+                                  for j in range(1, FINE_POINTS + 1)] + [hi_x])
+    inner, ok, _ = y(X[:, 1:-1].ravel(), np.repeat(part[rows], FINE_POINTS))
+    V = np.column_stack([Y[rows, i[rows]], inner.reshape(len(rows), FINE_POINTS),
+                         Y[rows, i[rows] + 1]])
+    good = ok.reshape(len(rows), FINE_POINTS).all(axis=1) & np.isfinite(V).all(axis=1)
+    step = np.diff(V, axis=1)
+    good &= np.where(rising[rows], (step > 0).all(axis=1), (step < 0).all(axis=1))
+    G = V - goal[rows, None]
+    good &= ~(G == 0).any(axis=1)
+    sub = np.argmax((G[:, :-1] > 0) != (G[:, 1:] > 0), axis=1)
+    pick = np.arange(len(rows))
+    exact[rows] = good
+    a[rows], b[rows] = X[pick, sub], X[pick, sub + 1]
+    return exact, a, b
