@@ -37,6 +37,8 @@ __all__ = ["shell_amplitude_columns"]
 
 #: The largest node count (the one-off's cap).
 MAX_NODES = 1024
+#: Nodes (rows times nodes) evaluated at a time.
+NODES_AT_ONCE = 1 << 18
 
 
 def _k2(phi0: float) -> float:
@@ -56,13 +58,18 @@ def exact_mean(k2, n: int, c: float):
     ([True], True)
     """
     s2 = np.sin(np.arange(n) * (math.pi / n)) ** 2   # the one-off's grid, the same call
-    x = k2[:, None] * s2[None, :]
-    nodes = np.sqrt((1.0 + c * x) / (1.0 - x))
-    ok = ((nodes >= 1.0) & (nodes < 4.0)).all(axis=1)
-    nodes = np.where(ok[:, None], nodes, 1.0)
-    scaled = np.ldexp(nodes, 52).astype(np.uint64)   # exact: integers below 2^54
-    total = scaled.sum(axis=1, dtype=np.uint64)      # exact: below 2^64
-    return np.ldexp(total.astype(np.float64), -52) / n, ok
+    mean, ok = np.empty(len(k2)), np.empty(len(k2), dtype=bool)
+    step = max(1, NODES_AT_ONCE // n)
+    for start in range(0, len(k2), step):            # flat memory however many nodes
+        part = slice(start, start + step)
+        x = k2[part, None] * s2[None, :]
+        nodes = np.sqrt((1.0 + c * x) / (1.0 - x))
+        ok[part] = good = ((nodes >= 1.0) & (nodes < 4.0)).all(axis=1)
+        nodes = np.where(good[:, None], nodes, 1.0)
+        scaled = np.ldexp(nodes, 52).astype(np.uint64)   # exact: integers below 2^54
+        total = scaled.sum(axis=1, dtype=np.uint64)      # exact: below 2^64
+        mean[part] = np.ldexp(total.astype(np.float64), -52) / n
+    return mean, ok
 
 
 def _quadrature(k2, rtol: float, c: float, floor: float, node_rounding: float):
