@@ -274,7 +274,10 @@ def _half_cylinder_shell_columns(r, g, amplitude=None, method: str = "auto",
     if amplitude is not None:
         from .shell_columns import shell_amplitude_columns
 
-        return shell_amplitude_columns(r, g, amplitude, method, rtol)
+        return shell_amplitude_columns(r, g, amplitude, method, rtol, {
+            "PI_MINUS_2": PI_MINUS_2, "QUAD_FLOOR": QUAD_FLOOR,
+            "SHELL_NODE_ROUNDING": SHELL_NODE_ROUNDING,
+            "SHELL_OUTPUT_ROUNDING": SHELL_OUTPUT_ROUNDING})
     if method not in ("auto", "linear"):
         return None
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):

@@ -95,12 +95,15 @@ def _quadrature(k2, rtol: float, c: float, floor: float, node_rounding: float):
     return factor, error, ok
 
 
-def shell_amplitude_columns(r, g, amplitude: TypedColumn, method: str, rtol: float
-                            ) -> Columns | None:
+def shell_amplitude_columns(r, g, amplitude: TypedColumn, method: str, rtol: float,
+                            constants: dict) -> Columns | None:
     """The quadrature rows of the shell at an amplitude: ``r`` (m), ``g`` (m/s^2), the
-    amplitude as typed. ``None`` for the methods the kernel does not take (linear, ode)."""
-    from .nonlinear import PI_MINUS_2, QUAD_FLOOR, SHELL_NODE_ROUNDING, SHELL_OUTPUT_ROUNDING
-
+    amplitude as typed; ``constants`` the one-off's (:mod:`~dyncalc.physics.nonlinear`'s
+    ``PI_MINUS_2``, ``QUAD_FLOOR``, ``SHELL_NODE_ROUNDING``, ``SHELL_OUTPUT_ROUNDING``, by
+    those names). ``None`` for the methods the kernel does not take (linear, ode)."""
+    PI_MINUS_2, QUAD_FLOOR = constants["PI_MINUS_2"], constants["QUAD_FLOOR"]
+    SHELL_NODE_ROUNDING = constants["SHELL_NODE_ROUNDING"]
+    SHELL_OUTPUT_ROUNDING = constants["SHELL_OUTPUT_ROUNDING"]
     if method not in ("auto", "quadrature"):
         return None
     unit = np.asarray(amplitude.unit)
