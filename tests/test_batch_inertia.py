@@ -1,6 +1,7 @@
 """``inertia --batch``: one composite per row (body columns b1, b2, ..., axis); the vectorised
-path of one body at the origin (dyncalc/batch/fast_inertia.py) byte for byte the generic
-(one-off) path, on random rows with extremes; values against the textbook formulas."""
+path of bodies at the origin, composites and world axes included
+(dyncalc/batch/fast_inertia.py) byte for byte the generic (one-off) path, on random rows with
+extremes; values against the textbook formulas."""
 from __future__ import annotations
 
 import io
@@ -58,7 +59,7 @@ def test_the_vectorised_path_is_the_one_off_byte_for_byte(tmp_path, as_json, see
     rows = ['"' + _body(rng) + '",,' for _ in range(300)]
     rows += ['"disk(m=1kg, r=1m, at=(1, 0, 0) m)",,', '"-disk(m=1kg, r=1m)",,',
              '"rod(m=1kg)",,', '"disk(m=0kg, r=1m)",,', '"disk(m=1 s, r=1m)",,', '"",,']
-    # rows with a second body or an axis: the one-off, row by row
+    # rows with a second body or an axis (the composite kernel, or the one-off row by row)
     rows += [f'"{_body(rng)}","{_body(rng)}",' for _ in range(20)]
     rows += [f'"{_body(rng)}",,{rng.choice(["x", "z", "(1, 1, 0)"])!s}' for _ in range(20)]
     rng.shuffle(rows)
