@@ -38,6 +38,13 @@ def _chain(r) -> list[str]:
     return [f'"[[{m1!r},0],[0,{m2!r}]]"', f'"[[{k1 + k2!r},{-k2!r}],[{-k2!r},{k2!r}]]"']
 
 
+def _annulus(r) -> list[str]:
+    """A disk and a concentric hole (``-disk``), lighter and smaller: a valid composite."""
+    m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
+    return ['"disk(m=%.6g kg, r=%.6g m)"' % (m, a),
+            '"-disk(m=%.6g kg, r=%.6g m)"' % (m * r.uniform(0.05, 0.3), a * r.uniform(0.1, 0.6))]
+
+
 CASES = [
     ("natural-frequency mass-spring", ["natural-frequency"], "k [N/m],m [kg]",
      lambda r: [f"{r.uniform(10, 1e4):.6g}", f"{r.uniform(0.1, 50):.6g}"]),
@@ -69,19 +76,20 @@ CASES = [
      lambda r: [f"{r.uniform(1e3, 1e6):.6g}", f"{r.uniform(1, 500):.6g}",
                 f"{r.uniform(0.01, 0.3):.6g}", f"{r.uniform(1, 1e3):.6g}",
                 f"{r.uniform(1, 300):.6g}"]),
-    ("forced-response total response (extra)", ["forced-response"],
+    ("forced-response total response", ["forced-response"],
      "k [N/m],m [kg],zeta,F0 [N],Omega [rad/s],x0 [m],v0 [m/s],t [s]",
      lambda r: [f"{r.uniform(1e3, 1e6):.6g}", f"{r.uniform(1, 500):.6g}",
                 f"{r.uniform(0.01, 0.3):.6g}", f"{r.uniform(1, 1e3):.6g}",
                 f"{r.uniform(1, 300):.6g}", f"{r.uniform(-0.01, 0.01):.6g}",
                 f"{r.uniform(-1, 1):.6g}", f"{r.uniform(0.001, 2):.6g}"]),
-    ("forced-response undamped (extra)", ["forced-response"],
+    ("forced-response undamped", ["forced-response"],
      "k [N/m],m [kg],F0 [N],Omega [rad/s]",
      lambda r: [f"{r.uniform(1e3, 1e6):.6g}", f"{r.uniform(1, 500):.6g}",
                 f"{r.uniform(1, 1e3):.6g}", f"{r.uniform(1, 300):.6g}"]),
-    ("inertia one disk a row (extra)", ["inertia"], "b1",
+    ("inertia one disk a row", ["inertia"], "b1",
      lambda r: ['"disk(m=%.6g kg, r=%.6g m)"' % (r.uniform(0.1, 50), r.uniform(0.01, 2))]),
-    ("modes two-mass chain (extra)", ["modes"], "M,K", lambda r: _chain(r)),
+    ("inertia composite", ["inertia"], "b1,b2", lambda r: _annulus(r)),
+    ("modes two-mass chain", ["modes"], "M,K", lambda r: _chain(r)),
     ("rigid-body drum-two-blocks", ["rigid-body", "--scene", "drum-two-blocks"],
      "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2]",
      lambda r: [f"{r.uniform(0.5, 50):.6g}", f"{r.uniform(0.5, 50):.6g}",

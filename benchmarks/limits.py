@@ -41,12 +41,14 @@ LIMITS = {
     "coriolis": [str(LIMIT / "coriolis.py")],
     "coriolis Earth": [str(LIMIT / "coriolis_earth.py")],
     "forced-response": [str(LIMIT / "forced_response.py")],
-    # extra rows (issue 17's brief, round 4): commands outside the 16 cases of the goal table
-    "inertia one disk a row (extra)": [str(LIMIT / "inertia.py")],
+    # round 4 (issue 17): inertia and modes
+    "inertia one disk a row": [str(LIMIT / "inertia.py")],
+    # round 6: composites of centred bodies (issue 17's brief, batchrest3)
+    "inertia composite": [str(LIMIT / "inertia_composite.py")],
     # round 5: forced-response rows with --t (issue 17's brief, batchrest2)
-    "forced-response total response (extra)": [str(LIMIT / "forced_total.py")],
-    "forced-response undamped (extra)": [str(LIMIT / "forced_undamped.py")],
-    "modes two-mass chain (extra)": [str(LIMIT / "modes.py")],
+    "forced-response total response": [str(LIMIT / "forced_total.py")],
+    "forced-response undamped": [str(LIMIT / "forced_undamped.py")],
+    "modes two-mass chain": [str(LIMIT / "modes.py")],
     # round 6: rigid-body scenes on column kernels (issue 17's brief, rigidbatch)
     "rigid-body drum-two-blocks": [str(LIMIT / "rigid_body.py"), "drum"],
     "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],

@@ -134,3 +134,48 @@ def test_a_two_mass_chain_against_its_closed_form(tmp_path):
         assert results["mode_1"]["value"] == [1.0, 1.0]
         shape = results["mode_2"]["value"]  # the first largest component is the +1
         assert shape[0] == 1.0 and shape[1] == pytest.approx(-1.0, rel=1e-13)
+
+
+def _unit_file(tmp_path, seed: int, header: bool):
+    """Matrices with units: in the header (``M [g]``) or after each cell's matrix
+    (``[[...]] kg``); a row of bare numbers and one with a wrong unit among them."""
+    rng = random.Random(seed)
+    units_m, units_k = ["kg", "g", "t", "lb"], ["N/m", "kN/m", "lbf/in"]
+    unit_m, unit_k = rng.choice(units_m), rng.choice(units_k)
+    lines = [f"M [{unit_m}],K [{unit_k}]" if header else "M,K"]
+    for _ in range(100):
+        m, k = _matrix(rng, 2, 3.5, "brackets"), _matrix(rng, 2, 250.0, "brackets")
+        if not header:
+            m, k = f"{m} {rng.choice(units_m)}", f"{k} {rng.choice(units_k)}"
+        lines.append(f'"{m}","{k}"')
+    if not header:
+        lines += ['"[[1, 0], [0, 2]]","[[300, -100], [-100, 100]]"',
+                  '"[[1, 0], [0, 2]] kg","[[300, -100], [-100, 100]] N"']
+    path = tmp_path / "units.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("header", [True, False], ids=["header-units", "cell-units"])
+def test_rows_with_units_are_the_one_off_within_1e_12(tmp_path, header):
+    """Units in the header or in the cells: each matrix times its unit's SI value, as the
+    one-off reads it; the input entries (SI values, the text with its unit) exactly the
+    one-off's, the results within 1e-12; a wrong unit refused as the one-off refuses it."""
+    path = _unit_file(tmp_path, 11, header)
+    for as_json in (False, True):
+        fast, generic = _run(path, as_json, True), _run(path, as_json, False)
+        assert (fast[0], fast[2]) == (generic[0], generic[2])
+        if as_json:
+            for a, b in zip(fast[1].splitlines(), generic[1].splitlines()):
+                a, b = json.loads(a), json.loads(b)
+                assert a["inputs"] == b["inputs"] and _close(a, b)
+        else:
+            for a, b in zip(_cells(fast[1]), _cells(generic[1])):
+                assert all(_close(x, y) for x, y in zip(a, b)) and len(a) == len(b)
+    if not header:
+        assert fast[0] == 2 and fast[2].count("Error: line") == 1
+    rows = list(csv.reader(path.open()))
+    spec = ModesRows()
+    blocks = spec.fast(spec, read_header(1, rows[0], spec),
+                       [[r[0] for r in rows[1:]], [r[1] for r in rows[1:]]], True, {})
+    assert sum(len(b.rows) for b in blocks) >= 80

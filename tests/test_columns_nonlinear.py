@@ -36,10 +36,34 @@ def test_half_cylinder_shell_columns(method):
     assert out.exact[0] and abs(out.values["omega"][0] - 4.14495436047052202) < 1e-15
 
 
-def test_half_cylinder_shell_amplitude_and_quadrature_are_not_vectorised():
+def test_half_cylinder_shell_amplitude_rows_are_the_quadrature_others_are_not_vectorised():
+    """With an amplitude (as typed) the quadrature rows are the kernel's
+    (tests/test_shell_columns.py holds them to the one-off's bits); ``ode``, and
+    ``quadrature`` without an amplitude (the one-off refuses it), are not vectorised."""
+    from dyncalc.physics.columns import TypedColumn
+
     kernel, ones = kernel_of(half_cylinder_shell), np.ones(2)
-    assert kernel(ones, ones, amplitude=0.5 * ones) is None
+    amplitude = TypedColumn(0.5 * ones, 0.5 * ones, np.array(["radian"] * 2))
+    out = kernel(ones, 9.80665 * ones, amplitude=amplitude)
+    assert out.method == "quadrature" and out.exact.all()
+    # T/T0 at 0.5 rad from the energy integral (mpmath.quad at 30 digits)
+    assert out.values["omega_0"][0] / out.values["omega"][0] == pytest.approx(
+        float(_shell_factor(0.5)), rel=1e-14)
+    assert kernel(ones, ones, amplitude=amplitude, method="ode") is None
     assert kernel(ones, ones, method="quadrature") is None
+
+
+def _shell_factor(phi0: float):
+    """T/T0 of the shell at ``phi0`` by mpmath: (2/pi) int_0^{pi/2} sqrt((1 + c k^2 sin^2 u) /
+    (1 - k^2 sin^2 u)) du, c = 4/(pi - 2), k = sin(phi0/2)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+        c = 4 / (mpmath.pi - 2)
+        k2 = mpmath.sin(mpmath.mpf(phi0) / 2) ** 2
+        return 2 / mpmath.pi * mpmath.quad(
+            lambda u: mpmath.sqrt((1 + c * k2 * mpmath.sin(u) ** 2)
+                                  / (1 - k2 * mpmath.sin(u) ** 2)), [0, mpmath.pi / 2])
 
 
 def test_rod_equilibrium_twin():

@@ -252,8 +252,11 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
         values = {name: array[keep] for name, array in values.items()}
     dims = {name: result_kind(name).dim for name in values}
     head = texts = None
-    extra = "{}"
-    if out.error_estimate is not None:
+    extra: Any = "{}"
+    if isinstance(out.error_estimate, np.ndarray):  # one per row (the shell's quadrature)
+        extra = _per_row_estimates(out.error_estimate[keep] if len(keep) != len(good)
+                                   else out.error_estimate) if want_json else "{}"
+    elif out.error_estimate is not None:
         extra = json.dumps({"error_estimate": out.error_estimate})
     if want_json:
         head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
@@ -261,6 +264,15 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
                 f'"method": {json.dumps(out.method)}')
         texts = _input_texts(inputs, keep, words)
     return FastBlock(rows, values, dims, head, texts, extra)
+
+
+def _per_row_estimates(estimates) -> list:
+    """The parts of each row's ``extra`` object, ``{"error_estimate": e}`` (finite floats, as
+    ``json.dumps`` writes them), as :attr:`~dyncalc.physics.columns.Columns.extras` gives
+    them: shared texts and a list of one text a row."""
+    from .floats import reprs
+
+    return ['{"error_estimate": ', reprs(estimates), "}"]
 
 
 def _as_typed(plan: _Plan, arguments: dict, inputs: list, cache: dict) -> dict:

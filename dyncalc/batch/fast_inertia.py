@@ -1,7 +1,8 @@
-"""The vectorised path of ``inertia --batch``: the rows whose only cell is one body at the
-origin along z (``disk(m=4kg, r=0.2m)``: mass or density and dimensions, plain numbers with
-plain units; no ``at=``, ``along=``, hole or ``axis``), grouped by body and the parameters
-they name, through :func:`dyncalc.physics.inertia_columns.single_body`. Each group's first
+"""The vectorised path of ``inertia --batch``: the rows whose bodies are all at the origin
+along z (``disk(m=4kg, r=0.2m)``, and composites such as a disk and ``-disk(...)``, a hole:
+mass or density and dimensions, plain numbers with plain units; no ``at=``, ``along=`` or
+``axis``), grouped by bodies and the parameters they name, through
+:func:`dyncalc.physics.inertia_columns.centred_composite`. Each group's first
 row is also computed by the one-off (a *probe*): the group takes the generic path unless its
 results are the kernel's to the bit and its input entries the ones assembled here. Every
 other row takes the generic path.
@@ -21,7 +22,7 @@ __all__ = ["inertia_fast"]
 
 #: A body word the vectorised path reads: a body at its place, parameters without
 #: parentheses (no vector, no expression).
-_WORD_RE = re.compile(r"^\s*([a-z][a-z-]*)\s*\(([^()]*)\)\s*$")
+_WORD_RE = re.compile(r"^\s*(-?)\s*([a-z][a-z-]*)\s*\(([^()]*)\)\s*$")
 _PAIR_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
 
 
@@ -36,20 +37,21 @@ class _Param:
 
 
 def _shape(cell: str):
-    """``(kind, keys, value texts)`` of a body word the vectorised path takes, or ``None``."""
+    """``(kind, keys, value texts, sign)`` of a body word the vectorised path takes (``-``
+    before it: a hole, sign -1), or ``None``."""
     from ..physics.inertia_columns import CENTRED
 
     match = _WORD_RE.match(cell)
-    if match is None or match.group(1) not in CENTRED:
+    if match is None or match.group(2) not in CENTRED:
         return None
     keys, texts = [], []
-    for part in match.group(2).split(","):
+    for part in match.group(3).split(","):
         pair = _PAIR_RE.match(part)
         if pair is None:
             return None
         keys.append(pair.group(1))
         texts.append(pair.group(2))
-    return match.group(1), tuple(keys), texts
+    return match.group(2), tuple(keys), texts, -1.0 if match.group(1) else 1.0
 
 
 def _allowed(kind: str, keys: tuple) -> bool:
@@ -72,46 +74,58 @@ _SLOT_RE = re.compile(r"^([ \t]*)#([^#]*)$")
 
 def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
     """The rows of this chunk the vectorised path computes, as blocks (one per *template*:
-    a body word in the first body column, every other cell of the row empty, with its
-    numbers taken out: the same body, parameters, units and spacing);
-    every other row is left to the generic path. The numbers of a template's rows are read
-    in one pass over their cells joined."""
+    the body words of the row's non-empty body cells, with their numbers taken out: the same
+    bodies, signs, parameters, units and spacing; the ``axis`` cell empty); every other row
+    is left to the generic path. The numbers of a template's rows are read in one pass a
+    body."""
     if not table:
         return []
     bodies = [col for col in columns if spec.is_body(col.key)]
     if not bodies or any(col.unit for col in bodies):
         return []
-    body = bodies[0]  # the rows whose every other cell (b2, ..., axis) is empty
-    cells = list(table[body.index])
-    others = [table[col.index] for col in columns if col is not body]
-    candidates = range(len(cells))
-    if any("".join(column).strip() for column in others):  # rows with an axis or 2nd body
-        candidates = [i for i in candidates if not any(c[i].strip() for c in others)]
-    if "\n" in "".join(cells):
+    axes = [list(table[col.index]) for col in columns if not spec.is_body(col.key)]
+    body_cells = [list(table[col.index]) for col in bodies]
+    n = len(body_cells[0])
+    candidates = range(n)
+    axis_cells = axes[0] if axes else [""] * n
+    if "".join(axis_cells).strip():  # rows with an axis: a world axis (x, -y, ...) only
+        candidates = [i for i in candidates if axis_cells[i].strip().lstrip("+-").strip()
+                      in ("", "x", "y", "z")]
+    if not candidates or any("\n" in "".join(cells) for cells in body_cells):
         return []
-    picked = cells if len(candidates) == len(cells) else [cells[i] for i in candidates]
-    templates = _VALUE_RE.sub("#", "\n".join(picked)).split("\n")
-    groups: dict[str, list[int]] = {}
-    if templates.count(templates[0]) == len(templates):
-        groups[templates[0]] = list(candidates)
+    whole = len(candidates) == n
+    templates = []
+    for cells in body_cells:
+        picked = cells if whole else [cells[i] for i in candidates]
+        templates.append([t if t.strip() else "" for t in
+                          _VALUE_RE.sub("#", "\n".join(picked)).split("\n")])
+    keys = list(zip(*templates, axis_cells if whole else [axis_cells[i] for i in candidates]))
+    groups: dict[tuple, list[int]] = {}
+    if keys.count(keys[0]) == len(keys):
+        groups[keys[0]] = list(candidates)
     else:
-        for i, template in zip(candidates, templates):
-            groups.setdefault(template, []).append(i)
+        for i, key in zip(candidates, keys):
+            groups.setdefault(key, []).append(i)
     blocks = []
-    for template, members in groups.items():
-        shape = _template(template, cache)
-        if shape is None:
+    for key, members in groups.items():
+        key, axis = key[:-1], key[-1]
+        used = [j for j, template in enumerate(key) if template]
+        shapes = [_template(key[j], cache) for j in used]
+        if not used or any(shape is None for shape in shapes):
             continue
-        kind, keys, slots = shape
-        group = cells if len(members) == len(cells) else [cells[i] for i in members]
-        found = _VALUE_RE.findall("\n".join(group))
-        if len(found) != len(keys) * len(group):
-            continue
-        literals = found
-        rows = np.asarray(members, dtype=np.intp)
-        block = _block(spec, body, kind, keys, slots, rows, literals, cells, want_json, cache)
-        if block is not None:
-            blocks.append(block)
+        every = len(members) == n
+        parts = []
+        for j, shape in zip(used, shapes):
+            group = body_cells[j] if every else [body_cells[j][i] for i in members]
+            found = _VALUE_RE.findall("\n".join(group))
+            if len(found) != len(shape[1]) * len(group):
+                break
+            parts.append((bodies[j], shape, found))
+        else:
+            block = _block(spec, parts, np.asarray(members, dtype=np.intp), body_cells,
+                           bodies, axis, want_json, cache)
+            if block is not None:
+                blocks.append(block)
     return blocks
 
 
@@ -128,7 +142,7 @@ def _template(template: str, cache: dict):
                 slots = None
                 break
             slots.append((slot.group(1), slot.group(2)))
-        cache[key] = None if slots is None else (shape[0], shape[1], slots)
+        cache[key] = None if slots is None else (shape[0], shape[1], slots, shape[3])
     return cache[key]
 
 
@@ -142,55 +156,91 @@ def _dim(kind: str, key: str):
     return DENSITY[DENSITY_KIND[kind]] if key == "rho" else LENGTH
 
 
-def _block(spec, body, kind, keys, slots, rows, literals, cells, want_json, cache):
+def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
+    """One template's rows: ``parts`` holds each body's column, template shape and number
+    literals, in the order of the row's bodies (``b1``, ``b2``, ... of the one-off);
+    ``axis`` the rows' axis cell (a world axis, perhaps signed, or empty)."""
     from ..physics.inertia import mass_from_density
-    from ..physics.inertia_columns import single_body
+    from ..physics.inertia_columns import centred_composite
 
     n = len(rows)
-    k = len(keys)
     good = np.ones(n, dtype=bool)
-    reads = []
-    for j, key in enumerate(keys):
-        column = literals[j::k]
-        unit = slots[j][1].strip()
-        read = _read_column(column, unit, _Param(key, _dim(kind, key)), spec.strict, cache)
-        good &= read.ok
-        reads.append((key, read, column, slots[j]))
-    si = {key: np.where(good, read.si, 1.0) for key, read, _c, _s in reads}
-    dims = {key: value for key, value in si.items() if key not in ("m", "rho")}
-    if kind == "hollow-cylinder":
-        good &= dims["ri"] < dims["ro"]
+    reads, placed = [], []
+    for index, (_column, (kind, keys, slots, sign), literals) in enumerate(parts, start=1):
+        k = len(keys)
+        si = {}
+        for j, key in enumerate(keys):
+            column = literals[j::k]
+            read = _read_column(column, slots[j][1].strip(), _Param(key, _dim(kind, key)),
+                                spec.strict, cache)
+            good &= read.ok
+            reads.append((f"b{index}.{key}", read, column, slots[j]))
+            si[key] = read.si
+        placed.append((kind, sign, si))
+    bodies_si = []
     with np.errstate(all="ignore"):
-        m = si["m"] if "m" in si else mass_from_density(kind, si["rho"], dims)
-        good &= np.isfinite(m)
-        out = single_body(kind, np.where(good, m, 1.0), dims)
+        for kind, sign, si in placed:
+            si = {key: np.where(good, value, 1.0) for key, value in si.items()}
+            dims = {key: value for key, value in si.items() if key not in ("m", "rho")}
+            if kind == "hollow-cylinder":
+                good &= dims["ri"] < dims["ro"]
+            m = si["m"] if "m" in si else mass_from_density(kind, si["rho"], dims)
+            good &= np.isfinite(m)
+            bodies_si.append((kind, sign, m, dims))
+        bodies_si = [(kind, sign, np.where(good, m, 1.0), dims)
+                     for kind, sign, m, dims in bodies_si]
+        out = centred_composite(bodies_si)
     if out is None:
         return None
     good &= out.exact
+    if axis.strip():
+        _about_world_axis(out, axis)
+        good &= out.values["J_axis"] > 0.0   # a zero moment: the one-off's signed zero
     if not good.any():
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
-    probe = _probe(spec, body, cells[int(rows[first])], out, first)
-    if probe is None or (want_json and _entries(reads, np.array([first]), 1)[0]
-                         != _probe_inputs(probe)):
+    row = int(rows[first])
+    texts = {column.key: body_cells[bodies.index(column)][row] for column, _s, _l in parts}
+    labels = {column.key: column.name for column, _s, _l in parts}
+    if axis.strip():
+        texts["axis"], labels["axis"] = axis.strip(), "axis"
+    probe = _probe(spec, texts, labels, out, first)
+    if probe is None:
         return None
+    tail = ""
+    if want_json:  # the axis entry, the same on every row: the probe's
+        mine, theirs = _entries(reads, np.array([first]), 1)[0], _probe_inputs(probe)
+        tail = theirs[len(mine):]
+        if not theirs.startswith(mine) or (tail and not tail.startswith(', "axis": ')):
+            return None
     values = {name: array[keep] for name, array in out.values.items()}
     result_dims = {name: entry.dim for name, entry in probe.results.items()}
     head = inputs = None
     if want_json:
         head = (f'"schema": "dyncalc/2", "command": "inertia", "scene": null, '
                 f'"model": {json.dumps(out.model)}, "method": {json.dumps(probe.method)}')
-        inputs = _entries(reads, keep, None)
+        inputs = _entries(reads, keep, None) + ([tail] if tail else [])
     return FastBlock(rows[keep], values, result_dims, head, inputs)
 
 
-def _probe(spec, body, cell: str, out, i: int):
+def _about_world_axis(out, axis: str) -> None:
+    """Add ``J_axis`` and ``radius_of_gyration`` about a world axis through the origin (the
+    centre of mass of a centred composite): the one-off's ``n^T (J_C + 0) n`` with ``n`` a
+    signed unit axis is the diagonal element exactly (every other product is a zero)."""
+    k = "xyz".index(axis.strip().lstrip("+-").strip())
+    J = np.ascontiguousarray(out.values["J_C"][:, k, k])
+    with np.errstate(all="ignore"):
+        out.values["J_axis"] = J
+        out.values["radius_of_gyration"] = np.sqrt(J / out.values["m"])
+
+
+def _probe(spec, texts: dict, labels: dict, out, i: int):
     """The one-off Result of one row, or ``None`` where it is not the kernel's to the bit."""
     from .fast_commands import _same
 
     try:
-        result = spec.compute({body.key: cell}, {body.key: body.name})
+        result = spec.compute(texts, labels)
     except InputError:
         return None
     if (result.warnings or result.model != out.model or set(result.extra)
@@ -209,7 +259,7 @@ def _probe_inputs(result) -> str:
 
 
 def _entries(reads, keep: np.ndarray, lines: int | None):
-    """The parts of the JSON input entries ``b1.KEY`` of the kept rows (the value in the unit
+    """The parts of the JSON input entries ``bI.KEY`` of the kept rows (the value in the unit
     typed, that unit, the text as typed: the number between the template's spacing and unit
     text); with ``lines``, those lines' texts instead."""
     from . import assemble
@@ -218,7 +268,7 @@ def _entries(reads, keep: np.ndarray, lines: int | None):
     every = len(keep) == len(reads[0][1].shown) if reads else True
     rows = keep.tolist()
     for key, read, column, (space, rest) in reads:
-        prefix = (", " if parts else "") + json.dumps("b1." + key) + ': {"value": '
+        prefix = (", " if parts else "") + json.dumps(key) + ': {"value": '
         shown = np.asarray(read.shown, dtype=np.float64)
         typed = column if every else [column[i] for i in rows]
         unit, assumed = read.unit_json[rows[0]]  # one unit: the template's

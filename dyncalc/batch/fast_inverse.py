@@ -1,8 +1,11 @@
 """Inverse problems on the vectorised path: rows of ``natural-frequency`` that give a result
 (``f``, ``T``, ...) and leave out one parameter (or give it as ``?``), solved in closed form on
 columns (:func:`dyncalc.scenes.inverse_columns.closed_form_columns`) where the result is a
-power of the unknown; every other row (a bracketed search, a refusal, a warning) is left to the
-generic path, which runs the one-off's solver on it."""
+power of the unknown, and for an angle (a pendulum's amplitude from its period) by the
+one-off's bracket and Brent's method on columns
+(:func:`dyncalc.scenes.inverse_brackets.bracketed_columns`); every other row (another
+bracketed search, a refusal, a warning) is left to the generic path, which runs the one-off's
+solver on it."""
 from __future__ import annotations
 
 import json
@@ -100,10 +103,17 @@ def _blocks(spec, plan, unknown, target, kind, words, rows, whole, cells, plain,
         return []
     arguments = {name: (np.where(good, value, 1.0) if isinstance(value, np.ndarray) else value)
                  for name, value in si.items()}
+    how = "closed-form"
     solved = closed_form_columns(scene, plan.kernel, unknown, target, arguments,
                                  np.where(good, goal.si, 1.0), plan.settings)
-    if solved is None:
-        return []
+    if solved is None:  # an angle: a bracket and Brent's method, as the one-off
+        from ..scenes.inverse_brackets import bracketed_columns
+
+        how = "bracketed-root"
+        solved = bracketed_columns(scene, plan.kernel, unknown, target, arguments,
+                                   np.where(good, goal.si, 1.0), plan.settings)
+    if solved is None or isinstance(solved.out.error_estimate, np.ndarray):
+        return []  # (an estimate per row, the shell's quadrature: the generic path's)
     exact = good & solved.exact
     blocks = []
     for exponent in sorted(set(solved.exponent[exact].tolist())):
@@ -116,9 +126,10 @@ def _blocks(spec, plan, unknown, target, kind, words, rows, whole, cells, plain,
         extra = {}
         if solved.out.error_estimate is not None:
             extra["error_estimate"] = solved.out.error_estimate
-        extra["inverse"] = {"unknown": unknown.name, "method": "closed-form",
-                            "detail": f"{target} is proportional to {unknown.name}^({exponent})"
-                                      ": inverted exactly"}
+        extra["inverse"] = {"unknown": unknown.name, "method": how, "detail": (
+            f"{target} is proportional to {unknown.name}^({exponent}): inverted exactly"
+            if how == "closed-form" else f"a sign change on a grid of {unknown.name}, "
+            "refined by Brent's method")}
         head = texts = None
         if want_json:
             head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '

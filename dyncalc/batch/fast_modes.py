@@ -1,7 +1,9 @@
 """The vectorised path of ``modes --batch``: rows whose ``M`` and ``K`` cells are matrices of
-bare numbers (``"[[2, 0], [0, 1]]"`` or ``"2,0;0,1"``: SI, every coordinate a translation)
-and no ``C``, grouped by *template* (the cells with their numbers taken out: the same size
-and spelling), their numbers read in one pass a column, solved on a stack
+numbers (``"[[2, 0], [0, 1]]"`` or ``"2,0;0,1"``: SI, every coordinate a translation; or with
+a unit, in the header, ``M [g]``, or after the matrix, ``"[[2, 0], [0, 1]] kg"``: the numbers
+times the SI value of one unit, as the one-off reads them) and no ``C``, grouped by
+*template* (the cells with their numbers taken out: the same size, spelling and unit), their
+numbers read in one pass a column, solved on a stack
 (:func:`dyncalc.physics.modes_columns.stacked_modes`).
 
 Unlike the other vectorised paths these rows are not the one-off's to the bit: the stacked
@@ -47,7 +49,7 @@ def _size(template: str) -> int | None:
 def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
     """The rows of this chunk the vectorised path computes, as blocks (one per pair of
     templates); every other row is left to the generic path."""
-    if not table or any(col.unit for col in columns):
+    if not table:
         return []
     by_key = {col.key: col for col in columns}
     if "M" not in by_key or "K" not in by_key:
@@ -73,8 +75,10 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
             groups.setdefault((a, b), []).append(i)
     blocks = []
     for (template_m, template_k), members in groups.items():
+        (template_m, unit_m), (template_k, unit_k) = _unit(template_m), _unit(template_k)
+        units = _units(by_key, unit_m, unit_k, cache)
         n = _size(template_m)
-        if n is None or _size(template_k) != n:
+        if n is None or _size(template_k) != n or units is None:
             continue
         rows = np.asarray(members, dtype=np.intp)
         every = len(members) == len(m_cells)
@@ -83,10 +87,51 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         matrices = [_numbers(group, n) for group in (group_m, group_k)]
         if matrices[0] is None or matrices[1] is None:
             continue
-        block = _block(spec, by_key, rows, group_m, group_k, *matrices, want_json)
+        matrices = [matrix * factor for matrix, (factor, _suffix) in zip(matrices, units)]
+        block = _block(spec, by_key, rows, group_m, group_k, *matrices, want_json, units)
         if block is not None:
             blocks.append(block)
     return blocks
+
+
+_TRAILING_RE = re.compile(r"^(\s*\[.*\])[ \t]*([A-Za-z][A-Za-z/*^ \t]*?)?[ \t]*$")
+
+
+def _unit(template: str) -> tuple[str, str]:
+    """``(the matrix template, its trailing unit or "")``: ``[[#, #], [#, #]] kg``."""
+    match = _TRAILING_RE.match(template)
+    if match is None or not match.group(2):
+        return template, ""
+    return match.group(1), match.group(2)
+
+
+def _units(by_key, unit_m: str, unit_k: str, cache: dict):
+    """``((factor, text suffix) of M, of K)``: the SI value of one unit (the header's or the
+    cells' trailing one; the one-off multiplies the numbers by it) and what the input text
+    gains (`` g`` under a header unit); ``None`` where both are given or a unit is not read."""
+    from ..units import MASS, STIFFNESS
+
+    out = []
+    for key, cell_unit, dim in (("M", unit_m, MASS), ("K", unit_k, STIFFNESS)):
+        header = by_key[key].unit
+        if header and cell_unit:
+            return None
+        unit = header or cell_unit
+        if not unit:
+            out.append((1.0, ""))
+            continue
+        if (dim.name, unit) not in cache:
+            from ..units import parse_quantity
+
+            try:
+                cache[(dim.name, unit)] = float(parse_quantity("1 " + unit, dim,
+                                                               label=key).si)
+            except InputError:
+                cache[(dim.name, unit)] = None
+        if cache[(dim.name, unit)] is None:
+            return None
+        out.append((cache[(dim.name, unit)], " " + header if header else ""))
+    return out
 
 
 def _numbers(cells: list[str], n: int):
@@ -101,7 +146,7 @@ def _numbers(cells: list[str], n: int):
         return None
 
 
-def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json):
+def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json, units):
     from ..physics.modes_columns import stacked_modes
 
     normalize = spec.settings.get("normalize") or "max"
@@ -111,7 +156,9 @@ def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json):
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
-    probe = _probe(spec, by_key, cells_m[first], cells_k[first], out, first)
+    suffixes = [suffix for _factor, suffix in units]
+    probe = _probe(spec, by_key, cells_m[first] + suffixes[0], cells_k[first] + suffixes[1],
+                   out, first)
     if probe is None:
         return None
     values = {name: array[keep] for name, array in out.values.items()}
@@ -123,13 +170,13 @@ def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json):
 
         from .assemble import lines
 
-        if lines(_inputs([cells_m[first]], [cells_k[first]], M[[first]], K[[first]]), 1)[0] \
-                != json.dumps(_json_inputs(probe.inputs))[1:-1]:
+        if lines(_inputs([cells_m[first]], [cells_k[first]], M[[first]], K[[first]], units),
+                 1)[0] != json.dumps(_json_inputs(probe.inputs))[1:-1]:
             return None
         head = ('"schema": "dyncalc/2", "command": "modes", "scene": null, '
                 f'"model": {json.dumps(out.model)}, "method": {json.dumps(out.method)}')
         inputs = _inputs([cells_m[i] for i in keep.tolist()],
-                         [cells_k[i] for i in keep.tolist()], M[keep], K[keep])
+                         [cells_k[i] for i in keep.tolist()], M[keep], K[keep], units)
     return FastBlock(rows[keep], values, dims, head, inputs, extra)
 
 
@@ -154,13 +201,15 @@ def _probe(spec, by_key, cell_m: str, cell_k: str, out, i: int):
     return result
 
 
-def _inputs(cells_m, cells_k, M, K) -> list:
+def _inputs(cells_m, cells_k, M, K, units) -> list:
     """The parts (:func:`dyncalc.batch.assemble.lines`) of each row's input entries
-    ``"M": {...}, "K": {...}`` (bare numbers: SI, assumed), a component column at a time."""
+    ``"M": {...}, "K": {...}`` (SI values; bare numbers assumed SI, or the text with its
+    header unit), a component column at a time."""
     from .write import _component
 
     parts: list = []
-    for name, cells, X, unit in (("M", cells_m, M, "kg"), ("K", cells_k, K, "N/m")):
+    for name, cells, X, unit, (factor, suffix) in (("M", cells_m, M, "kg", units[0]),
+                                                     ("K", cells_k, K, "N/m", units[1])):
         n = X.shape[1]
         parts.append((", " if parts else "") + f'"{name}": {{"value": [')
         for i in range(n):
@@ -172,6 +221,9 @@ def _inputs(cells_m, cells_k, M, K) -> list:
         joined = "".join(cells)
         plain = joined.isascii() and joined.isprintable() and not ('"' in joined
                                                                     or "\\" in joined)
-        text = ['"', list(cells), '"'] if plain else [[json.dumps(c) for c in cells]]
-        parts += [f'], "unit": "{unit}", "text": ', *text, ', "assumed_si": true}']
+        text = ['"', list(cells), suffix + '"'] if plain else [[json.dumps(c + suffix)
+                                                                 for c in cells]]
+        assumed = ', "assumed_si": true}' if factor == 1.0 and not suffix and not \
+            _unit(cells[0])[1] else "}"
+        parts += [f'], "unit": "{unit}", "text": ', *text, assumed]
     return parts

@@ -267,16 +267,26 @@ def half_cylinder_shell(r, g, amplitude=None, method: str = "auto",
 @column_kernel(half_cylinder_shell)
 def _half_cylinder_shell_columns(r, g, amplitude=None, method: str = "auto",
                                  rtol: float = 1e-9):
-    """:func:`half_cylinder_shell` on columns (``r`` in m, ``g`` in m/s^2), small swings only
-    (``amplitude`` None, method ``auto`` or ``linear``: the closed form); ``None`` otherwise
-    (with an amplitude the one-off's choice and text depend on the unit typed, and the
-    quadrature's sum is a ``math.fsum`` per row)."""
-    if amplitude is not None or method not in ("auto", "linear"):
+    """:func:`half_cylinder_shell` on columns (``r`` in m, ``g`` in m/s^2): small swings
+    (``amplitude`` None, method ``auto`` or ``linear``: the closed form), or at an amplitude
+    (a :class:`~dyncalc.physics.columns.TypedColumn`) the quadrature rows
+    (:func:`~dyncalc.physics.shell_columns.shell_amplitude_columns`); ``None`` otherwise."""
+    if amplitude is not None:
+        from .shell_columns import shell_amplitude_columns
+
+        return shell_amplitude_columns(r, g, amplitude, method, rtol, {
+            "PI_MINUS_2": PI_MINUS_2, "QUAD_FLOOR": QUAD_FLOOR,
+            "SHELL_NODE_ROUNDING": SHELL_NODE_ROUNDING,
+            "SHELL_OUTPUT_ROUNDING": SHELL_OUTPUT_ROUNDING})
+    if method not in ("auto", "linear"):
         return None
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):
         values = periodic_arrays(sqrt_ratio_array(g, PI_MINUS_2 * r))
     return Columns(values, exact=finite_nonzero(values), model="linear",
                    method="closed-form")
+
+
+_half_cylinder_shell_columns.typed_params = ("amplitude",)
 
 
 # --- rod on a torsion spring -------------------------------------------------------------------
