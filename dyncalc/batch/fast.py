@@ -34,6 +34,14 @@ class FastBlock:
         self.warnings = tuple(warnings)
 
 
+def json_head(command: str, scene: str | None, model: str, method: str) -> str:
+    """The part of a block's JSON lines every line shares, after ``line``: the schema,
+    command, scene, model and method members (contract v2's order)."""
+    return (f'"schema": "dyncalc/2", "command": {json.dumps(command)}, '
+            f'"scene": {json.dumps(scene)}, "model": {json.dumps(model)}, '
+            f'"method": {json.dumps(method)}')
+
+
 def _default_input(p, strict: bool, cache: dict):
     """(SI value, JSON text of the input entry) of a scene parameter's default."""
     key = ("default", p.name, p.default, strict)
@@ -259,9 +267,7 @@ def _scene_block(spec, plan: _Plan, words: dict, rows: np.ndarray, whole: bool, 
     elif out.error_estimate is not None:
         extra = json.dumps({"error_estimate": out.error_estimate})
     if want_json:
-        head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
-                f'"scene": {json.dumps(scene.name)}, "model": {json.dumps(out.model)}, '
-                f'"method": {json.dumps(out.method)}')
+        head = json_head("natural-frequency", scene.name, out.model, out.method)
         texts = _input_texts(inputs, keep, words)
     return FastBlock(rows, values, dims, head, texts, extra)
 

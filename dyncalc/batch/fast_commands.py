@@ -20,7 +20,7 @@ from ..errors import InputError
 from .cells import Table
 from .columns import (_LEADING_ZERO_RE, _LITERAL_CELL, _converted_to, _plain_floats,
                       _read_column, _unit_info)
-from .fast import FastBlock, _by_columns_given, _input_texts
+from .fast import FastBlock, _by_columns_given, _input_texts, json_head
 from .floats import json_floats, parse_floats
 from .header import Column, with_header_unit
 
@@ -353,9 +353,7 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
     dims = {name: entry.dim for name, entry in probe.results.items()}
     head = texts = None
     if want_json:
-        head = (f'"schema": "dyncalc/2", "command": {json.dumps(spec.command)}, '
-                f'"scene": {json.dumps(probe.scene)}, "model": {json.dumps(out.model)}, '
-                f'"method": {json.dumps(out.method)}')
+        head = json_head(spec.command, probe.scene, out.model, out.method)
         texts = _input_texts(_inputs(spec, given, reads, probe), keep, {})
     extra = "{}" if out.error_estimate is None else json.dumps(
         {"error_estimate": out.error_estimate})

@@ -13,7 +13,7 @@ import json
 import numpy as np
 
 from ..errors import InputError
-from .fast import FastBlock, _input_texts
+from .fast import FastBlock, _input_texts, json_head
 from .fast_commands import _command_fast, _inputs, _read_rows, _same, _stripped
 from .header import with_header_unit
 
@@ -115,9 +115,7 @@ def _solved(spec, given, unknown, target, rows, cells, want_json, cache) -> list
             continue
         head = texts = None
         if want_json:
-            head = (f'"schema": "dyncalc/2", "command": "coriolis", '
-                    f'"scene": {json.dumps(probe.scene)}, "model": {json.dumps(probe.model)}, '
-                    f'"method": {json.dumps(probe.method)}')
+            head = json_head("coriolis", probe.scene, probe.model, probe.method)
             texts = _input_texts(_inputs(view, given, reads, probe), keep, {})
         dims = {name: entry.dim for name, entry in probe.results.items()}
         blocks.append(FastBlock(rows[keep], values, dims, head, texts, json.dumps(extra)))

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..errors import InputError
 from .columns import _read_column
-from .fast import FastBlock, _by_words, _default_input, _input_texts, _plan
+from .fast import FastBlock, _by_words, _default_input, _input_texts, _plan, json_head
 
 
 class _Target:
@@ -132,10 +132,8 @@ def _blocks(spec, plan, unknown, target, kind, words, rows, whole, cells, plain,
             "refined by Brent's method")}
         head = texts = None
         if want_json:
-            head = (f'"schema": "dyncalc/2", "command": "natural-frequency", '
-                    f'"scene": {json.dumps(scene.name)}, '
-                    f'"model": {json.dumps(solved.out.model)}, '
-                    f'"method": {json.dumps(solved.out.method)}')
+            head = json_head("natural-frequency", scene.name, solved.out.model,
+                             solved.out.method)
             texts = _input_texts(inputs, keep, words)
         blocks.append(FastBlock(rows[keep], values, dims, head, texts, json.dumps(extra)))
     return blocks

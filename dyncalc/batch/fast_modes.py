@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import InputError
 from .columns import _LITERAL_CELL
-from .fast import FastBlock
+from .fast import FastBlock, json_head
 from .floats import parse_floats
 
 __all__ = ["modes_fast"]
@@ -173,8 +173,7 @@ def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json, units):
         if lines(_inputs([cells_m[first]], [cells_k[first]], M[[first]], K[[first]], units),
                  1)[0] != json.dumps(_json_inputs(probe.inputs))[1:-1]:
             return None
-        head = ('"schema": "dyncalc/2", "command": "modes", "scene": null, '
-                f'"model": {json.dumps(out.model)}, "method": {json.dumps(out.method)}')
+        head = json_head("modes", None, out.model, out.method)
         inputs = _inputs([cells_m[i] for i in keep.tolist()],
                          [cells_k[i] for i in keep.tolist()], M[keep], K[keep], units)
     return FastBlock(rows[keep], values, dims, head, inputs, extra)
