@@ -262,6 +262,14 @@ def _plan(system, inputs):
     key = frozenset(inputs.values)
     if key not in plans:
         plans[key] = plan_of(system, list(inputs.values))
+        if plans[key] is not None and inputs.scene is not None:
+            # the generated functions the batch evaluates (dyncalc.scenes.eom_tables), the
+            # same source as plan_of's: both agree bit for bit by construction
+            from .eom_columns import table_plan
+
+            table = table_plan(inputs.scene)
+            if table is not None and set(table.names) <= key:
+                plans[key] = table
     return plans[key]
 
 

@@ -18,10 +18,7 @@ from __future__ import annotations
 
 import math
 
-import sympy
-
 from ..lazy import numpy as np
-from . import lagrange_equations as lagrange
 
 __all__ = ["Plan", "plan_of", "one_frequency", "constant_equilibria"]
 
@@ -60,6 +57,9 @@ def plan_of(system, names) -> Plan | None:
     """The :class:`Plan` of a derivation (``names``: the parameters given a value), or
     ``None``: more than one coordinate, a forcing in ``t``, a coordinate free of the static
     equations, or a parameter without a value in ``M`` or ``K``."""
+    import sympy
+
+    from . import lagrange_equations as lagrange
     s = system.symbols
     if len(s.q) != 1 or system.forced or lagrange.free_coordinates(system):
         return None
@@ -98,6 +98,9 @@ def constant_equilibria(system, angle: bool) -> list[float] | None:
     """The equilibria of a one-coordinate derivation when they do not depend on the values
     (sympy's roots are numbers), as the numeric search gives them (angles wrapped to
     (-pi, pi], sorted by size, the positive first); ``None`` otherwise."""
+    import sympy
+
+    from . import lagrange_equations as lagrange
     q = system.symbols.q[0]
     equations = [e for e in system.static if e != 0]
     if not equations or not lagrange.solvable(equations, [q]):
