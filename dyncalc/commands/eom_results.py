@@ -434,8 +434,6 @@ def _number_text(v, angle: bool) -> str:
 def _equilibria_text(coords, points, stabilities, numbers, cdims) -> str:
     if not points:
         return "none"
-    from ..physics.symbolic import text_of
-
     parts = []
     for point, stable in zip(points, stabilities):
         items = []
@@ -444,7 +442,9 @@ def _equilibria_text(coords, points, stabilities, numbers, cdims) -> str:
                 items.append(f"{c}=any")
             elif numbers:
                 items.append(f"{c}={_number_text(v, False)}")
-            else:
+            else:  # (sympy only here: the batch's numbers do not load it)
+                from ..physics.symbolic import text_of
+
                 items.append(f"{c}={text_of(v)}")
         word = {True: "stable", False: "unstable", None: "stability open"}[stable]
         parts.append(", ".join(items) + f" ({word})")
