@@ -43,7 +43,7 @@ def table_plan(scene: str | None):
         return None
     from ..physics.eom_columns import Plan
 
-    return Plan(list(entry["names"]), entry["M"], entry["K"], entry["a"], entry["uses_t"])
+    return Plan.of_table(entry)
 
 
 def derivation(scene: str, given: frozenset = frozenset()) -> _Derived | None:

@@ -265,11 +265,12 @@ def _plan(system, inputs):
         if plans[key] is not None and inputs.scene is not None:
             # the generated functions the batch evaluates (dyncalc.scenes.eom_tables), the
             # same source as plan_of's: both agree bit for bit by construction
-            from .eom_columns import table_plan
+            from ..physics.eom_columns import Plan
+            from ..scenes.eom_tables import TABLES
 
-            table = table_plan(inputs.scene)
-            if table is not None and set(table.names) <= key:
-                plans[key] = table
+            entry = TABLES.get(inputs.scene)
+            if entry is not None and set(entry["names"]) <= key:
+                plans[key] = Plan.of_table(entry)
     return plans[key]
 
 

@@ -35,6 +35,12 @@ class Plan:
         self.names, self.mass, self.stiffness = names, mass, stiffness
         self.acceleration, self.uses_t = acceleration, uses_t
 
+    @classmethod
+    def of_table(cls, entry: dict) -> "Plan":
+        """The plan of an entry of the generated :mod:`dyncalc.scenes.eom_tables` (its
+        parameters all of the scene's, sorted)."""
+        return cls(list(entry["names"]), entry["M"], entry["K"], entry["a"], entry["uses_t"])
+
     def matrices(self, q, params: dict):
         """``(M, K)`` at ``q`` (arrays) for ``params`` (name -> array of the same length)."""
         args = [params[name] for name in self.names]
