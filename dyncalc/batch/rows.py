@@ -387,10 +387,11 @@ def EomRows(*, scene: str | None = None, about: str | None = None,
                       rtol=rtol, strict=strict,
                       example=",".join(p.name for p in record.params[:2]))
     # the vectorised path: derived once, the numbers on columns (commands/eom_columns)
-    from ..commands.eom_columns import scene_columns, scene_parameters
+    from ..commands.eom_columns import light_probe, scene_columns, scene_parameters
     from .fast_commands import _command_fast
 
     spec.parameter = scene_parameters(scene).get
     spec.adapter, spec.fast = scene_columns, _command_fast
+    spec.light_probe = light_probe  # a scene of the generated table: no one-off, no sympy
     spec.probed = {}  # one probe (a whole one-off) per kind of block, not one per chunk
     return spec

@@ -1,6 +1,7 @@
-"""``eom --scene NAME --batch`` on whole columns: the scene is derived once (sympy) for the
-parameters a block gives, and each row's numbers come from the numpy functions of that
-derivation (:mod:`dyncalc.physics.eom_columns`), the ones the one-off evaluates too.
+"""``eom --scene NAME --batch`` on whole columns: each row's numbers come from the numpy
+functions of the scene's derivation, generated at build time into
+:mod:`dyncalc.scenes.eom_tables` (tools/gen_eom_columns.py), which the one-off evaluates too,
+so both agree bit for bit by construction and the batch never imports sympy.
 
 Taken here: one-coordinate scenes, not forced, whose equilibria do not depend on the values
 (``pendulum``: 0 and pi), every row with the first row's stabilities, the chosen equilibrium
@@ -13,33 +14,56 @@ import math
 
 from ..lazy import numpy as np
 
-__all__ = ["scene_columns", "derivation", "scene_parameters"]
+__all__ = ["scene_columns", "derivation", "derive_scene", "scene_parameters", "light_probe",
+           "table_plan"]
 
-#: (scene, parameters given) -> the derivation's numbers (:func:`derivation`), per process.
+#: scene -> the table's numbers (:func:`derivation`), per process.
 _CACHE: dict = {}
 
 
 class _Derived:
     """What a block needs of one derivation: the equation texts, the :class:`Plan`, the
-    constant equilibria, the coordinate and whether it is an angle, the one-off's warnings."""
+    constant equilibria, the coordinate and whether it is an angle, the one-off's warnings
+    and (from the table) the units of the results."""
 
-    __slots__ = ("texts", "plan", "roots", "coord", "angle", "warnings")
+    __slots__ = ("texts", "plan", "roots", "coord", "angle", "warnings", "dims")
 
     def __init__(self, **kw):
         for name in self.__slots__:
-            setattr(self, name, kw[name])
+            setattr(self, name, kw.get(name))
 
 
-def derivation(scene: str, given: frozenset) -> _Derived | None:
-    """The scene derived with every parameter a symbol (once per process and set of
-    parameters given), or ``None`` where the vectorised path does not take it."""
-    key = (scene, given)
-    if key not in _CACHE:
-        _CACHE[key] = _derive(scene, given)
-    return _CACHE[key]
+def table_plan(scene: str | None):
+    """The :class:`~dyncalc.physics.eom_columns.Plan` of the generated table's functions for
+    ``scene`` (its parameters all of the scene's, sorted), or ``None``: not in the table."""
+    from ..scenes.eom_tables import TABLES
+
+    entry = TABLES.get(scene)
+    if entry is None:
+        return None
+    from ..physics.eom_columns import Plan
+
+    return Plan.of_table(entry)
 
 
-def _derive(scene: str, given: frozenset):
+def derivation(scene: str, given: frozenset = frozenset()) -> _Derived | None:
+    """The scene's numbers from the generated table (once per process), or ``None`` where
+    the vectorised path does not take it (the scene is not in the table)."""
+    if scene not in _CACHE:
+        from ..scenes.eom_tables import TABLES
+
+        entry = TABLES.get(scene)
+        _CACHE[scene] = None if entry is None else _Derived(
+            texts=[entry["text"]], plan=table_plan(scene), roots=list(entry["roots"]),
+            coord=entry["coord"], angle=entry["angle"], warnings=entry["warnings"],
+            dims=entry["dims"])
+    return _CACHE[scene]
+
+
+def derive_scene(scene: str, given: frozenset):
+    """The scene derived with sympy, every parameter a symbol (what tools/gen_eom_columns.py
+    writes into the table and the tests compare it with), or ``None`` where the vectorised
+    path does not take it."""
     from ..physics.eom_columns import plan_of
     from .eom import read
     from .eom_results import constant_roots, derive_system
@@ -64,6 +88,52 @@ def _derive(scene: str, given: frozenset):
         if "D" in inputs.trees else ()
     return _Derived(texts=texts, plan=plan, roots=roots, coord=inputs.coords[0],
                     angle=angle, warnings=warnings)
+
+
+class _Probe:
+    """What a block takes of a probe (a one-off Result) when the table gives it: the scene,
+    the inputs the one-off adds (the defaults, in its order) and the units of the results."""
+
+    __slots__ = ("scene", "inputs", "results")
+
+    def __init__(self, scene, inputs, results):
+        self.scene, self.inputs, self.results = scene, inputs, results
+
+
+class _Named:
+    __slots__ = ("dim",)
+
+    def __init__(self, dim):
+        self.dim = dim
+
+
+def light_probe(spec, given_names, out):
+    """A stand-in for the probe of a block of ``eom --scene --batch`` when the scene is in
+    the table (no one-off, so no sympy): the inputs are the scene's parameters in its order
+    (the defaults parsed as the one-off parses them), the results' units from the table.
+    ``None``: not a scene of the table (the block probes the one-off)."""
+    scene = spec.settings.get("scene")
+    d = derivation(scene) if scene is not None else None
+    if d is None or d.dims is None or spec.settings.get("about") is not None:
+        return None
+    from ..result import entry_from_parsed
+    from ..scenes.energies import energies
+    from ..units import parse_quantity
+
+    inputs = {}
+    for p in energies(scene).params:
+        if p.name in given_names:
+            inputs[p.name] = None  # (the column's own cells)
+        elif p.default is not None:
+            constraint = None if p.signed else ("nonnegative" if p.name in ("kappa", "b")
+                                                else "positive")
+            parsed = parse_quantity(p.default, p.dim, label=f"{p.name}=",
+                                    constraint=constraint)
+            inputs[p.name] = entry_from_parsed(p.name, parsed, p.dim)
+        else:
+            return None
+    results = {name: _Named(d.dims.get(name)) for name in out.values}
+    return _Probe(scene, inputs, results)
 
 
 def scene_parameters(scene: str) -> dict:
@@ -112,7 +182,7 @@ def scene_columns(arrays: dict, settings: dict):
     record = energies(scene)
     params = {p.name: p for p in record.params}
     given = frozenset(k for k in arrays if k in params)
-    d = derivation(scene, given)
+    d = derivation(scene)
     if d is None:
         return None
     n = len(next(iter(arrays.values())))

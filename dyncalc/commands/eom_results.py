@@ -262,6 +262,15 @@ def _plan(system, inputs):
     key = frozenset(inputs.values)
     if key not in plans:
         plans[key] = plan_of(system, list(inputs.values))
+        if plans[key] is not None and inputs.scene is not None:
+            # the generated functions the batch evaluates (dyncalc.scenes.eom_tables), the
+            # same source as plan_of's: both agree bit for bit by construction
+            from ..physics.eom_columns import Plan
+            from ..scenes.eom_tables import TABLES
+
+            entry = TABLES.get(inputs.scene)
+            if entry is not None and set(entry["names"]) <= key:
+                plans[key] = Plan.of_table(entry)
     return plans[key]
 
 
@@ -426,8 +435,6 @@ def _number_text(v, angle: bool) -> str:
 def _equilibria_text(coords, points, stabilities, numbers, cdims) -> str:
     if not points:
         return "none"
-    from ..physics.symbolic import text_of
-
     parts = []
     for point, stable in zip(points, stabilities):
         items = []
@@ -436,7 +443,9 @@ def _equilibria_text(coords, points, stabilities, numbers, cdims) -> str:
                 items.append(f"{c}=any")
             elif numbers:
                 items.append(f"{c}={_number_text(v, False)}")
-            else:
+            else:  # (sympy only here: the batch's numbers do not load it)
+                from ..physics.symbolic import text_of
+
                 items.append(f"{c}={text_of(v)}")
         word = {True: "stable", False: "unstable", None: "stability open"}[stable]
         parts.append(", ".join(items) + f" ({word})")

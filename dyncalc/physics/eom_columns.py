@@ -18,10 +18,7 @@ from __future__ import annotations
 
 import math
 
-import sympy
-
 from ..lazy import numpy as np
-from . import lagrange_equations as lagrange
 
 __all__ = ["Plan", "plan_of", "one_frequency", "constant_equilibria"]
 
@@ -37,6 +34,12 @@ class Plan:
     def __init__(self, names, mass, stiffness, acceleration, uses_t):
         self.names, self.mass, self.stiffness = names, mass, stiffness
         self.acceleration, self.uses_t = acceleration, uses_t
+
+    @classmethod
+    def of_table(cls, entry: dict) -> "Plan":
+        """The plan of an entry of the generated :mod:`dyncalc.scenes.eom_tables` (its
+        parameters all of the scene's, sorted)."""
+        return cls(list(entry["names"]), entry["M"], entry["K"], entry["a"], entry["uses_t"])
 
     def matrices(self, q, params: dict):
         """``(M, K)`` at ``q`` (arrays) for ``params`` (name -> array of the same length)."""
@@ -60,6 +63,9 @@ def plan_of(system, names) -> Plan | None:
     """The :class:`Plan` of a derivation (``names``: the parameters given a value), or
     ``None``: more than one coordinate, a forcing in ``t``, a coordinate free of the static
     equations, or a parameter without a value in ``M`` or ``K``."""
+    import sympy
+
+    from . import lagrange_equations as lagrange
     s = system.symbols
     if len(s.q) != 1 or system.forced or lagrange.free_coordinates(system):
         return None
@@ -98,6 +104,9 @@ def constant_equilibria(system, angle: bool) -> list[float] | None:
     """The equilibria of a one-coordinate derivation when they do not depend on the values
     (sympy's roots are numbers), as the numeric search gives them (angles wrapped to
     (-pi, pi], sorted by size, the positive first); ``None`` otherwise."""
+    import sympy
+
+    from . import lagrange_equations as lagrange
     q = system.symbols.q[0]
     equations = [e for e in system.static if e != 0]
     if not equations or not lagrange.solvable(equations, [q]):
