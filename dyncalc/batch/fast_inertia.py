@@ -70,6 +70,8 @@ def _allowed(kind: str, keys: tuple) -> bool:
 #: ``=`` and blanks, is checked by :data:`_SLOT_RE`; the one-off reads it as this literal).
 _VALUE_RE = re.compile(rf"(?<=[= \t]){_LITERAL_CELL}")
 _SLOT_RE = re.compile(r"^([ \t]*)#([^#]*)$")
+#: A slot of a template, as a pattern: the literal :data:`_VALUE_RE` takes there.
+_SLOT = f"({_LITERAL_CELL})"
 
 
 def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
@@ -94,6 +96,12 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
     if not candidates or any("\n" in "".join(cells) for cells in body_cells):
         return []
     whole = len(candidates) == n
+    if whole and axis_cells.count(axis_cells[0]) == n:  # one template a column: one pass
+        parts = _one_template(bodies, body_cells, cache)
+        if parts is not None:
+            block = _block(spec, parts, np.arange(n, dtype=np.intp), body_cells, bodies,
+                           axis_cells[0], want_json, cache)
+            return [] if block is None else [block]
     templates = []
     for cells in body_cells:
         picked = cells if whole else [cells[i] for i in candidates]
@@ -118,15 +126,42 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
         for j, shape in zip(used, shapes):
             group = body_cells[j] if every else [body_cells[j][i] for i in members]
             found = _VALUE_RE.findall("\n".join(group))
-            if len(found) != len(shape[1]) * len(group):
+            k = len(shape[1])
+            if len(found) != k * len(group):
                 break
-            parts.append((bodies[j], shape, found))
+            parts.append((bodies[j], shape, [found[i::k] for i in range(k)]))
         else:
             block = _block(spec, parts, np.asarray(members, dtype=np.intp), body_cells,
                            bodies, axis, want_json, cache)
             if block is not None:
                 blocks.append(block)
     return blocks
+
+
+def _one_template(bodies, body_cells, cache: dict):
+    """The ``parts`` of :func:`_block` when every cell of each body column has its first
+    cell's template (or ``None``): each column is read in one pass by a pattern made of the
+    template's fixed text with a literal in each slot, the numbers of each slot coming out as
+    a column. The fixed text before a slot ends in ``=`` or a blank, which no literal holds,
+    so a cell matching the pattern has the template :data:`_VALUE_RE` gives it."""
+    parts = []
+    for column, cells in zip(bodies, body_cells):
+        first = cells[0]
+        if "#" in first or not first.strip():
+            return None
+        template = _VALUE_RE.sub("#", first)
+        shape = _template(template, cache)
+        if shape is None:
+            return None
+        key = ("inertia-pattern", template)
+        if key not in cache:
+            pieces = template.split("#")
+            cache[key] = re.compile("^" + _SLOT.join(map(re.escape, pieces)) + "$", re.M)
+        found = cache[key].findall("\n".join(cells))
+        if len(found) != len(cells):
+            return None
+        parts.append((column, shape, [found] if len(shape[1]) == 1 else list(zip(*found))))
+    return parts
 
 
 def _template(template: str, cache: dict):
@@ -158,7 +193,7 @@ def _dim(kind: str, key: str):
 
 def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     """One template's rows: ``parts`` holds each body's column, template shape and number
-    literals, in the order of the row's bodies (``b1``, ``b2``, ... of the one-off);
+    literals (a list a parameter), in the order of the row's bodies (``b1``, ``b2``, ...);
     ``axis`` the rows' axis cell (a world axis, perhaps signed, or empty)."""
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_columns import centred_composite
@@ -167,10 +202,9 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     good = np.ones(n, dtype=bool)
     reads, placed = [], []
     for index, (_column, (kind, keys, slots, sign), literals) in enumerate(parts, start=1):
-        k = len(keys)
         si = {}
         for j, key in enumerate(keys):
-            column = literals[j::k]
+            column = literals[j]
             read = _read_column(column, slots[j][1].strip(), _Param(key, _dim(kind, key)),
                                 spec.strict, cache)
             good &= read.ok
