@@ -157,10 +157,13 @@ def _one_template(bodies, body_cells, cache: dict):
         if key not in cache:
             pieces = template.split("#")
             cache[key] = re.compile("^" + _SLOT.join(map(re.escape, pieces)) + "$", re.M)
-        found = cache[key].findall("\n".join(cells))
-        if len(found) != len(cells):
+        # split: the text between matches, then a match's slots, ...; every cell matched
+        # where the text between is only the line breaks
+        k, n = len(shape[1]) + 1, len(cells)
+        split = cache[key].split("\n".join(cells))
+        if len(split) != 1 + n * k or "".join(split[::k]) != "\n" * (n - 1):
             return None
-        parts.append((column, shape, [found] if len(shape[1]) == 1 else list(zip(*found))))
+        parts.append((column, shape, [split[j::k] for j in range(1, k)]))
     return parts
 
 
