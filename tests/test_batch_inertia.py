@@ -229,3 +229,80 @@ def test_world_axis_rows_take_the_vectorised_path_with_the_textbook_moment():
         assert found[i]["J_axis"][0] == pytest.approx(expected, rel=1e-15)
         assert found[i]["radius_of_gyration"][0] == pytest.approx(math.sqrt(expected / 3.0),
                                                                   rel=1e-15)
+
+
+#: Templates of one column each (one template a column: the one-pass reader), odd spacing,
+#: a unit per body and per parameter, a density, a hole.
+_ONE_TEMPLATE = [
+    ('disk(m={} kg, r={} m)', '-disk(m={} kg, r={} m)'),
+    ('disk( m =  {}kg ,r=\t{} cm )', ' - ring(m={} g,r={} mm)'),
+    ('solid-cylinder(h={} ft, m={} t, r={} m)', '-rod(rho={} kg/m, l={}m)'),
+    ('plate(a={}, b={} mm, m={})', 'point(m={} g)'),
+]
+
+
+def _number(rng) -> str:
+    """A literal as a user may type it: repr, %g, an exponent in E, a sign, an extreme."""
+    x = rng.choice(_MAGNITUDES) * rng.uniform(0.5, 2.0) if rng.random() < 0.05 else \
+        rng.uniform(0.01, 10.0)
+    form = rng.choice(["{!r}", "{:.6g}", "{:E}", "+{!r}", "{:.3e}"])
+    return form.format(x)
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+@pytest.mark.parametrize("seed", range(len(_ONE_TEMPLATE)))
+def test_one_template_columns_are_the_one_off_byte_for_byte(tmp_path, as_json, seed):
+    """Every cell of a column with its first cell's template (read in one pass a column):
+    the one-off's bytes, and with a malformed cell, a negative mass or a leading zero among
+    them, those rows the one-off's refusals while the others still match it."""
+    rng, template = random.Random(seed), _ONE_TEMPLATE[seed]
+    cells = [[t.format(*(_number(rng) for _ in range(t.count("{}")))) for t in template]
+             for _ in range(150)]
+    rows = [",".join(f'"{c}"' for c in row) for row in cells]
+    from dyncalc.batch.fast_inertia import inertia_fast
+    from dyncalc.batch.header import read_header
+
+    spec = InertiaRows()  # the kernel takes most rows (else the bytes prove nothing)
+    blocks = inertia_fast(spec, read_header(1, ["b1", "b2"], spec), list(zip(*cells)),
+                          as_json, {})
+    assert sum(len(b.rows) for b in blocks) >= 50  # (a hole heavier than the body: none)
+    path = tmp_path / "one.csv"
+    path.write_text("b1,b2\n" + "\n".join(rows) + "\n")
+    fast, generic = _run(path, as_json, True), _run(path, as_json, False)
+    assert fast == generic
+    bad = ["1..5", "-2.5", "007"]
+    for k, text in enumerate(bad):
+        cells = [t.format(*(_number(rng) for _ in range(t.count("{}")))) for t in template]
+        cells[k % 2] = template[k % 2].replace("{}", text, 1).format(
+            *(_number(rng) for _ in range(template[k % 2].count("{}") - 1)))
+        rows.insert(10 + 40 * k, ",".join(f'"{c}"' for c in cells))
+    path.write_text("b1,b2\n" + "\n".join(rows) + "\n")
+    fast, generic = _run(path, as_json, True), _run(path, as_json, False)
+    assert fast == generic
+    errors = {e.split(":")[1]: e for e in fast[2].splitlines()}
+    assert "two numbers side by side" in errors[" line 12"]
+    assert "must be positive; got -2.5" in errors[" line 52"]
+    assert "the leading zero in '007' is ambiguous" in errors[" line 92"]
+
+
+def test_a_one_template_column_is_one_block_and_read_in_one_pass():
+    """The one-pass reader takes the columns (each slot's numbers as typed) and the rows
+    become one block; the annulus m = 4 - 1, J_zz = 4 (0.2^2)/2 - 1 (0.1^2)/2 (Table 3.1)."""
+    from dyncalc.batch.fast_inertia import _one_template, inertia_fast
+    from dyncalc.batch.header import read_header
+
+    spec = InertiaRows()
+    columns = read_header(1, ["b1", "b2"], spec)
+    b1 = ["disk( m = 4kg, r=0.2 m)", "disk( m = +4e0kg, r=20E-2 m)", "disk( m = 4.kg, r=.2 m)"]
+    b2 = ["-disk(m=1 kg, r=10 cm)"] * 3
+    parts = _one_template(columns, [b1, b2], {})
+    assert [p[2] for p in parts] == [[["4", "+4e0", "4."], ["0.2", "20E-2", ".2"]],
+                                     [["1"] * 3, ["10"] * 3]]
+    blocks = inertia_fast(spec, columns, [b1, b2], True, {})
+    assert len(blocks) == 1 and blocks[0].rows.tolist() == [0, 1, 2]
+    assert blocks[0].values["m"].tolist() == [3.0] * 3
+    assert blocks[0].values["J_C"][:, 2, 2] == pytest.approx([4 * 0.04 / 2 - 0.01 / 2] * 3,
+                                                             rel=1e-15)
+    # a cell off the template (a second body word, a blank) leaves it to the grouped reader
+    assert _one_template(columns, [b1, b2[:2] + [""]], {}) is None
+    assert _one_template(columns, [b1, b2[:2] + ["-disk(m=1 kg, r=10 cm, )"]], {}) is None
