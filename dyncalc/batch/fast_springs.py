@@ -1,0 +1,187 @@
+"""``spring-series`` / ``spring-parallel --batch`` with element words on columns.
+
+A cell of an element column (``k1``, ``k2``, ...) may hold a standard element,
+``cantilever(l=2m, EI=2e4 N*m^2)``, ``simply-supported(...)``, ``axial(...)`` or
+``coil(...)``, as on the command line. The rows of a chunk are grouped by the shape of their
+cells (which element with which parameters, in which order, or a plain stiffness); each
+parameter is read a column at a time (:func:`~dyncalc.batch.columns._read_column`), each
+element's stiffness is :func:`~dyncalc.physics.numerics.monomial`'s twin
+(:func:`~dyncalc.physics.numerics_arrays.monomial_array`) with the physics function's
+coefficient and factors in its order, and the network is the series or parallel column kernel
+in N/m, bit for bit the one-off (tests/test_batch_spring_elements.py). The one-off adds in the
+first element's unit: an element's is N/m, so a group is taken where its first element is an
+element word or a stiffness typed in N/m (or bare).
+
+Left to the one-off row by row: shared values (``EI=...`` columns), ``beam(...)`` and
+``torsion-bar(...)``, nested groups, expressions in parentheses, a header unit on a column of
+element words, and every row that warns or is refused (a non-positive or infinite value, an
+element or a result that overflows or underflows).
+"""
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+
+from .cells import Table
+from .columns import _read_column
+from .fast import FastBlock, _input_texts, json_head
+
+__all__ = ["spring_fast", "ELEMENT_FORMS"]
+
+#: The elements taken here: (coefficient, the alternative groups of factors with their
+#: powers, the required factors with their powers), in the physics function's order
+#: (:mod:`dyncalc.physics.springs`: ``_rigidity`` first, then ``l``).
+ELEMENT_FORMS = {
+    "cantilever": (3.0, ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "simply-supported": (48.0, ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "axial": (1.0, ((("EA", 1),), (("E", 1), ("A", 1))), (("l", -1),)),
+    "coil": (0.125, (), (("G", 1), ("d", 4), ("D", -3), ("n", -1))),
+}
+_CELL_RE = re.compile(r"^\s*(cantilever|simply-supported|axial|coil)\s*\(([^()\[\]\"]*)\)\s*$")
+_ARG_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
+_NUMBER_START_RE = re.compile(r"^\s*[-+.0-9]")
+#: The smallest normal float: a result below it may have underflowed (the one-off warns).
+_TINY = 2.2250738585072014e-308
+
+
+def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
+    """The chunk's rows of plain stiffnesses (:func:`~dyncalc.batch.fast_commands._command_fast`)
+    and of element words (here); the others are left to the generic path."""
+    from .fast_commands import _command_fast
+
+    blocks = _command_fast(spec, columns, table, want_json, cache)
+    if not table or not columns or any(spec.parameter(col.key) is None for col in columns):
+        return blocks
+    n = table.n if isinstance(table, Table) else len(table[0])
+    cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+    if not any("(" in c for col in columns for c in cells[col.key]):
+        return blocks
+    shapes = {col.key: [_shape(c) for c in cells[col.key]] for col in columns}
+    groups: dict[tuple, list[int]] = {}
+    for i in range(n):
+        key = tuple(shapes[col.key][i] for col in columns)
+        groups.setdefault(key, []).append(i)
+    for key, members in groups.items():
+        if not any(isinstance(s, tuple) for s in key) or any(s is None for s in key):
+            continue
+        block = _group_block(spec, columns, key, np.asarray(members, dtype=np.intp), cells,
+                             want_json, cache)
+        if block is not None:
+            blocks.append(block)
+    return blocks
+
+
+def _shape(cell: str):
+    """``""`` (empty), ``"leaf"`` (a stiffness), ``(kind, (names...))`` (an element taken
+    here) or ``None`` (anything else: the one-off's)."""
+    if not cell:
+        return ""
+    if "(" not in cell:
+        return "leaf" if _NUMBER_START_RE.match(cell) else None
+    m = _CELL_RE.match(cell)
+    if m is None:
+        return None
+    kind, body = m.group(1), m.group(2)
+    names = []
+    for arg in body.split(","):
+        a = _ARG_RE.match(arg)
+        if a is None or not a.group(2).strip():
+            return None
+        names.append(a.group(1))
+    coefficient, alternatives, required = ELEMENT_FORMS[kind]
+    if len(set(names)) != len(names):
+        return None
+    need = {name for name, _p in required}
+    chosen = [g for g in alternatives if any(name in names for name, _p in g)]
+    if len(chosen) > 1 or (alternatives and not chosen):
+        return None
+    if chosen:
+        need |= {name for name, _p in chosen[0]}
+    if set(names) != need:
+        return None
+    return kind, tuple(names)
+
+
+def _texts(cells: list[str]) -> dict[str, list[str]]:
+    """The parameter texts of element cells of one shape, by name."""
+    out: dict[str, list[str]] = {}
+    for cell in cells:
+        body = _CELL_RE.match(cell).group(2)
+        for arg in body.split(","):
+            a = _ARG_RE.match(arg)
+            out.setdefault(a.group(1), []).append(a.group(2).strip())
+    return out
+
+
+def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock | None:
+    from ..commands.springs import ELEMENTS
+    from ..physics.columns import Columns
+    from ..physics.numerics_arrays import monomial_array
+    from ..physics.springs import parallel_stiffness, series_stiffness
+    from ..units import STIFFNESS
+    from .fast_commands import _Param, _probe
+
+    how = spec.how
+    given = [col for col, shape in zip(columns, key) if shape != ""]
+    shapes = [shape for shape in key if shape != ""]
+    m = len(rows)
+    good = np.ones(m, dtype=bool)
+    stiffness, inputs, results = [], [], {}
+    row_list = rows.tolist()
+    for index, (col, shape) in enumerate(zip(given, shapes), 1):
+        name = f"k{index}"
+        column = [cells[col.key][i] for i in row_list]
+        if shape == "leaf":
+            read = _read_column(column, col.unit, _Param(name, STIFFNESS), spec.strict, cache)
+            good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
+            if index == 1:  # the one-off adds in the first element's unit: N/m here
+                good &= np.array([json.loads(u) == "N/m" for u, _a in read.unit_json],
+                                 dtype=bool) if m else good
+            stiffness.append(read.si)
+            inputs.append((name, read, column, col.unit, False, None))
+            continue
+        if col.unit:
+            return None
+        kind, names = shape
+        coefficient, alternatives, required = ELEMENT_FORMS[kind]
+        dims = ELEMENTS[kind].params
+        texts = _texts(column)
+        si = {}
+        for pname in names:
+            read = _read_column(texts[pname], "", _Param(pname, dims[pname]), spec.strict,
+                                cache)
+            good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
+            si[pname] = np.where(good, read.si, 1.0)
+            inputs.append((f"{name}.{pname}", read, texts[pname], "", False, None))
+        chosen = [g for g in alternatives if g[0][0] in names]
+        factors = [(si[p], power) for p, power in (chosen[0] if chosen else ())]
+        factors += [(si[p], power) for p, power in required]
+        k = monomial_array(coefficient, factors)
+        good &= np.isfinite(k) & (k >= _TINY)
+        stiffness.append(k)
+        results[name] = k
+    if not good.any():
+        return None
+    kernel = (series_stiffness if how == "series" else parallel_stiffness).columns
+    with np.errstate(all="ignore"):
+        out = kernel(np.column_stack([np.where(good, k, 1.0) for k in stiffness]))
+    k_eq = out.values["k_eq"]
+    good &= out.exact & np.isfinite(k_eq) & (k_eq >= _TINY)
+    if not good.any():
+        return None
+    values = {"k_eq": k_eq, **results}
+    first = int(np.argmax(good))
+    columns_out = Columns(values, exact=good, model=how)
+    probe = _probe(spec, given, cells, int(rows[first]), columns_out,
+                   {name: array[first] for name, array in values.items()})
+    if probe is None:
+        return None
+    keep = np.flatnonzero(good)
+    head = texts_out = None
+    if want_json:
+        head = json_head(spec.command, None, how, "closed-form")
+        texts_out = _input_texts(inputs, keep, {})
+    return FastBlock(rows[keep], {name: array[keep] for name, array in values.items()},
+                     {name: STIFFNESS for name in values}, head, texts_out, "{}")
