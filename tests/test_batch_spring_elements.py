@@ -16,10 +16,13 @@ from dyncalc.batch.fast_springs import spring_fast
 
 UNITS = {"l": ["m", "mm", "cm", "ft"], "EI": ["N*m^2", "kN*m^2"], "E": ["GPa", "MPa", "Pa"],
          "I": ["m^4", "cm^4", "mm^4"], "EA": ["N", "kN"], "A": ["m^2", "cm^2", "mm^2"],
-         "G": ["GPa", "MPa"], "d": ["mm", "m"], "D": ["mm", "cm"], "n": [""]}
+         "G": ["GPa", "MPa"], "d": ["mm", "m"], "D": ["mm", "cm"], "n": [""], "c": [""],
+         "GJ_t": ["N*m^2", "kN*m^2"], "J_t": ["m^4", "mm^4"]}
 KINDS = {"cantilever": [("l", "EI"), ("E", "I", "l")],
          "simply-supported": [("EI", "l"), ("l", "E", "I")],
+         "beam": [("c", "l", "EI"), ("E", "I", "l", "c")],
          "axial": [("l", "EA"), ("E", "A", "l")], "coil": [("G", "d", "D", "n")]}
+TORSIONAL = [("l", "GJ_t"), ("G", "J_t", "l")]
 
 
 def _run(how, path, fast, as_json):
@@ -34,9 +37,9 @@ def _value(rng: random.Random) -> str:
     return repr(10.0 ** exponent) if rng.random() < 0.5 else f"{10.0 ** exponent:.4g}"
 
 
-def _element(rng: random.Random) -> str:
-    kind = rng.choice(sorted(KINDS))
-    names = rng.choice(KINDS[kind])
+def _element(rng: random.Random, torsional: bool = False) -> str:
+    kind = "torsion-bar" if torsional else rng.choice(sorted(KINDS))
+    names = rng.choice(TORSIONAL if torsional else KINDS[kind])
     args = []
     for name in names:
         unit = rng.choice(UNITS[name])
@@ -44,27 +47,28 @@ def _element(rng: random.Random) -> str:
     return f'"{kind}({", ".join(args)})"'
 
 
-def _table(rng: random.Random, rows: int) -> str:
-    lines = ["k1,k2,k3 [N/m]"]
+def _table(rng: random.Random, rows: int, torsional: bool = False) -> str:
+    lines = ["k1,k2,k3 [N*m/rad]" if torsional else "k1,k2,k3 [N/m]"]
+    units = ["", " N*m/rad", " kN*m/rad"] if torsional else ["", " N/m", " lbf/in"]
     for _ in range(rows):
         cells = []
         for j in range(3):
             pick = rng.random()
             if pick < 0.55 and j < 2:
-                cells.append(_element(rng))
+                cells.append(_element(rng, torsional))
             elif pick < 0.9 or j == 0:
-                cells.append(_value(rng) + ("" if j == 2 else rng.choice(["", " N/m",
-                                                                           " lbf/in"])))
+                cells.append(_value(rng) + ("" if j == 2 else rng.choice(units)))
             else:
                 cells.append("")
         lines.append(",".join(cells))
     return "\n".join(lines) + "\n"
 
 
+@pytest.mark.parametrize("torsional", [False, True], ids=["linear", "torsional"])
 @pytest.mark.parametrize("how", ["series", "parallel"])
-def test_random_element_rows_equal_the_one_off(tmp_path, how):
+def test_random_element_rows_equal_the_one_off(tmp_path, how, torsional):
     path = tmp_path / "elements.csv"
-    path.write_text(_table(random.Random(f"elements-{how}"), 300))
+    path.write_text(_table(random.Random(f"elements-{how}-{torsional}"), 300, torsional))
     for as_json in (False, True):
         assert _run(how, path, True, as_json) == _run(how, path, False, as_json)
 

@@ -1,19 +1,18 @@
 """``spring-series`` / ``spring-parallel --batch`` with element words on columns.
 
 A cell of an element column (``k1``, ``k2``, ...) may hold a standard element,
-``cantilever(l=2m, EI=2e4 N*m^2)``, ``simply-supported(...)``, ``axial(...)`` or
-``coil(...)``, as on the command line. The rows of a chunk are grouped by the shape of their
+``cantilever(l=2m, EI=2e4 N*m^2)``, ``simply-supported(...)``, ``beam(...)``,
+``axial(...)``, ``torsion-bar(...)`` or ``coil(...)``, as on the command line. The rows of a chunk are grouped by the shape of their
 cells (which element with which parameters, in which order, or a plain stiffness); each
 parameter is read a column at a time (:func:`~dyncalc.batch.columns._read_column`), each
 element's stiffness is :func:`~dyncalc.physics.numerics.monomial`'s twin
 (:func:`~dyncalc.physics.numerics_arrays.monomial_array`) with the physics function's
 coefficient and factors in its order, and the network is the series or parallel column kernel
 in N/m, bit for bit the one-off (tests/test_batch_spring_elements.py). The one-off adds in the
-first element's unit: an element's is N/m, so a group is taken where its first element is an
-element word or a stiffness typed in N/m (or bare).
+first element's unit: an element's is SI (N/m, N*m/rad), so a group is taken where its
+first element is an element word or a stiffness typed in SI (or bare).
 
-Left to the one-off row by row: shared values (``EI=...`` columns), ``beam(...)`` and
-``torsion-bar(...)``, nested groups, expressions in parentheses, a header unit on a column of
+Left to the one-off row by row: shared values (``EI=...`` columns), nested groups, expressions in parentheses, a header unit on a column of
 element words, and every row that warns or is refused (a non-positive or infinite value, an
 element or a result that overflows or underflows).
 """
@@ -30,16 +29,21 @@ from .fast import FastBlock, _input_texts, json_head
 
 __all__ = ["spring_fast", "ELEMENT_FORMS"]
 
-#: The elements taken here: (coefficient, the alternative groups of factors with their
-#: powers, the required factors with their powers), in the physics function's order
-#: (:mod:`dyncalc.physics.springs`: ``_rigidity`` first, then ``l``).
+#: The elements taken here: (coefficient, its leading factors, the alternative groups of
+#: factors with their powers, the other factors with their powers), in the physics
+#: function's order (:mod:`dyncalc.physics.springs`: ``_rigidity`` first, then ``l``).
+#: ``beam``'s ``c`` is ``monomial``'s coefficient: a coefficient of 1 times ``c`` as the
+#: first factor is the same mantissa and exponent at every step.
 ELEMENT_FORMS = {
-    "cantilever": (3.0, ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
-    "simply-supported": (48.0, ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
-    "axial": (1.0, ((("EA", 1),), (("E", 1), ("A", 1))), (("l", -1),)),
-    "coil": (0.125, (), (("G", 1), ("d", 4), ("D", -3), ("n", -1))),
+    "cantilever": (3.0, (), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "simply-supported": (48.0, (), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "beam": (1.0, (("c", 1),), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "axial": (1.0, (), ((("EA", 1),), (("E", 1), ("A", 1))), (("l", -1),)),
+    "torsion-bar": (1.0, (), ((("GJ_t", 1),), (("G", 1), ("J_t", 1))), (("l", -1),)),
+    "coil": (0.125, (), (), (("G", 1), ("d", 4), ("D", -3), ("n", -1))),
 }
-_CELL_RE = re.compile(r"^\s*(cantilever|simply-supported|axial|coil)\s*\(([^()\[\]\"]*)\)\s*$")
+_CELL_RE = re.compile(r"^\s*(cantilever|simply-supported|beam|axial|torsion-bar|coil)\s*"
+                      r"\(([^()\[\]\"]*)\)\s*$")
 _ARG_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
 _NUMBER_START_RE = re.compile(r"^\s*[-+.0-9]")
 #: The smallest normal float: a result below it may have underflowed (the one-off warns).
@@ -90,10 +94,10 @@ def _shape(cell: str):
         if a is None or not a.group(2).strip():
             return None
         names.append(a.group(1))
-    coefficient, alternatives, required = ELEMENT_FORMS[kind]
+    _coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
     if len(set(names)) != len(names):
         return None
-    need = {name for name, _p in required}
+    need = {name for name, _p in (*lead, *required)}
     chosen = [g for g in alternatives if any(name in names for name, _p in g)]
     if len(chosen) > 1 or (alternatives and not chosen):
         return None
@@ -120,12 +124,16 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
     from ..physics.columns import Columns
     from ..physics.numerics_arrays import monomial_array
     from ..physics.springs import parallel_stiffness, series_stiffness
-    from ..units import STIFFNESS
+    from ..units import STIFFNESS, TORSIONAL_STIFFNESS
     from .fast_commands import _Param, _probe
 
     how = spec.how
     given = [col for col, shape in zip(columns, key) if shape != ""]
     shapes = [shape for shape in key if shape != ""]
+    torsional = {shape[0] == "torsion-bar" for shape in shapes if shape != "leaf"}
+    if len(torsional) > 1:
+        return None  # linear and torsional elements: the one-off's refusal
+    dim = TORSIONAL_STIFFNESS if torsional.pop() else STIFFNESS
     m = len(rows)
     good = np.ones(m, dtype=bool)
     stiffness, inputs, results = [], [], {}
@@ -134,10 +142,12 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
         name = f"k{index}"
         column = [cells[col.key][i] for i in row_list]
         if shape == "leaf":
-            read = _read_column(column, col.unit, _Param(name, STIFFNESS), spec.strict, cache)
+            read = _read_column(column, col.unit, _Param(name, dim), spec.strict, cache)
             good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
-            if index == 1:  # the one-off adds in the first element's unit: N/m here
-                good &= np.array([json.loads(u) == "N/m" for u, _a in read.unit_json],
+            if dim is TORSIONAL_STIFFNESS:  # a bare number is N/m to the one-off: linear
+                good &= np.array([not assumed for _u, assumed in read.unit_json], dtype=bool)
+            if index == 1:  # the one-off adds in the first element's unit: SI here
+                good &= np.array([json.loads(u) == dim.si for u, _a in read.unit_json],
                                  dtype=bool) if m else good
             stiffness.append(read.si)
             inputs.append((name, read, column, col.unit, False, None))
@@ -145,7 +155,7 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
         if col.unit:
             return None
         kind, names = shape
-        coefficient, alternatives, required = ELEMENT_FORMS[kind]
+        coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
         dims = ELEMENTS[kind].params
         texts = _texts(column)
         si = {}
@@ -156,7 +166,7 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
             si[pname] = np.where(good, read.si, 1.0)
             inputs.append((f"{name}.{pname}", read, texts[pname], "", False, None))
         chosen = [g for g in alternatives if g[0][0] in names]
-        factors = [(si[p], power) for p, power in (chosen[0] if chosen else ())]
+        factors = [(si[p], power) for p, power in (*lead, *(chosen[0] if chosen else ()))]
         factors += [(si[p], power) for p, power in required]
         k = monomial_array(coefficient, factors)
         good &= np.isfinite(k) & (k >= _TINY)
@@ -184,4 +194,4 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
         head = json_head(spec.command, None, how, "closed-form")
         texts_out = _input_texts(inputs, keep, {})
     return FastBlock(rows[keep], {name: array[keep] for name, array in values.items()},
-                     {name: STIFFNESS for name in values}, head, texts_out, "{}")
+                     {name: dim for name in values}, head, texts_out, "{}")
