@@ -130,3 +130,17 @@ def test_an_overflowing_element_falls_back_to_the_one_off(tmp_path):
                    "(N/m)\n")
     assert code == 2 and out.splitlines()[1:] == ['"cantilever(l=1m, EI=3 N*m^2)",9,4.5,9.0']
     assert (code, out, err) == _run("series", path, False, False)
+
+
+@pytest.mark.parametrize("cell", ["cantilever(l=, EI=3 N*m^2)", "cantilever(l=2m, EI=3 kg)",
+                                  "cantilever(l=-2m, EI=3 N*m^2)", "coil(G=1GPa, d=1mm, D=1cm)",
+                                  "axial(l=1m, EA=2N, E=3Pa)", "cantilever(l=(1-1)*1m, EI=3)",
+                                  "cantilever(l=2m, EI=\"3\")", "rod(E=1Pa, A=1m^2, L=1m)"])
+def test_bad_element_cells_get_the_one_offs_message(tmp_path, cell):
+    path = tmp_path / "bad.csv"
+    quoted = cell.replace('"', '""')
+    path.write_text(f'k1,k2\n"{quoted}",5\n"cantilever(l=1m, EI=3 N*m^2)",9\n')
+    for as_json in (False, True):
+        fast = _run("series", path, True, as_json)
+        assert fast == _run("series", path, False, as_json)
+        assert fast[2].startswith("Error: line 2: ") and fast[2].count("\n") == 1

@@ -46,6 +46,9 @@ _CELL_RE = re.compile(r"^\s*(cantilever|simply-supported|beam|axial|torsion-bar|
                       r"\(([^()\[\]\"]*)\)\s*$")
 _ARG_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
 _NUMBER_START_RE = re.compile(r"^\s*[-+.0-9]")
+#: A parameter's value (after its ``=``, up to the next comma or parenthesis): the cells of a
+#: column differ in these alone when they have one shape.
+_VALUE_RE = re.compile(r"=([^,()\n]*)")
 #: The smallest normal float: a result below it may have underflowed (the one-off warns).
 _TINY = 2.2250738585072014e-308
 
@@ -62,10 +65,10 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
     if not any("(" in c for col in columns for c in cells[col.key]):
         return blocks
-    shapes = {col.key: [_shape(c) for c in cells[col.key]] for col in columns}
+    known: dict[str, object] = {}   # the shape of each skeleton (a cell with its values cut)
+    shapes = [[_shape_of(c, known) for c in cells[col.key]] for col in columns]
     groups: dict[tuple, list[int]] = {}
-    for i in range(n):
-        key = tuple(shapes[col.key][i] for col in columns)
+    for i, key in enumerate(zip(*shapes)):
         groups.setdefault(key, []).append(i)
     for key, members in groups.items():
         if not any(isinstance(s, tuple) for s in key) or any(s is None for s in key):
@@ -77,21 +80,30 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     return blocks
 
 
-def _shape(cell: str):
+def _shape_of(cell: str, known: dict):
     """``""`` (empty), ``"leaf"`` (a stiffness), ``(kind, (names...))`` (an element taken
-    here) or ``None`` (anything else: the one-off's)."""
+    here) or ``None`` (anything else: the one-off's); ``known``: the shapes of the skeletons
+    seen (the cell with its values cut out)."""
     if not cell:
         return ""
     if "(" not in cell:
         return "leaf" if _NUMBER_START_RE.match(cell) else None
-    m = _CELL_RE.match(cell)
+    skeleton = _VALUE_RE.sub("=", cell)
+    if skeleton not in known:
+        known[skeleton] = _shape(skeleton)
+    return known[skeleton]
+
+
+def _shape(skeleton: str):
+    """The shape of an element cell whose values are cut out (``cantilever(l=, EI=)``)."""
+    m = _CELL_RE.match(skeleton)
     if m is None:
         return None
     kind, body = m.group(1), m.group(2)
     names = []
     for arg in body.split(","):
         a = _ARG_RE.match(arg)
-        if a is None or not a.group(2).strip():
+        if a is None or a.group(2).strip():
             return None
         names.append(a.group(1))
     _coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
@@ -108,15 +120,14 @@ def _shape(cell: str):
     return kind, tuple(names)
 
 
-def _texts(cells: list[str]) -> dict[str, list[str]]:
-    """The parameter texts of element cells of one shape, by name."""
-    out: dict[str, list[str]] = {}
-    for cell in cells:
-        body = _CELL_RE.match(cell).group(2)
-        for arg in body.split(","):
-            a = _ARG_RE.match(arg)
-            out.setdefault(a.group(1), []).append(a.group(2).strip())
-    return out
+def _texts(cells: list[str], names: tuple) -> dict[str, list[str]] | None:
+    """The parameter texts of element cells of one shape (``names`` in the cells' order), by
+    name, read off the whole column in one pass; ``None`` if the values do not line up."""
+    values = _VALUE_RE.findall("\n".join(cells))
+    if len(values) != len(cells) * len(names):
+        return None
+    k = len(names)
+    return {name: [v.strip() for v in values[j::k]] for j, name in enumerate(names)}
 
 
 def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock | None:
@@ -157,7 +168,9 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
         kind, names = shape
         coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
         dims = ELEMENTS[kind].params
-        texts = _texts(column)
+        texts = _texts(column, names)
+        if texts is None:
+            return None
         si = {}
         for pname in names:
             read = _read_column(texts[pname], "", _Param(pname, dims[pname]), spec.strict,
