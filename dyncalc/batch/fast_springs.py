@@ -23,7 +23,6 @@ import re
 
 import numpy as np
 
-from .cells import Table
 from .columns import _read_column
 from .fast import FastBlock, _input_texts, json_head
 
@@ -61,7 +60,6 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     blocks = _command_fast(spec, columns, table, want_json, cache)
     if not table or not columns or any(spec.parameter(col.key) is None for col in columns):
         return blocks
-    n = table.n if isinstance(table, Table) else len(table[0])
     cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
     if not any("(" in c for col in columns for c in cells[col.key]):
         return blocks
