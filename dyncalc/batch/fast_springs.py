@@ -23,6 +23,7 @@ import re
 
 import numpy as np
 
+from .cells import Table
 from .columns import _read_column
 from .fast import FastBlock, _input_texts, json_head
 
@@ -57,12 +58,15 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     and of element words (here); the others are left to the generic path."""
     from .fast_commands import _command_fast
 
-    blocks = _command_fast(spec, columns, table, want_json, cache)
-    if not table or not columns or any(spec.parameter(col.key) is None for col in columns):
-        return blocks
+    if not table or not columns or any(spec.parameter(col.key) is None for col in columns) \
+            or (isinstance(table, Table) and table.numbers() is not None):
+        return _command_fast(spec, columns, table, want_json, cache)
     cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
     if not any("(" in c for col in columns for c in cells[col.key]):
-        return blocks
+        return _command_fast(spec, columns, table, want_json, cache)
+    # a column of element words in every row leaves no row to the plain stiffnesses' path
+    blocks = [] if any(all("(" in c for c in cells[col.key]) for col in columns) else \
+        _command_fast(spec, columns, table, want_json, cache)
     known: dict[str, object] = {}   # the shape of each skeleton (a cell with its values cut)
     shapes = [[_shape_of(c, known) for c in cells[col.key]] for col in columns]
     groups: dict[tuple, list[int]] = {}
