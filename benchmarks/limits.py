@@ -36,6 +36,7 @@ LIMITS = {
     "natural-frequency clock-pendulum": [str(LIMIT / "clock_pendulum.py")],
     "spring-series": [str(LIMIT / "springs.py"), "series"],
     "spring-parallel": [str(LIMIT / "springs.py"), "parallel"],
+    "spring-series cantilever, axial bar and a stiffness": [str(LIMIT / "spring_elements.py")],
     "damping-ratio": [str(LIMIT / "damping_ratio.py")],
     "rolling-onset": [str(LIMIT / "rolling_onset.py")],
     "coriolis": [str(LIMIT / "coriolis.py")],

@@ -29,6 +29,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
     labels = {case[0] for case in CASES}
     assert labels == {"natural-frequency mass-spring", "natural-frequency clock-pendulum",
                       "spring-series", "spring-parallel", "damping-ratio", "rolling-onset",
+                      "spring-series cantilever, axial bar and a stiffness",
                       "coriolis", "coriolis Earth", "forced-response",
                       "inertia one disk a row", "inertia composite", "modes two-mass chain",
                       "forced-response total response", "forced-response undamped",

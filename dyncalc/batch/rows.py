@@ -121,9 +121,10 @@ class SpringRows(RowSpec):
         self.shared = list(dict.fromkeys(p for kind in ELEMENTS.values() for p in kind.params))
         record = SPRING_SERIES if how == "series" else SPRING_PARALLEL
         if record.columns is not None:
-            from .fast_commands import _command_fast
+            from .fast_springs import spring_fast
 
-            self.adapter, self.fast = record.columns, _command_fast
+            # plain stiffnesses (fast_commands) and element words (fast_springs)
+            self.adapter, self.fast = record.columns, spring_fast
 
     def parameter(self, key):
         """An element column holds plain stiffnesses on the vectorised path (a torsional

@@ -1,0 +1,212 @@
+"""``spring-series`` / ``spring-parallel --batch`` with element words on columns.
+
+A cell of an element column (``k1``, ``k2``, ...) may hold a standard element,
+``cantilever(l=2m, EI=2e4 N*m^2)``, ``simply-supported(...)``, ``beam(...)``,
+``axial(...)``, ``torsion-bar(...)`` or ``coil(...)``, as on the command line. The rows of a chunk are grouped by the shape of their
+cells (which element with which parameters, in which order, or a plain stiffness); each
+parameter is read a column at a time (:func:`~dyncalc.batch.columns._read_column`), each
+element's stiffness is :func:`~dyncalc.physics.numerics.monomial`'s twin
+(:func:`~dyncalc.physics.numerics_arrays.monomial_array`) with the physics function's
+coefficient and factors in its order, and the network is the series or parallel column kernel
+in N/m, bit for bit the one-off (tests/test_batch_spring_elements.py). The one-off adds in the
+first element's unit: an element's is SI (N/m, N*m/rad), so a group is taken where its
+first element is an element word or a stiffness typed in SI (or bare).
+
+Left to the one-off row by row: shared values (``EI=...`` columns), nested groups, expressions in parentheses, a header unit on a column of
+element words, and every row that warns or is refused (a non-positive or infinite value, an
+element or a result that overflows or underflows).
+"""
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+
+from .cells import Table
+from .columns import _read_column
+from .fast import FastBlock, _input_texts, json_head
+
+__all__ = ["spring_fast", "ELEMENT_FORMS"]
+
+#: The elements taken here: (coefficient, its leading factors, the alternative groups of
+#: factors with their powers, the other factors with their powers), in the physics
+#: function's order (:mod:`dyncalc.physics.springs`: ``_rigidity`` first, then ``l``).
+#: ``beam``'s ``c`` is ``monomial``'s coefficient: a coefficient of 1 times ``c`` as the
+#: first factor is the same mantissa and exponent at every step.
+ELEMENT_FORMS = {
+    "cantilever": (3.0, (), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "simply-supported": (48.0, (), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "beam": (1.0, (("c", 1),), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
+    "axial": (1.0, (), ((("EA", 1),), (("E", 1), ("A", 1))), (("l", -1),)),
+    "torsion-bar": (1.0, (), ((("GJ_t", 1),), (("G", 1), ("J_t", 1))), (("l", -1),)),
+    "coil": (0.125, (), (), (("G", 1), ("d", 4), ("D", -3), ("n", -1))),
+}
+_CELL_RE = re.compile(r"^\s*(cantilever|simply-supported|beam|axial|torsion-bar|coil)\s*"
+                      r"\(([^()\[\]\"]*)\)\s*$")
+_ARG_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
+_NUMBER_START_RE = re.compile(r"^\s*[-+.0-9]")
+#: A parameter's value (after its ``=``, up to the next comma or parenthesis): the cells of a
+#: column differ in these alone when they have one shape.
+_VALUE_RE = re.compile(r"=([^,()\n]*)")
+#: The smallest normal float: a result below it may have underflowed (the one-off warns).
+_TINY = 2.2250738585072014e-308
+
+
+def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastBlock]:
+    """The chunk's rows of plain stiffnesses (:func:`~dyncalc.batch.fast_commands._command_fast`)
+    and of element words (here); the others are left to the generic path."""
+    from .fast_commands import _command_fast
+
+    if not table or not columns or any(spec.parameter(col.key) is None for col in columns) \
+            or (isinstance(table, Table) and table.numbers() is not None):
+        return _command_fast(spec, columns, table, want_json, cache)
+    cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+    if not any("(" in c for col in columns for c in cells[col.key]):
+        return _command_fast(spec, columns, table, want_json, cache)
+    # a column of element words in every row leaves no row to the plain stiffnesses' path
+    blocks = [] if any(all("(" in c for c in cells[col.key]) for col in columns) else \
+        _command_fast(spec, columns, table, want_json, cache)
+    known: dict[str, object] = {}   # the shape of each skeleton (a cell with its values cut)
+    shapes = [[_shape_of(c, known) for c in cells[col.key]] for col in columns]
+    groups: dict[tuple, list[int]] = {}
+    for i, key in enumerate(zip(*shapes)):
+        groups.setdefault(key, []).append(i)
+    for key, members in groups.items():
+        if not any(isinstance(s, tuple) for s in key) or any(s is None for s in key):
+            continue
+        block = _group_block(spec, columns, key, np.asarray(members, dtype=np.intp), cells,
+                             want_json, cache)
+        if block is not None:
+            blocks.append(block)
+    return blocks
+
+
+def _shape_of(cell: str, known: dict):
+    """``""`` (empty), ``"leaf"`` (a stiffness), ``(kind, (names...))`` (an element taken
+    here) or ``None`` (anything else: the one-off's); ``known``: the shapes of the skeletons
+    seen (the cell with its values cut out)."""
+    if not cell:
+        return ""
+    if "(" not in cell:
+        return "leaf" if _NUMBER_START_RE.match(cell) else None
+    skeleton = _VALUE_RE.sub("=", cell)
+    if skeleton not in known:
+        known[skeleton] = _shape(skeleton)
+    return known[skeleton]
+
+
+def _shape(skeleton: str):
+    """The shape of an element cell whose values are cut out (``cantilever(l=, EI=)``)."""
+    m = _CELL_RE.match(skeleton)
+    if m is None:
+        return None
+    kind, body = m.group(1), m.group(2)
+    names = []
+    for arg in body.split(","):
+        a = _ARG_RE.match(arg)
+        if a is None or a.group(2).strip():
+            return None
+        names.append(a.group(1))
+    _coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
+    if len(set(names)) != len(names):
+        return None
+    need = {name for name, _p in (*lead, *required)}
+    chosen = [g for g in alternatives if any(name in names for name, _p in g)]
+    if len(chosen) > 1 or (alternatives and not chosen):
+        return None
+    if chosen:
+        need |= {name for name, _p in chosen[0]}
+    if set(names) != need:
+        return None
+    return kind, tuple(names)
+
+
+def _texts(cells: list[str], names: tuple) -> dict[str, list[str]] | None:
+    """The parameter texts of element cells of one shape (``names`` in the cells' order), by
+    name, read off the whole column in one pass; ``None`` if the values do not line up."""
+    values = _VALUE_RE.findall("\n".join(cells))
+    if len(values) != len(cells) * len(names):
+        return None
+    k = len(names)
+    return {name: [v.strip() for v in values[j::k]] for j, name in enumerate(names)}
+
+
+def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock | None:
+    from ..commands.springs import ELEMENTS
+    from ..physics.columns import Columns
+    from ..physics.numerics_arrays import monomial_array
+    from ..physics.springs import parallel_stiffness, series_stiffness
+    from ..units import STIFFNESS, TORSIONAL_STIFFNESS
+    from .fast_commands import _Param, _probe
+
+    how = spec.how
+    given = [col for col, shape in zip(columns, key) if shape != ""]
+    shapes = [shape for shape in key if shape != ""]
+    torsional = {shape[0] == "torsion-bar" for shape in shapes if shape != "leaf"}
+    if len(torsional) > 1:
+        return None  # linear and torsional elements: the one-off's refusal
+    dim = TORSIONAL_STIFFNESS if torsional.pop() else STIFFNESS
+    m = len(rows)
+    good = np.ones(m, dtype=bool)
+    stiffness, inputs, results = [], [], {}
+    row_list = rows.tolist()
+    for index, (col, shape) in enumerate(zip(given, shapes), 1):
+        name = f"k{index}"
+        column = [cells[col.key][i] for i in row_list]
+        if shape == "leaf":
+            read = _read_column(column, col.unit, _Param(name, dim), spec.strict, cache)
+            good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
+            if dim is TORSIONAL_STIFFNESS:  # a bare number is N/m to the one-off: linear
+                good &= np.array([not assumed for _u, assumed in read.unit_json], dtype=bool)
+            if index == 1:  # the one-off adds in the first element's unit: SI here
+                good &= np.array([json.loads(u) == dim.si for u, _a in read.unit_json],
+                                 dtype=bool) if m else good
+            stiffness.append(read.si)
+            inputs.append((name, read, column, col.unit, False, None))
+            continue
+        if col.unit:
+            return None
+        kind, names = shape
+        coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
+        dims = ELEMENTS[kind].params
+        texts = _texts(column, names)
+        if texts is None:
+            return None
+        si = {}
+        for pname in names:
+            read = _read_column(texts[pname], "", _Param(pname, dims[pname]), spec.strict,
+                                cache)
+            good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
+            si[pname] = np.where(good, read.si, 1.0)
+            inputs.append((f"{name}.{pname}", read, texts[pname], "", False, None))
+        chosen = [g for g in alternatives if g[0][0] in names]
+        factors = [(si[p], power) for p, power in (*lead, *(chosen[0] if chosen else ()))]
+        factors += [(si[p], power) for p, power in required]
+        k = monomial_array(coefficient, factors)
+        good &= np.isfinite(k) & (k >= _TINY)
+        stiffness.append(k)
+        results[name] = k
+    if not good.any():
+        return None
+    kernel = (series_stiffness if how == "series" else parallel_stiffness).columns
+    with np.errstate(all="ignore"):
+        out = kernel(np.column_stack([np.where(good, k, 1.0) for k in stiffness]))
+    k_eq = out.values["k_eq"]
+    good &= out.exact & np.isfinite(k_eq) & (k_eq >= _TINY)
+    if not good.any():
+        return None
+    values = {"k_eq": k_eq, **results}
+    first = int(np.argmax(good))
+    columns_out = Columns(values, exact=good, model=how)
+    probe = _probe(spec, given, cells, int(rows[first]), columns_out,
+                   {name: array[first] for name, array in values.items()})
+    if probe is None:
+        return None
+    keep = np.flatnonzero(good)
+    head = texts_out = None
+    if want_json:
+        head = json_head(spec.command, None, how, "closed-form")
+        texts_out = _input_texts(inputs, keep, {})
+    return FastBlock(rows[keep], {name: array[keep] for name, array in values.items()},
+                     {name: dim for name in values}, head, texts_out, "{}")
