@@ -16,7 +16,7 @@ import numpy as np
 
 from ..errors import InputError
 from .columns import _LITERAL_CELL, _read_column
-from .fast import FastBlock
+from .fast import FastBlock, json_head
 
 __all__ = ["inertia_fast"]
 
@@ -255,8 +255,7 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     result_dims = {name: entry.dim for name, entry in probe.results.items()}
     head = inputs = None
     if want_json:
-        head = (f'"schema": "dyncalc/2", "command": "inertia", "scene": null, '
-                f'"model": {json.dumps(out.model)}, "method": {json.dumps(probe.method)}')
+        head = json_head("inertia", None, out.model, probe.method)
         inputs = _entries(reads, keep, None) + ([tail] if tail else [])
     return FastBlock(rows[keep], values, result_dims, head, inputs)
 
