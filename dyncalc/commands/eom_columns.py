@@ -282,11 +282,15 @@ def _value_equilibria(d, values, n, exact):
     chosen = x[np.arange(n), np.argmax(stable, axis=1)]
     word = {True: " (stable)", False: " (unstable)"}
     c = d.coord
-    texts, lines = np.empty(n, dtype=object), np.empty(n, dtype=object)
-    for i, (row, k, st, at) in enumerate(zip(x.tolist(), count.tolist(), stable.tolist(),
-                                            chosen.tolist())):
-        texts[i] = "; ".join(f"{c}={v:.6g}{word[s]}" for v, s in zip(row[:k], st[:k]))
-        lines[i] = ('{"equilibria": [' + ", ".join(
-            f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}'
-            for v, s in zip(row[:k], st[:k])) + f'], "about": {{"{c}": {at!r}}}}}')
-    return chosen, texts, lambda keep: [list(lines[keep])]
+    rows = [(row[:k], st[:k]) for row, k, st in zip(x.tolist(), count.tolist(),
+                                                    stable.tolist())]
+    texts = np.empty(n, dtype=object)
+    texts[:] = ["; ".join([f"{c}={v:.6g}{word[s]}" for v, s in zip(*row)]) for row in rows]
+
+    about = chosen.tolist()
+
+    def extras(keep):  # (JSON only: made for the rows kept)
+        return [['{"equilibria": [' + ", ".join(
+            [f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}' for v, s in zip(*rows[i])])
+            + f'], "about": {{"{c}": {about[i]!r}}}}}' for i in np.asarray(keep).tolist()]]
+    return chosen, texts, extras
