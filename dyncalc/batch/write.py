@@ -195,8 +195,9 @@ class _Writer:
             dim = block.dims[name]
             if dim is None:  # words (a regime): the same text as the one-off's
                 words = array.tolist()
-                text = {w: json.dumps(w) if self.as_json else _csv_lines([[w]])[0]
-                        for w in set(words)}
+                unique = list(set(words))  # (one writer for all: a text a row is common)
+                text = dict(zip(unique, map(json.dumps, unique) if self.as_json
+                                else _csv_lines([[w] for w in unique])))
                 shown[name] = ([list(map(text.__getitem__, words))], "")
                 continue
             if name in self.units:

@@ -285,7 +285,19 @@ def _value_equilibria(d, values, n, exact):
     rows = [(row[:k], st[:k]) for row, k, st in zip(x.tolist(), count.tolist(),
                                                     stable.tolist())]
     texts = np.empty(n, dtype=object)
-    texts[:] = ["; ".join([f"{c}={v:.6g}{word[s]}" for v, s in zip(*row)]) for row in rows]
+    # rows with the same roots count and stabilities share the text of a root the same on
+    # all of them (0, pi): formatted once
+    kinds, which = np.unique(count * 2 ** x.shape[1] + stable @ (2 ** np.arange(x.shape[1])),
+                             return_inverse=True)
+    for g in range(len(kinds)):
+        at = np.flatnonzero(which == g)
+        k = int(count[at[0]])
+        pieces = []
+        for j in range(k):
+            col, w = x[at, j], word[bool(stable[at[0], j])]
+            pieces.append([f"{c}={col[0]:.6g}{w}"] * len(at) if (col == col[0]).all()
+                          else [f"{c}={v:.6g}{w}" for v in col.tolist()])
+        texts[at] = list(map("; ".join, zip(*pieces))) if pieces else [""] * len(at)
 
     about = chosen.tolist()
 
