@@ -10,6 +10,8 @@ import io
 import json
 import math
 import random
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -193,3 +195,23 @@ def test_rows_the_kernel_cannot_take_are_left_to_the_one_off():
                                     {"theta": -theta, "stable": True},
                                     {"theta": math.pi, "stable": False}],
                      "about": {"theta": theta}}
+
+
+def test_bead_batch_does_not_import_sympy(tmp_path):
+    path = tmp_path / "b.csv"
+    path.write_text("r [m],Omega [rad/s]\n0.2,10\n0.5,2\n")
+    code = ("import sys\nfrom dyncalc.cli import cli\n"
+            "try:\n    cli(['eom', '--scene', 'bead-on-rotating-ring', '--batch', sys.argv[1]])\n"
+            "except SystemExit as e:\n    assert not e.code, e.code\n"
+            "print('sympy' in sys.modules, file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.strip().splitlines()[-1] == "False"
+    rows = [line.split(",") for line in done.stdout.splitlines()[1:]]
+    theta = math.acos(G / (100 * 0.2))
+    assert rows[0][3] == (f"theta=0 (unstable); theta={theta:.6g} (stable); "
+                          f"theta={-theta:.6g} (stable); theta=3.14159 (unstable)")
+    assert float(rows[0][6]) == pytest.approx(10 * math.sin(theta), rel=1e-14)
+    assert rows[1][3] == "theta=0 (stable); theta=3.14159 (unstable)"
+    assert float(rows[1][6]) == pytest.approx(math.sqrt(G / 0.5 - 4), rel=1e-14)
