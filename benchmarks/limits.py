@@ -55,6 +55,8 @@ LIMITS = {
     "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],
     # round 6: eom --scene, derived once (issue 17's brief, eombatch)
     "eom pendulum": [str(LIMIT / "eom.py")],
+    # round 6: equilibria that depend on the values, closed forms on columns (eom2)
+    "eom bead-on-rotating-ring": [str(LIMIT / "eom_bead.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

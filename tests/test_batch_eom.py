@@ -101,7 +101,7 @@ def test_pendulum_numbers_against_the_textbook(tmp_path):
      lambda r: f"{r.uniform(0.1, 10)!r},{r.uniform(0.1, 3)!r},{r.uniform(0.0, 5)!r}"),
     ("physical-pendulum", "m,a,J",
      lambda r: f"{r.uniform(0.1, 10)!r},{r.uniform(0.01, 3)!r},{r.uniform(0.01, 5)!r}"),
-    ("bead-on-rotating-ring", "r,Omega",  # equilibria that depend on Omega: row by row
+    ("bead-on-rotating-ring", "r,Omega",  # equilibria that depend on Omega: closed forms
      lambda r: f"{r.uniform(0.1, 1)!r},{r.uniform(0.5, 20)!r}"),
 ])
 @pytest.mark.parametrize("as_json", [False, True])

@@ -33,7 +33,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "coriolis", "coriolis Earth", "forced-response",
                       "inertia one disk a row", "inertia composite", "modes two-mass chain",
                       "forced-response total response", "forced-response undamped",
-                      "eom pendulum", "rigid-body drum-two-blocks",
+                      "eom pendulum", "eom bead-on-rotating-ring", "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft"}
 
 

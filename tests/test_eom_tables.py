@@ -44,8 +44,9 @@ def test_committed_table_is_what_sympy_derives(gen):
 
 def test_the_table_holds_the_one_coordinate_scenes():
     assert {"pendulum", "mass-spring", "physical-pendulum", "rod-in-fluid"} <= set(TABLES)
-    # value-dependent equilibria and two coordinates stay with sympy
-    assert "bead-on-rotating-ring" not in TABLES
+    # equilibria that depend on the values: their closed forms; two coordinates stay out
+    assert TABLES["bead-on-rotating-ring"]["roots"] is None
+    assert "R" in TABLES["bead-on-rotating-ring"] and "R" not in TABLES["pendulum"]
     assert "pendulum-on-sliding-block" not in TABLES
     assert TABLES["pendulum"]["roots"] == (0.0, math.pi)
 
@@ -69,11 +70,14 @@ def test_generated_functions_equal_lambdify_to_the_bit(scene):
         pairs = [(d.plan.mass(q, *params), entry["M"](q, *params)),
                  (d.plan.stiffness(q, *params), entry["K"](q, *params)),
                  (d.plan.acceleration(q, qd, t, *params), entry["a"](q, qd, t, *params))]
+        if d.rootf is not None:
+            pairs += list(zip(d.rootf(*params), entry["R"](*params)))
     for theirs, mine in pairs:
         a = np.broadcast_to(np.asarray(theirs, dtype=float), q.shape)
         b = np.broadcast_to(np.asarray(mine, dtype=float), q.shape)
         assert (a.view(np.int64) == b.view(np.int64)).all()
-    assert list(entry["roots"]) == d.roots and entry["text"] == d.texts[0]
+    assert (entry["roots"] is None if d.roots is None else list(entry["roots"]) == d.roots)
+    assert entry["text"] == d.texts[0]
     assert entry["warnings"] == d.warnings
 
 

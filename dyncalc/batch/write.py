@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from typing import Any
 
 import numpy as np
@@ -12,6 +13,9 @@ from .csvlines import _csv_lines
 from . import assemble
 from .floats import reprs
 from .header import _HEADER_RE
+
+#: What makes csv.writer quote a cell (its delimiter, quote character or a line break).
+_QUOTED = re.compile(r'[,"\r\n]')
 
 #: The outcome of a row the vectorised path computed, and of a blank row.
 _FAST = ("fast", None)
@@ -195,8 +199,13 @@ class _Writer:
             dim = block.dims[name]
             if dim is None:  # words (a regime): the same text as the one-off's
                 words = array.tolist()
-                text = {w: json.dumps(w) if self.as_json else _csv_lines([[w]])[0]
-                        for w in set(words)}
+                unique = list(set(words))  # (one writer for all: a text a row is common)
+                if self.as_json:
+                    text = dict(zip(unique, map(json.dumps, unique)))
+                else:  # csv.writer leaves a text without , " or a line break as it is
+                    odd = [w for w in unique if not w or _QUOTED.search(w)]
+                    text = dict(zip(unique, unique))
+                    text.update(zip(odd, _csv_lines([[w] for w in odd])))
                 shown[name] = ([list(map(text.__getitem__, words))], "")
                 continue
             if name in self.units:

@@ -24,9 +24,12 @@ _CACHE: dict = {}
 class _Derived:
     """What a block needs of one derivation: the equation texts, the :class:`Plan`, the
     constant equilibria, the coordinate and whether it is an angle, the one-off's warnings
-    and (from the table) the units of the results."""
+    and (from the table) the units of the results; where the equilibria depend on the
+    values, ``roots`` is ``None`` and ``rootf(*p)`` gives the columns of the closed-form
+    candidates (:func:`~dyncalc.physics.eom_columns.equilibria_rows` makes them the rows'
+    equilibria)."""
 
-    __slots__ = ("texts", "plan", "roots", "coord", "angle", "warnings", "dims")
+    __slots__ = ("texts", "plan", "roots", "coord", "angle", "warnings", "dims", "rootf")
 
     def __init__(self, **kw):
         for name in self.__slots__:
@@ -54,9 +57,10 @@ def derivation(scene: str, given: frozenset = frozenset()) -> _Derived | None:
 
         entry = TABLES.get(scene)
         _CACHE[scene] = None if entry is None else _Derived(
-            texts=[entry["text"]], plan=table_plan(scene), roots=list(entry["roots"]),
+            texts=[entry["text"]], plan=table_plan(scene),
+            roots=None if entry["roots"] is None else list(entry["roots"]),
             coord=entry["coord"], angle=entry["angle"], warnings=entry["warnings"],
-            dims=entry["dims"])
+            dims=entry["dims"], rootf=entry.get("R"))
     return _CACHE[scene]
 
 
@@ -78,16 +82,24 @@ def derive_scene(scene: str, given: frozenset):
     if plan is None:
         return None
     angle = inputs.coords[0] in inputs.angles
-    roots = constant_roots(system, angle)
+    roots, rootf = constant_roots(system, angle), None
     if not roots:
-        return None
+        import sympy
+
+        from ..physics.eom_columns import value_roots
+
+        found = value_roots(system, angle)
+        if found is None:
+            return None
+        roots = None
+        rootf = sympy.lambdify([system.symbols.param(n) for n in plan.names], found, "numpy")
     from ..physics.symbolic import text_of
 
     texts = [f"{c}'' = {text_of(a)}" for c, a in zip(inputs.coords, system.accelerations)]
     warnings = ("omega_i are the undamped natural frequencies (D is left out of them)",) \
         if "D" in inputs.trees else ()
     return _Derived(texts=texts, plan=plan, roots=roots, coord=inputs.coords[0],
-                    angle=angle, warnings=warnings)
+                    angle=angle, warnings=warnings, rootf=rootf)
 
 
 class _Probe:
@@ -174,7 +186,6 @@ def scene_columns(arrays: dict, settings: dict):
     from ..physics.columns import Columns
     from ..physics.eom_columns import one_frequency
     from ..scenes.energies import energies
-    from .eom_results import _equilibria_text
 
     scene = settings.get("scene")
     if scene is None or settings.get("about") is not None:
@@ -198,23 +209,14 @@ def scene_columns(arrays: dict, settings: dict):
         exact &= np.isfinite(column)
     state = [k for k in arrays if k not in params]
     with np.errstate(all="ignore"):
-        stable = []
-        for root in d.roots:
-            M, K = d.plan.matrices(np.full(n, root), values)
-            stable.append(one_frequency(M, K)[1])
-            exact &= np.isfinite(M) & np.isfinite(K)
-        first = int(np.argmax(exact)) if exact.any() else 0
-        pattern = [bool(s[first]) for s in stable]
-        for s, want in zip(stable, pattern):
-            exact &= s == want
-        if not any(pattern):
+        made = (_constant_equilibria if d.roots is not None else _value_equilibria)(
+            d, values, n, exact)
+        if made is None:
             return None  # the one-off linearises about an unstable one: warnings, no omega
-        chosen = d.roots[pattern.index(True)]
-        M, K = d.plan.matrices(np.full(n, chosen), values)
+        chosen, texts, extras = made
+        M, K = d.plan.matrices(chosen, values)
         omega, _stable = one_frequency(M, K)
-        out = {"eom_1": np.full(n, d.texts[0], dtype=object),
-               "equilibria": np.full(n, _equilibria_text([d.coord], [[r] for r in d.roots],
-                                                         pattern, True, {}), dtype=object)}
+        out = {"eom_1": np.full(n, d.texts[0], dtype=object), "equilibria": texts}
         shape = (n, 1, 1) if settings.get("json") else (n,)
         out["mass_matrix"], out["stiffness_matrix"] = M.reshape(shape), K.reshape(shape)
         out["omega_1"], out["f_1"] = omega, omega / (2 * math.pi)
@@ -230,8 +232,77 @@ def scene_columns(arrays: dict, settings: dict):
                                        np.asarray(t, dtype=float), values)
             exact &= np.isfinite(acc) & np.isfinite(arrays[c]) & np.isfinite(arrays[c + "_dot"])
             out[f"{c}_ddot"] = acc
-    extra = {"equilibria": [{d.coord: r, "stable": s} for r, s in zip(d.roots, pattern)],
-             "about": {d.coord: chosen}}
     return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
                    warnings=d.warnings, warned=np.ones(n, dtype=bool) if d.warnings else None,
-                   extras=lambda _keep, text=json.dumps(extra): [text])
+                   extras=extras)
+
+
+def _constant_equilibria(d, values, n, exact):
+    """``(chosen, texts, extras)`` of a scene whose equilibria are constants: rows with the
+    first row's stabilities are exact (``exact`` updated in place); ``None``: that first
+    row has no stable one."""
+    from ..physics.eom_columns import one_frequency
+    from .eom_results import _equilibria_text
+
+    stable = []
+    for root in d.roots:
+        M, K = d.plan.matrices(np.full(n, root), values)
+        stable.append(one_frequency(M, K)[1])
+        exact &= np.isfinite(M) & np.isfinite(K)
+    first = int(np.argmax(exact)) if exact.any() else 0
+    pattern = [bool(s[first]) for s in stable]
+    for s, want in zip(stable, pattern):
+        exact &= s == want
+    if not any(pattern):
+        return None
+    chosen = d.roots[pattern.index(True)]
+    text = _equilibria_text([d.coord], [[r] for r in d.roots], pattern, True, {})
+    extra = {"equilibria": [{d.coord: r, "stable": s} for r, s in zip(d.roots, pattern)],
+             "about": {d.coord: chosen}}
+    return (np.full(n, chosen), np.full(n, text, dtype=object),
+            lambda _keep, line=json.dumps(extra): [line])
+
+
+def _value_equilibria(d, values, n, exact):
+    """``(chosen, texts, extras)`` of a scene whose equilibria depend on the values: each
+    row's closed-form roots (:func:`~dyncalc.physics.eom_columns.equilibria_rows`, as the
+    one-off takes them), their stabilities from ``K / M``, the first stable one chosen; rows
+    without a stable one are not exact (``exact`` updated in place)."""
+    from ..physics.eom_columns import equilibria_rows, one_frequency, root_columns
+
+    x, count = equilibria_rows(root_columns(d.rootf, [values[p] for p in d.plan.names], n),
+                               d.angle)
+    stable = np.zeros(x.shape, dtype=bool)
+    for j in range(x.shape[1]):
+        M, K = d.plan.matrices(x[:, j], values)
+        there = j < count
+        stable[:, j] = one_frequency(M, K)[1] & there
+        exact &= ~there | (np.isfinite(M) & np.isfinite(K))
+    exact &= stable.any(axis=1) & (count > 0)
+    chosen = x[np.arange(n), np.argmax(stable, axis=1)]
+    word = {True: " (stable)", False: " (unstable)"}
+    c = d.coord
+    rows = [(row[:k], st[:k]) for row, k, st in zip(x.tolist(), count.tolist(),
+                                                    stable.tolist())]
+    texts = np.empty(n, dtype=object)
+    # rows with the same roots count and stabilities share the text of a root the same on
+    # all of them (0, pi): formatted once
+    kinds, which = np.unique(count * 2 ** x.shape[1] + stable @ (2 ** np.arange(x.shape[1])),
+                             return_inverse=True)
+    for g in range(len(kinds)):
+        at = np.flatnonzero(which == g)
+        k = int(count[at[0]])
+        pieces = []
+        for j in range(k):
+            col, w = x[at, j], word[bool(stable[at[0], j])]
+            pieces.append([f"{c}={col[0]:.6g}{w}"] * len(at) if (col == col[0]).all()
+                          else [f"{c}={v:.6g}{w}" for v in col.tolist()])
+        texts[at] = list(map("; ".join, zip(*pieces))) if pieces else [""] * len(at)
+
+    about = chosen.tolist()
+
+    def extras(keep):  # (JSON only: made for the rows kept)
+        return [['{"equilibria": [' + ", ".join(
+            [f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}' for v, s in zip(*rows[i])])
+            + f'], "about": {{"{c}": {about[i]!r}}}}}' for i in np.asarray(keep).tolist()]]
+    return chosen, texts, extras

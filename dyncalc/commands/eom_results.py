@@ -285,6 +285,22 @@ def constant_roots(system, angle: bool):
     return roots[angle]
 
 
+def _table_roots(inputs):
+    """The equilibria from the closed forms of the generated table
+    (:func:`dyncalc.physics.eom_columns.equilibria_rows` on one row), or ``None``."""
+    from ..scenes.eom_tables import TABLES
+
+    entry = TABLES.get(inputs.scene) if inputs.scene is not None else None
+    if entry is None or entry.get("R") is None or not set(entry["names"]) <= set(inputs.values):
+        return None
+    from ..physics.eom_columns import equilibria_rows, root_columns
+
+    row = _one_row(inputs.values)
+    x, count = equilibria_rows(root_columns(entry["R"], [row[n] for n in entry["names"]], 1),
+                               entry["angle"])
+    return [[float(v)] for v in x[0, :count[0]]]
+
+
 def _one_row(values: dict) -> dict:
     """Parameter name -> a float64 array of one row (the batch's arrays, one row long)."""
     import numpy as np
@@ -306,8 +322,11 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
                    if inputs.dims.get(name) == LENGTH_DIM and v != 0]
         scale = max(lengths) if lengths else 1.0
         roots = constant_roots(system, angles[0]) if plan is not None else None
+        closed = _table_roots(inputs) if plan is not None and roots is None else None
         if roots is not None:  # sympy's roots, as batch takes them: no search
             found = [[r] for r in roots]
+        elif closed is not None:  # the table's closed forms, as batch takes them
+            found = closed
         else:
             found = lagrange.numeric_equilibria(system, values, angles,
                                                  [scale] * len(s.q))

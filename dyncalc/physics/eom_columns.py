@@ -20,7 +20,8 @@ import math
 
 from ..lazy import numpy as np
 
-__all__ = ["Plan", "plan_of", "one_frequency", "constant_equilibria"]
+__all__ = ["Plan", "plan_of", "one_frequency", "constant_equilibria", "value_roots",
+           "root_columns", "equilibria_rows"]
 
 
 class Plan:
@@ -133,3 +134,76 @@ def constant_equilibria(system, angle: bool) -> list[float] | None:
         points.append(x)
     points.sort(key=lambda v: (abs(v), -v))
     return points
+
+
+def value_roots(system, angle: bool):
+    """The closed-form equilibria of a one-angle derivation whose static equation factors
+    into terms in ``sin(q)`` alone or ``cos(q)`` alone (``sin(q) (Omega^2 r cos(q) - g)``):
+    ``sin(q) = s`` gives ``asin(s)`` and ``pi - asin(s)``, ``cos(q) = c`` gives ``+-acos(c)``
+    (sympy's ``solve`` on ``q`` misses ``pi``); a list of sympy expressions in the
+    parameters (a root that does not exist at some values is ``nan`` there), or ``None``."""
+    import sympy
+
+    from . import lagrange_equations as lagrange
+    q = system.symbols.q[0]
+    equations = [e for e in system.static if e != 0]
+    if not angle or len(equations) != 1 or lagrange.free_coordinates(system):
+        return None
+    S, C = sympy.Dummy("S"), sympy.Dummy("C")
+    roots = []
+    for factor, _power in sympy.factor_list(sympy.factor(equations[0]))[1]:
+        if not factor.has(q):
+            continue
+        f = factor.subs({sympy.sin(q): S, sympy.cos(q): C})
+        if f.has(q) or (f.has(S) and f.has(C)):
+            return None
+        x = S if f.has(S) else C
+        try:
+            found = sympy.solve(f, x, check=False, simplify=False)
+        except (NotImplementedError, ValueError, TypeError):
+            return None
+        if not found or any(v.has(q) for v in found):
+            return None
+        for v in found:
+            roots += [sympy.asin(v), sympy.pi - sympy.asin(v)] if x is S else \
+                [sympy.acos(v), -sympy.acos(v)]
+    return roots or None
+
+
+def root_columns(rootf, args, n: int):
+    """The ``(n, k)`` candidates of ``rootf(*args)`` (a generated list of closed forms, a
+    constant one a scalar)."""
+    with np.errstate(all="ignore"):
+        found = rootf(*args)
+    return np.column_stack([np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in found])
+
+
+def equilibria_rows(candidates, angle: bool):
+    """The equilibria of each row from the columns ``candidates`` (``(n, k)``; ``nan``: no
+    root there), as the numeric search gives them: angles wrapped to (-pi, pi], ``|q| <
+    1e-12`` made 0, a root within ``1e-7 max(1, |q|)`` of an earlier one dropped, sorted by
+    size, the positive first; ``(roots, count)``: ``(n, k)`` with ``nan`` after each row's
+    ``count`` roots.
+
+    >>> import numpy as np
+    >>> equilibria_rows(np.array([[0.0, -np.pi, 1.0, -1.0]]), True)
+    (array([[ 0.        ,  1.        , -1.        ,  3.14159265]]), array([4]))
+    """
+    x = np.array(candidates, dtype=float)
+    with np.errstate(all="ignore"):
+        x[~np.isfinite(x)] = np.nan
+        if angle:
+            turn = 2 * math.pi
+            x = np.where(np.abs(x) > math.pi, x - turn * np.round(x / turn), x)
+            x = np.where(x <= -math.pi + 1e-12, math.pi, x)
+        x = np.where(np.abs(x) < 1e-12, 0.0, x)
+        for j in range(1, x.shape[1]):
+            near = np.zeros(x.shape[0], dtype=bool)
+            for i in range(j):
+                near |= np.abs(x[:, j] - x[:, i]) <= 1e-7 * np.maximum(1.0, np.abs(x[:, j]))
+            x[near, j] = np.nan
+        missing = np.isnan(x)
+        order = np.lexsort((np.where(missing, np.inf, -x), np.where(missing, np.inf, np.abs(x))),
+                           axis=-1)
+    x = np.take_along_axis(x, order, axis=-1)
+    return x, (~missing).sum(axis=1)
