@@ -38,6 +38,16 @@ def _chain(r) -> list[str]:
     return [f'"[[{m1!r},0],[0,{m2!r}]]"', f'"[[{k1 + k2!r},{-k2!r}],[{-k2!r},{k2!r}]]"']
 
 
+def _damped_chain(r) -> list[str]:
+    """:func:`_chain` with a proportional damping matrix ``C = a M + b K`` (underdamped)."""
+    m1, m2, k1, k2 = (float(f"{r.uniform(lo, hi):.6g}") for lo, hi in
+                      ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4)))
+    a, b = r.uniform(0.01, 0.05), r.uniform(1e-5, 1e-4)
+    c11, c12, c22 = a * m1 + b * (k1 + k2), -b * k2, a * m2 + b * k2
+    return [f'"[[{m1!r},0],[0,{m2!r}]]"', f'"[[{k1 + k2!r},{-k2!r}],[{-k2!r},{k2!r}]]"',
+            f'"[[{c11!r},{c12!r}],[{c12!r},{c22!r}]]"']
+
+
 def _annulus(r) -> list[str]:
     """A disk and a concentric hole (``-disk``), lighter and smaller: a valid composite."""
     m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
@@ -95,6 +105,7 @@ CASES = [
      lambda r: ['"disk(m=%.6g kg, r=%.6g m)"' % (r.uniform(0.1, 50), r.uniform(0.01, 2))]),
     ("inertia composite", ["inertia"], "b1,b2", lambda r: _annulus(r)),
     ("modes two-mass chain", ["modes"], "M,K", lambda r: _chain(r)),
+    ("modes damped two-mass chain", ["modes"], "M,K,C", lambda r: _damped_chain(r)),
     ("rigid-body drum-two-blocks", ["rigid-body", "--scene", "drum-two-blocks"],
      "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2]",
      lambda r: [f"{r.uniform(0.5, 50):.6g}", f"{r.uniform(0.5, 50):.6g}",

@@ -50,6 +50,7 @@ LIMITS = {
     "forced-response total response": [str(LIMIT / "forced_total.py")],
     "forced-response undamped": [str(LIMIT / "forced_undamped.py")],
     "modes two-mass chain": [str(LIMIT / "modes.py")],
+    "modes damped two-mass chain": [str(LIMIT / "modes.py"), "damped"],
     # round 6: rigid-body scenes on column kernels (issue 17's brief, rigidbatch)
     "rigid-body drum-two-blocks": [str(LIMIT / "rigid_body.py"), "drum"],
     "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],

@@ -179,3 +179,93 @@ def test_rows_with_units_are_the_one_off_within_1e_12(tmp_path, header):
     blocks = spec.fast(spec, read_header(1, rows[0], spec),
                        [[r[0] for r in rows[1:]], [r[1] for r in rows[1:]]], True, {})
     assert sum(len(b.rows) for b in blocks) >= 80
+
+
+def _damped_file(tmp_path, seed: int, count: int = 120):
+    """Rows with a proportional C = a M + b K (underdamped modes, zeta about 1e-3 to 0.3, at
+    scales 1e-100 to 1e100), followed by rows the kernel leaves to the one-off: damping that is
+    not proportional (state-space), overdamped (a note), a zero C, C not symmetric."""
+    rng = random.Random(seed)
+    lines = ["M,K,C"]
+    for _ in range(count):
+        n = rng.choice((1, 2, 3))
+        style = rng.choice(["brackets", "semicolons"])
+        scale_m, scale_k = rng.choice([1.0, 1e-100, 3.5]), rng.choice([1.0, 1e90, 250.0])
+        m_text, k_text = (_matrix(rng, n, s, style) for s in (scale_m, scale_k))
+        M, K = (np.array([[float(x) for x in r.split(",")]
+                          for r in t.strip("[]").replace("], [", ";").split(";")])
+                for t in (m_text, k_text))
+        rate = math.sqrt(scale_k / scale_m)
+        a, b = rng.uniform(1e-3, 0.1) * rate, rng.uniform(1e-4, 0.05) / rate
+        C = a * M + b * K
+        c_text = "[" + ", ".join("[" + ", ".join(repr(float(x)) for x in r) + "]"
+                                 for r in C) + "]"
+        lines.append(f'"{m_text}","{k_text}","{c_text}"')
+    lines += ['"[[1,0],[0,1]]","[[2,-1],[-1,2]]","[[0.3,0],[0,0]]"',     # not proportional
+              '"[[1,0],[0,1]]","[[2,-1],[-1,2]]","[[5,0],[0,5]]"',       # overdamped: a note
+              '"[[1,0],[0,1]]","[[2,-1],[-1,2]]","[[0,0],[0,0]]"',       # no damping
+              '"[[1,0],[0,1]]","[[2,-1],[-1,2]]","[[1,0.5],[0,1]]"',     # C not symmetric
+              '"[[1,0],[0,1]]","[[2,-1],[-1,2]]",""']                    # no C in this row
+    path = tmp_path / "damped.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("normalize", [None, "mass"])
+def test_damped_rows_are_the_one_off_within_1e_12(tmp_path, normalize):
+    """Proportional damping on the stack: zeta_i, omega_d_i and the rest within 1e-12 of the
+    one-off, the inputs (C with its unit) exactly; the rows it cannot take (non-proportional,
+    overdamped, a zero or unsymmetric C) have the one-off's results, notes and refusals."""
+    path = _damped_file(tmp_path, 21)
+    for as_json in (False, True):
+        fast, generic = _run(path, as_json, True, normalize), _run(path, as_json, False,
+                                                                    normalize)
+        assert (fast[0], fast[2]) == (generic[0], generic[2]) and fast[0] == 2
+        assert fast[2].count("Error: line") == 1
+        assert fast[2].count("warning: line") == (0 if as_json else 3)  # JSON: in "warnings"
+        if as_json:
+            lines_f, lines_g = fast[1].splitlines(), generic[1].splitlines()
+            assert len(lines_f) == len(lines_g) == 124
+            for a, b in zip(lines_f, lines_g):
+                a, b = json.loads(a), json.loads(b)
+                assert a["inputs"] == b["inputs"] and _close(a, b)
+                for name in a["results"]:  # a damping ratio is small: relative, no floor
+                    if name.startswith(("zeta", "omega_d")):
+                        assert math.isclose(a["results"][name]["value"],
+                                            b["results"][name]["value"], rel_tol=RTOL)
+        else:
+            mine, theirs = _cells(fast[1]), _cells(generic[1])
+            assert len(mine) == len(theirs) == 125
+            for a, b in zip(mine, theirs):
+                assert len(a) == len(b) and all(_close(x, y) for x, y in zip(a, b)), (a, b)
+    rows = list(csv.reader(path.open()))
+    spec = ModesRows()
+    blocks = spec.fast(spec, read_header(1, rows[0], spec),
+                       [[r[i] for r in rows[1:]] for i in range(3)], True, {})
+    covered = [i for b in blocks for i in b.rows.tolist()]
+    assert len(covered) >= 100 and all(i < 120 or i == 124 for i in covered)
+
+
+def test_damped_two_mass_chain_against_its_closed_form(tmp_path):
+    """M = m I, K = k [[2, -1], [-1, 2]], C = c I: zeta_i = c / (2 m omega_i) with
+    omega_1 = sqrt(k/m), omega_2 = sqrt(3 k/m), omega_d_i = omega_i sqrt(1 - zeta_i^2)."""
+    rng = random.Random(5)
+    lines, expected = ["M,K,C"], []
+    for _ in range(40):
+        m, k, c = rng.uniform(0.1, 10.0), rng.uniform(10.0, 1e4), rng.uniform(0.01, 1.0)
+        lines.append(f'"[[{m!r},0],[0,{m!r}]]","[[{2 * k!r},{-k!r}],[{-k!r},{2 * k!r}]]",'
+                     f'"[[{c!r},0],[0,{c!r}]]"')
+        expected.append([(w, c / (2.0 * m * w)) for w in (math.sqrt(k / m),
+                                                          math.sqrt(3.0 * k / m))])
+    path = tmp_path / "chain.csv"
+    path.write_text("\n".join(lines) + "\n")
+    status, out, err = _run(path, True, True)
+    assert (status, err) == (0, "")
+    for line, modes in zip(out.splitlines(), expected):
+        record = json.loads(line)
+        assert record["model"] == "proportional damping"
+        results = record["results"]
+        for i, (w, zeta) in enumerate(modes, start=1):
+            assert results[f"zeta_{i}"]["value"] == pytest.approx(zeta, rel=1e-13, abs=0.0)
+            assert results[f"omega_d_{i}"]["value"] == pytest.approx(
+                w * math.sqrt(1.0 - zeta ** 2), rel=1e-13, abs=0.0)

@@ -1,10 +1,12 @@
-"""Limit (extra row, issue 17): modes of two-mass chains, ``M`` and ``K`` as quoted 2x2 cells
-of bare numbers (``"[[m1,0],[0,m2]]"``) -> omega_i, f_i, mode_i, modal_mass_i,
-modal_stiffness_i.
+"""Limit (issue 17): modes of two-mass chains, ``M`` and ``K`` (and, with ``damped``, ``C``)
+as quoted 2x2 cells of bare numbers (``"[[m1,0],[0,m2]]"``) -> omega_i, f_i, mode_i,
+modal_mass_i, modal_stiffness_i (and zeta_i, omega_d_i of proportional damping).
 
 The same math as dyncalc's stacked path: ``M = L L^T``, eigh of ``L^-1 K L^-T``, shapes
 ``L^-T w`` scaled to a largest component of +1, ``m_i = phi^T M phi``, ``k_i = phi^T K phi``
-(numpy on the stack)."""
+(numpy on the stack); with C, ``zeta_i = (V^T C V)_ii / (2 omega_i)`` on the mass-normalised
+shapes ``V`` and ``omega_d_i = omega_i sqrt((1 - zeta_i)(1 + zeta_i))``."""
+import sys
 import json
 import math
 
@@ -21,11 +23,17 @@ def matrices(df, column):
                             for c in parts.columns]).reshape(-1, 2, 2)
 
 
+damped = sys.argv[1] == "damped"  # modes.py [damped] FILE [--json]
+if damped:
+    del sys.argv[1]
 path, as_json = arguments()
 df = read(path)
 M, K = matrices(df, "M"), matrices(df, "K")
 M = (M + M.transpose(0, 2, 1)) / 2.0
 K = (K + K.transpose(0, 2, 1)) / 2.0
+if damped:
+    C = matrices(df, "C")
+    C = (C + C.transpose(0, 2, 1)) / 2.0
 L = np.linalg.cholesky(M)
 A = np.linalg.solve(L, np.linalg.solve(L, K).transpose(0, 2, 1))
 lam, W = np.linalg.eigh((A + A.transpose(0, 2, 1)) / 2.0)
@@ -51,6 +59,13 @@ for i in range(n):
     values[f"modal_mass_{i + 1}"], units[f"modal_mass_{i + 1}"] = text(modal_mass[:, i]), "kg"
     values[f"modal_stiffness_{i + 1}"] = text(modal_stiffness[:, i])
     units[f"modal_stiffness_{i + 1}"] = "N/m"
+if damped:
+    zeta = np.diagonal(V.transpose(0, 2, 1) @ C @ V, axis1=1, axis2=2) / (2.0 * omega)
+    omega_d = omega * np.sqrt((1.0 - zeta) * (1.0 + zeta))
+    for i in range(n):
+        values[f"zeta_{i + 1}"], units[f"zeta_{i + 1}"] = text(zeta[:, i]), ""
+    for i in range(n):
+        values[f"omega_d_{i + 1}"], units[f"omega_d_{i + 1}"] = text(omega_d[:, i]), "rad/s"
 
 
 def pair(a, b):
@@ -61,9 +76,11 @@ def pair(a, b):
 
 if as_json:
     head = ('"schema": "dyncalc/2", "command": "modes", "scene": null, '
-            '"model": "linear", "method": "eigh"')
+            f'"model": "{"proportional damping" if damped else "linear"}", "method": "eigh"')
     inputs = []
-    for name, X, unit in (("M", matrices(df, "M"), "kg"), ("K", matrices(df, "K"), "N/m")):
+    given = [("M", "kg"), ("K", "N/m")] + ([("C", "N*s/m")] if damped else [])
+    for name, unit in given:
+        X = matrices(df, name)
         inputs += [(", " if inputs else "") + f'"{name}": {{"value": [', pair(X[:, 0, 0],
                    X[:, 0, 1]), ", ", pair(X[:, 1, 0], X[:, 1, 1]),
                    f'], "unit": "{unit}", "text": "', df[name], '", "assumed_si": true}']

@@ -1,7 +1,9 @@
 """The vectorised path of ``modes --batch``: rows whose ``M`` and ``K`` cells are matrices of
 numbers (``"[[2, 0], [0, 1]]"`` or ``"2,0;0,1"``: SI, every coordinate a translation; or with
 a unit, in the header, ``M [g]``, or after the matrix, ``"[[2, 0], [0, 1]] kg"``: the numbers
-times the SI value of one unit, as the one-off reads them) and no ``C``, grouped by
+times the SI value of one unit, as the one-off reads them), with or without a ``C`` cell of
+the same kind (proportional damping: ``zeta_i``, ``omega_d_i``; rows whose damping is not
+proportional, near critical or overdamped are the one-off's), grouped by
 *template* (the cells with their numbers taken out: the same size, spelling and unit), their
 numbers read in one pass a column, solved on a stack
 (:func:`dyncalc.physics.modes_columns.stacked_modes`).
@@ -54,41 +56,36 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
     by_key = {col.key: col for col in columns}
     if "M" not in by_key or "K" not in by_key:
         return []
-    m_cells, k_cells = list(table[by_key["M"].index]), list(table[by_key["K"].index])
-    candidates = range(len(m_cells))
-    if "C" in by_key:
-        c_cells = table[by_key["C"].index]
-        if "".join(c_cells).strip():
-            candidates = [i for i in candidates if not c_cells[i].strip()]
-    if not candidates or "\n" in "".join(m_cells) + "".join(k_cells):
+    keys = ("M", "K", "C") if "C" in by_key else ("M", "K")
+    cells = [list(table[by_key[key].index]) for key in keys]
+    if "\n" in "".join("".join(c) for c in cells):
         return []
-    whole = len(candidates) == len(m_cells)
-    picked_m = m_cells if whole else [m_cells[i] for i in candidates]
-    picked_k = k_cells if whole else [k_cells[i] for i in candidates]
-    t_m = _NUMBER_RE.sub("#", "\n".join(picked_m)).split("\n")
-    t_k = _NUMBER_RE.sub("#", "\n".join(picked_k)).split("\n")
+    if len(keys) == 3 and not "".join(cells[2]).strip():
+        keys, cells = keys[:2], cells[:2]  # an empty C column: undamped rows
+    templates = [_NUMBER_RE.sub("#", "\n".join(c)).split("\n") for c in cells]
     groups: dict[tuple, list[int]] = {}
-    if t_m.count(t_m[0]) == len(t_m) and t_k.count(t_k[0]) == len(t_k):
-        groups[(t_m[0], t_k[0])] = list(candidates)
+    if all(t.count(t[0]) == len(t) for t in templates):
+        groups[tuple(t[0] for t in templates)] = list(range(len(cells[0])))
     else:
-        for i, a, b in zip(candidates, t_m, t_k):
-            groups.setdefault((a, b), []).append(i)
+        for i, key in enumerate(zip(*templates)):
+            groups.setdefault(key, []).append(i)
     blocks = []
-    for (template_m, template_k), members in groups.items():
-        (template_m, unit_m), (template_k, unit_k) = _unit(template_m), _unit(template_k)
-        units = _units(by_key, unit_m, unit_k, cache)
-        n = _size(template_m)
-        if n is None or _size(template_k) != n or units is None:
+    for group_key, members in groups.items():
+        split = [_unit(t) for t in group_key]
+        if len(split) == 3 and not split[2][0].strip():
+            split = split[:2]  # no C in these rows
+        units = _units(by_key, [u for _t, u in split], cache)
+        n = _size(split[0][0])
+        if n is None or any(_size(t) != n for t, _u in split) or units is None:
             continue
         rows = np.asarray(members, dtype=np.intp)
-        every = len(members) == len(m_cells)
-        group_m = m_cells if every else [m_cells[i] for i in members]
-        group_k = k_cells if every else [k_cells[i] for i in members]
-        matrices = [_numbers(group, n) for group in (group_m, group_k)]
-        if matrices[0] is None or matrices[1] is None:
+        every = len(members) == len(cells[0])
+        group = [c if every else [c[i] for i in members] for c in cells[:len(split)]]
+        matrices = [_numbers(g, n) for g in group]
+        if any(m is None for m in matrices):
             continue
         matrices = [matrix * factor for matrix, (factor, _suffix) in zip(matrices, units)]
-        block = _block(spec, by_key, rows, group_m, group_k, *matrices, want_json, units)
+        block = _block(spec, by_key, rows, group, matrices, want_json, units)
         if block is not None:
             blocks.append(block)
     return blocks
@@ -105,14 +102,14 @@ def _unit(template: str) -> tuple[str, str]:
     return match.group(1), match.group(2)
 
 
-def _units(by_key, unit_m: str, unit_k: str, cache: dict):
-    """``((factor, text suffix) of M, of K)``: the SI value of one unit (the header's or the
+def _units(by_key, cell_units: list[str], cache: dict):
+    """``[(factor, text suffix) of M, of K (, of C)]``: the SI value of one unit (the header's or the
     cells' trailing one; the one-off multiplies the numbers by it) and what the input text
     gains (`` g`` under a header unit); ``None`` where both are given or a unit is not read."""
-    from ..units import MASS, STIFFNESS
+    from ..units import DAMPING, MASS, STIFFNESS
 
     out = []
-    for key, cell_unit, dim in (("M", unit_m, MASS), ("K", unit_k, STIFFNESS)):
+    for key, cell_unit, dim in zip("MKC", cell_units, (MASS, STIFFNESS, DAMPING)):
         header = by_key[key].unit
         if header and cell_unit:
             return None
@@ -146,18 +143,17 @@ def _numbers(cells: list[str], n: int):
         return None
 
 
-def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json, units):
+def _block(spec, by_key, rows, cells, matrices, want_json, units):
     from ..physics.modes_columns import stacked_modes
 
     normalize = spec.settings.get("normalize") or "max"
-    out = stacked_modes(M, K, normalize)
+    out = stacked_modes(*matrices[:2], normalize, *matrices[2:])
     good = np.asarray(out.exact, dtype=bool)
     if not good.any():
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
-    suffixes = [suffix for _factor, suffix in units]
-    probe = _probe(spec, by_key, cells_m[first] + suffixes[0], cells_k[first] + suffixes[1],
+    probe = _probe(spec, by_key, [c[first] + suffix for c, (_f, suffix) in zip(cells, units)],
                    out, first)
     if probe is None:
         return None
@@ -170,21 +166,22 @@ def _block(spec, by_key, rows, cells_m, cells_k, M, K, want_json, units):
 
         from .assemble import lines
 
-        if lines(_inputs([cells_m[first]], [cells_k[first]], M[[first]], K[[first]], units),
+        if lines(_inputs([[c[first]] for c in cells], [X[[first]] for X in matrices], units),
                  1)[0] != json.dumps(_json_inputs(probe.inputs))[1:-1]:
             return None
         head = json_head("modes", None, out.model, out.method)
-        inputs = _inputs([cells_m[i] for i in keep.tolist()],
-                         [cells_k[i] for i in keep.tolist()], M[keep], K[keep], units)
+        picked = keep.tolist()
+        inputs = _inputs([[c[i] for i in picked] for c in cells], [X[keep] for X in matrices],
+                         units)
     return FastBlock(rows[keep], values, dims, head, inputs, extra)
 
 
-def _probe(spec, by_key, cell_m: str, cell_k: str, out, i: int):
-    """The one-off Result of one row, or ``None`` where it is not the kernel's (to
-    :data:`PROBE_RTOL`)."""
+def _probe(spec, by_key, texts: list[str], out, i: int):
+    """The one-off Result of one row (its M, K (, C) texts), or ``None`` where it is not the
+    kernel's (to :data:`PROBE_RTOL`)."""
+    keys = "MKC"[:len(texts)]
     try:
-        result = spec.compute({"M": cell_m, "K": cell_k},
-                              {"M": by_key["M"].name, "K": by_key["K"].name})
+        result = spec.compute(dict(zip(keys, texts)), {k: by_key[k].name for k in keys})
     except InputError:
         return None
     if (result.warnings or result.model != out.model or result.method != out.method
@@ -200,15 +197,15 @@ def _probe(spec, by_key, cell_m: str, cell_k: str, out, i: int):
     return result
 
 
-def _inputs(cells_m, cells_k, M, K, units) -> list:
+def _inputs(cells, matrices, units) -> list:
     """The parts (:func:`dyncalc.batch.assemble.lines`) of each row's input entries
-    ``"M": {...}, "K": {...}`` (SI values; bare numbers assumed SI, or the text with its
-    header unit), a component column at a time."""
+    ``"M": {...}, "K": {...}`` (and ``"C"``; SI values; bare numbers assumed SI, or the text
+    with its header unit), a component column at a time."""
     from .write import _component
 
     parts: list = []
-    for name, cells, X, unit, (factor, suffix) in (("M", cells_m, M, "kg", units[0]),
-                                                     ("K", cells_k, K, "N/m", units[1])):
+    for name, cells_x, X, unit, (factor, suffix) in zip("MKC", cells, matrices,
+                                                         ("kg", "N/m", "N*s/m"), units):
         n = X.shape[1]
         parts.append((", " if parts else "") + f'"{name}": {{"value": [')
         for i in range(n):
@@ -217,12 +214,12 @@ def _inputs(cells_m, cells_k, M, K, units) -> list:
                 parts += [", "] if j else []
                 parts.append(_component(X[:, i, j]))
             parts.append("]")
-        joined = "".join(cells)
+        joined = "".join(cells_x)
         plain = joined.isascii() and joined.isprintable() and not ('"' in joined
                                                                     or "\\" in joined)
-        text = ['"', list(cells), suffix + '"'] if plain else [[json.dumps(c + suffix)
-                                                                 for c in cells]]
+        text = ['"', list(cells_x), suffix + '"'] if plain else [[json.dumps(c + suffix)
+                                                                   for c in cells_x]]
         assumed = ', "assumed_si": true}' if factor == 1.0 and not suffix and not \
-            _unit(cells[0])[1] else "}"
+            _unit(cells_x[0])[1] else "}"
         parts += [f'], "unit": "{unit}", "text": ', *text, assumed]
     return parts

@@ -279,6 +279,9 @@ class CoriolisTimeRows(RowSpec):
     def __init__(self, values: dict, words=(), *, strict: bool = False):
         self.values, self.strict = dict(values), strict
         self.words = {w.partition("=")[0].strip(): w for w in words}
+        from .fast_coriolis_time import coriolis_time_fast  # a t column on arrays
+
+        self.fast = coriolis_time_fast
 
     def key(self, name):
         return name if name == "t" or name in self.words else None

@@ -33,24 +33,34 @@ import math
 
 from ..lazy import numpy as np
 from .columns import Columns
-from .modes import _COMPONENT_FLOOR, SYMMETRY_RTOL
+from .modes import _COMPONENT_FLOOR, PROPORTIONAL_RTOL, SYMMETRY_RTOL
 
-__all__ = ["stacked_modes", "MARGIN", "APART"]
+__all__ = ["stacked_modes", "MARGIN", "APART", "DAMPING_SPREAD", "UNDERDAMPED"]
 
 #: Smallest eigenvalue of M and of ``K phi = lambda M phi``, as a share of the largest, below
 #: which a row goes to the one-off (its thresholds are 1e-10: a margin of 100).
 MARGIN = 1e-8
 #: Neighbouring frequencies squared closer than this share of the larger go to the one-off.
 APART = 1e-6
+#: The margin kept from the one-off's test of proportional damping (either way: rows near it
+#: go to the one-off).
+MARGIN_P = 100.0
+#: A mode's modal damping below this share of the largest goes to the one-off.
+DAMPING_SPREAD = 1e-4
+#: ``(1 - zeta)(1 + zeta)`` at or below this goes to the one-off (near critical: its note).
+UNDERDAMPED = 1e-6
 
 
-def stacked_modes(M, K, normalize: str = "max") -> Columns:
+def stacked_modes(M, K, normalize: str = "max", C=None) -> Columns:
     """The one-off's results of every row (see the module); ``exact`` marks the rows the
-    vectorised path takes."""
+    vectorised path takes. With ``C`` (N s/m, (rows, n, n)) also the proportional damping's
+    ``zeta_i`` and ``omega_d_i`` (:func:`_damping`)."""
     rows, n, _ = M.shape
     with np.errstate(all="ignore"):
         exact = np.isfinite(M).all(axis=(1, 2)) & np.isfinite(K).all(axis=(1, 2))
-        for A in (M, K):
+        if C is not None:
+            exact &= np.isfinite(C).all(axis=(1, 2))
+        for A in (M, K) if C is None else (M, K, C):
             scale = np.abs(A).max(axis=(1, 2))
             exact &= np.abs(A - A.transpose(0, 2, 1)).max(axis=(1, 2)) <= SYMMETRY_RTOL * scale
         eye = np.broadcast_to(np.eye(n), M.shape)
@@ -79,6 +89,10 @@ def stacked_modes(M, K, normalize: str = "max") -> Columns:
             modal_stiffness = np.sum(shapes * (K @ shapes), axis=1)
         exact &= np.isfinite(shapes).all(axis=(1, 2)) & np.isfinite(modal_mass).all(axis=1) \
             & np.isfinite(modal_stiffness).all(axis=1) & np.isfinite(omega).all(axis=1)
+        if C is not None:
+            C = (C + C.transpose(0, 2, 1)) / 2.0
+            zeta, omega_d, damped = _damping(C, V, omega)
+            exact &= damped
     values = {}
     for i in range(n):
         values[f"omega_{i + 1}"] = np.ascontiguousarray(omega[:, i])
@@ -88,7 +102,40 @@ def stacked_modes(M, K, normalize: str = "max") -> Columns:
         values[f"mode_{i + 1}"] = np.ascontiguousarray(shapes[:, :, i])
         values[f"modal_mass_{i + 1}"] = np.ascontiguousarray(modal_mass[:, i])
         values[f"modal_stiffness_{i + 1}"] = np.ascontiguousarray(modal_stiffness[:, i])
+    if C is not None:
+        for i in range(n):
+            values[f"zeta_{i + 1}"] = np.ascontiguousarray(zeta[:, i])
+        for i in range(n):
+            values[f"omega_d_{i + 1}"] = np.ascontiguousarray(omega_d[:, i])
+        return Columns(values, exact, model="proportional damping", method="eigh")
     return Columns(values, exact, model="linear", method="eigh")
+
+
+def _damping(C, V, omega):
+    """``(zeta, omega_d, exact)`` of proportional damping on a stack:
+
+    .. math:: \\zeta_i = \\frac{(V^T C V)_{ii}}{2 \\omega_i}, \\quad
+              \\omega_{d,i} = \\omega_i \\sqrt{(1 - \\zeta_i)(1 + \\zeta_i)},
+
+    ``V`` the mass-normalised mode shapes (``V^T M V = I``), as
+    :func:`dyncalc.physics.modes._damp_part` forms them. A row is exact where ``V^T C V`` is
+    diagonal well inside the one-off's ``PROPORTIONAL_RTOL`` (a margin of 100), every mode's
+    damping is at least :data:`DAMPING_SPREAD` of the largest (a small one would carry the
+    larger ones' rounding) and every mode underdamped well below 1 (no note); the
+    non-proportional (state-space) rows, rigid-body, critical and overdamped modes are the
+    one-off's."""
+    modal = V.transpose(0, 2, 1) @ C @ V
+    diag = np.diagonal(modal, axis1=1, axis2=2)
+    off = np.abs(modal - diag[:, :, None] * np.eye(modal.shape[1]))
+    scale = np.abs(modal).max(axis=(1, 2))
+    exact = (off.max(axis=(1, 2)) <= PROPORTIONAL_RTOL / MARGIN_P * scale) \
+        & (diag.min(axis=1) > DAMPING_SPREAD * scale)
+    zeta = diag / (2.0 * omega)
+    gap = (1.0 - zeta) * (1.0 + zeta)
+    exact &= (gap > UNDERDAMPED).all(axis=1)
+    omega_d = omega * np.sqrt(np.where(gap > 0.0, gap, 1.0))
+    exact &= np.isfinite(zeta).all(axis=1) & np.isfinite(omega_d).all(axis=1)
+    return zeta, omega_d, exact
 
 
 def _normalised(V, normalize: str):

@@ -92,6 +92,53 @@ class TimeMotion:
             raise PhysicsError(f"{name} is not finite at t = {t:g} s")
         return np.array(values) + 0.0
 
+    def vectors_at(self, names, times):
+        """``({name: (n, 3) array}, ok)``: the vectors ``names`` at each of ``times`` (SI), bit
+        for bit :meth:`vector` at each time (the same compiled expressions, all of them in one
+        call a time); ``ok`` is False at a time where :meth:`vector` would refuse (not
+        defined or not finite there), whose values are then NaN."""
+        key = tuple(names)
+        f = self._together.get(key) if hasattr(self, "_together") else None
+        if f is None:
+            self._together = getattr(self, "_together", {})
+            f = self._together[key] = sympy.lambdify(
+                [self.t], [e for name in key for e in self.exprs[name]], modules=["math"])
+        times = np.asarray(times, dtype=float)
+        out = np.full((len(times), 3 * len(key)), np.nan)
+        ok = np.zeros(len(times), dtype=bool)
+        for i, s in enumerate(times.tolist()):
+            try:
+                out[i] = [float(v) for v in f(s)]
+            except (ZeroDivisionError, ValueError, OverflowError, TypeError):
+                continue
+            ok[i] = True
+        ok &= np.isfinite(out).all(axis=1)
+        out += 0.0
+        return {name: out[:, 3 * j:3 * j + 3] for j, name in enumerate(key)}, ok
+
+    def rotations_at(self, times):
+        """``(Q, theta, ok)`` at each of ``times``: :meth:`rotation_matrix` on a stack, bit for
+        bit (the angle and its sine and cosine by the same calls a time, Rodrigues' sums on
+        the stack); a frame whose axis turns in time is not taken (``None``)."""
+        times = np.asarray(times, dtype=float)
+        n = len(times)
+        if self.rotation == "none":
+            return np.broadcast_to(np.eye(3), (n, 3, 3)), np.zeros(n), np.ones(n, dtype=bool)
+        if self.rotation != "closed form":
+            return None
+        theta, sin, cos = np.full(n, np.nan), np.full(n, np.nan), np.full(n, np.nan)
+        ok = np.zeros(n, dtype=bool)
+        for i, s in enumerate(times.tolist()):
+            try:
+                value = self._theta(s)
+                theta[i], sin[i], cos[i] = value, math.sin(value), math.cos(value)
+            except (ZeroDivisionError, ValueError, OverflowError, TypeError):
+                continue
+            ok[i] = True
+        K = _cross_matrix(self.axis)
+        Q = np.eye(3) + sin[:, None, None] * K + (1.0 - cos)[:, None, None] * (K @ K)
+        return Q, theta, ok & np.isfinite(theta)
+
     def rotation_matrix(self, t: float):
         """``Q(t)`` (rotating -> fixed components) and the angle turned (``None`` when the axis
         turns in time)."""
