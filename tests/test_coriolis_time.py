@@ -177,6 +177,21 @@ def test_an_axis_that_turns_in_time_is_integrated_numerically_and_says_so():
     assert np.allclose(got["v"], Q @ rot["v"], atol=1e-10)
 
 
+def test_a_time_too_many_turns_away_on_a_turning_axis_is_refused_not_integrated_for_hours():
+    # t = 1e150 s needs ~1e150 turns: the integration stops at RATE_EVALUATIONS calls of the
+    # rate (about a second) with a one-line refusal; a time within reach still integrates
+    args = ["--r", "0.3 m + 0.1 m/s*t, 0, 0 m", "--omega", "0, w*sin(k*t), w", "w=1rad/s",
+            "k=1.3rad/s", "--basis", "fixed", "--value", "v"]
+    for t in ("1e150s", "-1e150s"):
+        result = invoke("coriolis", *args, "--t", t)
+        assert result.exit_code == 2
+        assert error_line(result) == (
+            f"Error: the frame's rotation could not be integrated to t = {float(t[:-1]):g} s: "
+            "the axis turns in time and reaching t needs more than 50,000 evaluations of the "
+            "rate (too many turns); ask for a time nearer 0")
+    assert invoke("coriolis", *args, "--t", "20s").exit_code == 0
+
+
 # --- derivatives, bases, units --------------------------------------------------------------
 
 

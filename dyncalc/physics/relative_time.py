@@ -36,6 +36,11 @@ from .symbolic import Symbols, to_sympy, text_of
 #: Seconds sympy may spend on the closed-form integral of the frame's rate before the
 #: rotation angle falls back to adaptive quadrature (exact to rtol 1e-13 either way).
 INTEGRAL_BUDGET = 2.0
+#: Evaluations of the frame's rate one numerical integration of ``Q`` may make (DOP853 makes
+#: 12 a step; at rtol 1e-12 a turn takes tens of steps, so about a hundred turns; about 1 s).
+#: A time that needs more is refused instead of integrated for minutes (t = 1e150 s would run
+#: for hours).
+RATE_EVALUATIONS = 50_000
 
 __all__ = ["TimeMotion", "FrameState", "motion_in_time"]
 
@@ -149,18 +154,28 @@ class TimeMotion:
             return _rodrigues(self.axis, theta), theta
         return self._integrate(t), None
 
+    def _rate_equation(self, t: float):
+        """``Q' = Q [Omega(s)]x`` as ``solve_ivp`` takes it, which raises once it has been
+        called :data:`RATE_EVALUATIONS` times (see :func:`_bounded`)."""
+        calls = [0]
+
+        def rhs(s, y):
+            calls[0] += 1
+            if calls[0] > RATE_EVALUATIONS:
+                raise _TooManyTurns()
+            return (y.reshape(3, 3) @ _cross_matrix(self.vector("Omega", s))).ravel()
+
+        return rhs
+
     def _integrate(self, t: float):
         from scipy.integrate import solve_ivp
 
         if t == 0.0:
             return np.eye(3)
 
-        def rhs(s, y):
-            Q = y.reshape(3, 3)
-            return (Q @ _cross_matrix(self.vector("Omega", s))).ravel()
-
-        sol = solve_ivp(rhs, (0.0, t), np.eye(3).ravel(), method="DOP853", rtol=1e-12,
-                        atol=1e-14)
+        rhs = self._rate_equation(t)
+        sol = _bounded(lambda: solve_ivp(rhs, (0.0, t), np.eye(3).ravel(), method="DOP853",
+                                         rtol=1e-12, atol=1e-14), t)
         if not sol.success:
             raise PhysicsError(f"the frame's rotation could not be integrated to t = {t:g} s "
                                f"({sol.message})")
@@ -194,9 +209,6 @@ class TimeMotion:
         """``Q`` at each of ``times`` from one integration forward and one backward."""
         from scipy.integrate import solve_ivp
 
-        def rhs(s, y):
-            return (y.reshape(3, 3) @ _cross_matrix(self.vector("Omega", s))).ravel()
-
         out = [np.eye(3)] * len(times)
         for side in (times > 0, times < 0):
             chosen = np.flatnonzero(side)
@@ -204,8 +216,10 @@ class TimeMotion:
                 continue
             order = chosen[np.argsort(np.abs(times[chosen]))]
             end = float(times[order[-1]])
-            sol = solve_ivp(rhs, (0.0, end), np.eye(3).ravel(), method="DOP853", rtol=1e-12,
-                            atol=1e-14, t_eval=times[order])
+            rhs = self._rate_equation(end)
+            sol = _bounded(lambda: solve_ivp(rhs, (0.0, end), np.eye(3).ravel(),
+                                             method="DOP853", rtol=1e-12, atol=1e-14,
+                                             t_eval=times[order]), end)
             if not sol.success:
                 raise PhysicsError(f"the frame's rotation could not be integrated to t = "
                                    f"{end:g} s ({sol.message})")
@@ -213,6 +227,23 @@ class TimeMotion:
                 u, _, vt = np.linalg.svd(sol.y[:, k].reshape(3, 3))
                 out[index] = u @ vt
         return out
+
+
+class _TooManyTurns(Exception):
+    """The rate was evaluated :data:`RATE_EVALUATIONS` times in one integration."""
+
+
+def _bounded(integrate, t: float):
+    """``integrate()`` (a ``solve_ivp`` call whose rate counts its calls), refused with a
+    :class:`~dyncalc.errors.PhysicsError` once it would need more than
+    :data:`RATE_EVALUATIONS` evaluations of the rate to reach ``t``."""
+    try:
+        return integrate()
+    except _TooManyTurns:
+        raise PhysicsError(f"the frame's rotation could not be integrated to t = {t:g} s: "
+                           f"the axis turns in time and reaching t needs more than "
+                           f"{RATE_EVALUATIONS:,} evaluations of the rate (too many turns); "
+                           f"ask for a time nearer 0") from None
 
 
 def _rodrigues(n, theta: float):
