@@ -28,7 +28,7 @@ from ..lazy import numpy as np
 from .inertia import principal_local, reference_offset
 
 __all__ = ["PlacedBody", "Composite", "body_frame", "steiner", "placed", "composite",
-           "principal", "moment_about", "DEGENERATE", "unit_vector"]
+           "principal", "moment_about", "DEGENERATE", "unit_vector", "squared_norm"]
 
 _OVERFLOW = ("a mass, centre or moment of inertia overflows float64 (beyond 1.8e308 in kg, m, "
              "kg*m^2): give the bodies sizes and positions that keep them in range")
@@ -77,7 +77,18 @@ def steiner(m: float, d):
     [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 0.0]]
     """
     d = np.asarray(d, dtype=float)
-    return m * (float(d @ d) * np.eye(3) - np.outer(d, d))
+    return m * (float(squared_norm(d)) * np.eye(3) - np.outer(d, d))
+
+
+def squared_norm(d):
+    """``|d|^2 = (d_x^2 + d_y^2) + d_z^2`` over the last axis, in this order (not BLAS's
+    ``d @ d``, whose order and fused multiply-adds depend on the processor): the one-off and
+    the column kernel (:mod:`.inertia_placed_columns`) share it, so they agree bit for bit.
+
+    >>> float(squared_norm(np.array([1.0, 2.0, 2.0])))
+    9.0
+    """
+    return (d[..., 0] * d[..., 0] + d[..., 1] * d[..., 1]) + d[..., 2] * d[..., 2]
 
 
 class PlacedBody:
