@@ -66,9 +66,9 @@ def _allowed(kind: str, keys: tuple) -> bool:
     return rest == sorted(BODY_DIMENSIONS[kind]) and len(set(keys)) == len(keys)
 
 
-#: A number after ``=`` or a blank (a template whose every number starts a value, after its
+#: A number after ``=``, ``(``, ``[``, ``,`` or a blank (a template whose every number starts a value, after its
 #: ``=`` and blanks, is checked by :data:`_SLOT_RE`; the one-off reads it as this literal).
-_VALUE_RE = re.compile(rf"(?<=[= \t]){_LITERAL_CELL}")
+_VALUE_RE = re.compile(rf"(?<=[=(\[, \t]){_LITERAL_CELL}")
 _SLOT_RE = re.compile(r"^([ \t]*)#([^#]*)$")
 #: A slot of a template, as a pattern: the literal :data:`_VALUE_RE` takes there.
 _SLOT = f"({_LITERAL_CELL})"
@@ -181,6 +181,10 @@ def _template(template: str, cache: dict):
                 break
             slots.append((slot.group(1), slot.group(2)))
         cache[key] = None if slots is None else (shape[0], shape[1], slots, shape[3])
+        if cache[key] is None:  # a placed or turned body (.fast_inertia_placed)
+            from .fast_inertia_placed import placed_template
+
+            cache[key] = placed_template(template)
     return cache[key]
 
 
@@ -201,6 +205,10 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_columns import centred_composite
 
+    if any(len(shape) > 4 for _c, shape, _l in parts):
+        from .fast_inertia_placed import placed_block
+
+        return placed_block(spec, parts, rows, body_cells, bodies, axis, want_json, cache)
     n = len(rows)
     good = np.ones(n, dtype=bool)
     reads, placed = [], []
