@@ -55,6 +55,17 @@ def _annulus(r) -> list[str]:
             '"-disk(m=%.6g kg, r=%.6g m)"' % (m * r.uniform(0.05, 0.3), a * r.uniform(0.1, 0.6))]
 
 
+def _bolt_hole(r) -> list[str]:
+    """A disk somewhere in the x-y plane and a hole inside it, off its centre: a placed
+    composite (the parallel-axis terms of both)."""
+    m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
+    x, y = r.uniform(-1, 1), r.uniform(-1, 1)
+    hole = a * r.uniform(0.1, 0.3)
+    return ['"disk(m=%.6g kg, r=%.6g m, at=(%.6g, %.6g, 0) m)"' % (m, a, x, y),
+            '"-disk(m=%.6g kg, r=%.6g m, at=(%.6g, %.6g, 0) m)"'
+            % (m * r.uniform(0.01, 0.05), hole, x + r.uniform(-0.5, 0.5) * a, y)]
+
+
 CASES = [
     ("natural-frequency mass-spring", ["natural-frequency"], "k [N/m],m [kg]",
      lambda r: [f"{r.uniform(10, 1e4):.6g}", f"{r.uniform(0.1, 50):.6g}"]),
@@ -104,6 +115,7 @@ CASES = [
     ("inertia one disk a row", ["inertia"], "b1",
      lambda r: ['"disk(m=%.6g kg, r=%.6g m)"' % (r.uniform(0.1, 50), r.uniform(0.01, 2))]),
     ("inertia composite", ["inertia"], "b1,b2", lambda r: _annulus(r)),
+    ("inertia placed composite", ["inertia"], "b1,b2", lambda r: _bolt_hole(r)),
     ("modes two-mass chain", ["modes"], "M,K", lambda r: _chain(r)),
     ("modes damped two-mass chain", ["modes"], "M,K,C", lambda r: _damped_chain(r)),
     ("rigid-body drum-two-blocks", ["rigid-body", "--scene", "drum-two-blocks"],

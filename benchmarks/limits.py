@@ -46,6 +46,8 @@ LIMITS = {
     "inertia one disk a row": [str(LIMIT / "inertia.py")],
     # round 6: composites of centred bodies (issue 17's brief, batchrest3)
     "inertia composite": [str(LIMIT / "inertia_composite.py")],
+    # round 7: placed bodies, the parallel-axis terms on columns (issue 17, inertiaplaced)
+    "inertia placed composite": [str(LIMIT / "inertia_placed.py")],
     # round 5: forced-response rows with --t (issue 17's brief, batchrest2)
     "forced-response total response": [str(LIMIT / "forced_total.py")],
     "forced-response undamped": [str(LIMIT / "forced_undamped.py")],

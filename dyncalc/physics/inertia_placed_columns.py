@@ -153,7 +153,6 @@ def _principal_axes(moments, vectors, exact):
     """The axes of :func:`~dyncalc.physics.inertia_tensor.principal` (``(n, 3, 3)``, axis
     ``k`` in ``[:, k, :]``); rows with equal moments whose eigenvectors are not signed world
     axes are marked not exact (in place)."""
-    n = len(moments)
     tol = DEGENERATE * np.maximum((np.abs(moments[:, 0]) + np.abs(moments[:, 1]))
                                   + np.abs(moments[:, 2]), np.finfo(float).tiny)
     g01 = moments[:, 1] - moments[:, 0] <= tol
