@@ -56,14 +56,16 @@ def _annulus(r) -> list[str]:
 
 
 def _bolt_hole(r) -> list[str]:
-    """A disk somewhere in the x-y plane and a hole inside it, off its centre: a placed
+    """A disk somewhere in the x-y plane and a hole inside it, well off its centre (never
+    equal principal moments: no rule for a plane of axes in the limit script): a placed
     composite (the parallel-axis terms of both)."""
     m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
     x, y = r.uniform(-1, 1), r.uniform(-1, 1)
     hole = a * r.uniform(0.1, 0.3)
     return ['"disk(m=%.6g kg, r=%.6g m, at=(%.6g, %.6g, 0) m)"' % (m, a, x, y),
             '"-disk(m=%.6g kg, r=%.6g m, at=(%.6g, %.6g, 0) m)"'
-            % (m * r.uniform(0.01, 0.05), hole, x + r.uniform(-0.5, 0.5) * a, y)]
+            % (m * r.uniform(0.01, 0.05), hole, x + r.choice([-1, 1]) * r.uniform(0.2, 0.5) * a,
+               y)]
 
 
 CASES = [
