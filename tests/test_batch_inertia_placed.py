@@ -167,7 +167,7 @@ def test_the_kernel_is_the_one_off_on_stacked_random_composites():
                {"r": rng.uniform(0.01, 0.1, n), "h": rng.uniform(0.01, 0.1, n)},
                rng.normal(size=(n, 3)) * 0.1, frames[1]),
               ("point", 1.0, rng.uniform(0.1, 1, n), {}, np.zeros((n, 3)), frames[2])]
-    out = placed_composite(bodies, axis=1)
+    out = placed_composite(bodies, axis=(np.array([0.0, 1.0, 0.0]), np.zeros(3)))
     checked = 0
     for i in range(n):
         row = [placed(kind, float(m[i]), {k: float(v[i]) for k, v in dims.items()},
@@ -205,7 +205,8 @@ def _literal(rng, signed=False) -> str:
 
 
 @pytest.mark.parametrize("as_json", [False, True])
-@pytest.mark.parametrize("axes", [["z"], ["x", " -y", "z", ""]])
+@pytest.mark.parametrize("axes", [["z"], ["x", " -y", "z", ""],
+                                  ["(1, 1, 0)", "z through (0.1, 0, 0) m", "(0.3,-2,1e-3)"]])
 def test_one_template_placed_columns_are_the_one_off_byte_for_byte(tmp_path, as_json, axes):
     """Two body columns of one template each (a turned disk placed in cm, a rod along x, a
     half-cylinder shell): most rows in blocks whose only first row is probed, so each row's
@@ -220,7 +221,8 @@ def test_one_template_placed_columns_are_the_one_off_byte_for_byte(tmp_path, as_
               f'{at[5]}) m)')
         b3 = f'half-cylinder-shell(m={_literal(rng)} g, r={_literal(rng)} mm, h=2 m, along=z)'
         cells.append([b1, b2, b3, rng.choice(axes)])
-        rows.append(f'"{b1}","{b2}","{b3}",{cells[-1][3]}')
+        axis = cells[-1][3]
+        rows.append(f'"{b1}","{b2}","{b3}",' + (f'"{axis}"' if "," in axis else axis))
     path = tmp_path / "template.csv"
     path.write_text("b1,b2,b3,axis\n" + "\n".join(rows) + "\n")
     fast, generic = _run(path, as_json, True), _run(path, as_json, False)
@@ -229,3 +231,20 @@ def test_one_template_placed_columns_are_the_one_off_byte_for_byte(tmp_path, as_
     blocks, covered = _covered(table, ["b1", "b2", "b3", "axis"], as_json)
     assert len(covered) >= 0.6 * len(rows)
     assert len(blocks) <= 4
+
+
+def test_other_axes_are_the_parallel_axis_theorem():
+    """A rod of 3 kg, 2 m along x centred at the origin about z through its end (1, 0, 0) m:
+    m l^2 / 3 = 4 kg*m^2; a disk of 4 kg, r = 0.2 m at (0, 0, 0.5) m about the in-plane
+    direction (1, 1, 0) through the origin: m r^2 / 4 + m 0.5^2 = 0.04 + 1 (Table 3.1 and
+    Steiner); both on columns."""
+    table = [["rod(m=3 kg, l=2 m, along=x, at=(0, 0, 0) m)"] * 2, ["z through (1, 0, 0) m"] * 2]
+    blocks, rows = _covered(table, ["b1", "axis"])
+    assert rows == [0, 1]
+    assert blocks[0].values["J_axis"].tolist() == pytest.approx([4.0, 4.0], rel=1e-15)
+    table = [["disk(m=4 kg, r=0.2 m, at=(0, 0, 0.5) m)"], ["(1, 1, 0)"]]
+    blocks, rows = _covered(table, ["b1", "axis"])
+    assert rows == [0]
+    assert blocks[0].values["J_axis"][0] == pytest.approx(0.04 + 1.0, rel=1e-15)
+    assert blocks[0].values["radius_of_gyration"][0] == pytest.approx(math.sqrt(1.04 / 4.0),
+                                                                      rel=1e-15)

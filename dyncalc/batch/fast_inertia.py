@@ -14,9 +14,9 @@ import re
 
 import numpy as np
 
-from ..errors import InputError
 from .columns import _LITERAL_CELL, _read_column
 from .fast import FastBlock, json_head
+from .inertia_probe import _dim, _Param, _probe, _probe_inputs
 
 __all__ = ["inertia_fast"]
 
@@ -25,15 +25,6 @@ __all__ = ["inertia_fast"]
 _WORD_RE = re.compile(r"^\s*(-?)\s*([a-z][a-z-]*)\s*\(([^()]*)\)\s*$")
 _PAIR_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
 
-
-class _Param:
-    """What :func:`~dyncalc.batch.columns._read_column` needs: a dimension and a positive
-    value (the body reader's constraint on every mass, density and length)."""
-
-    __slots__ = ("name", "dim", "constraint")
-
-    def __init__(self, name: str, dim):
-        self.name, self.dim, self.constraint = name, dim, "positive"
 
 
 def _shape(cell: str):
@@ -90,9 +81,6 @@ def inertia_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fas
     n = len(body_cells[0])
     candidates = range(n)
     axis_cells = axes[0] if axes else [""] * n
-    if "".join(axis_cells).strip():  # rows with an axis: a world axis (x, -y, ...) only
-        candidates = [i for i in candidates if axis_cells[i].strip().lstrip("+-").strip()
-                      in ("", "x", "y", "z")]
     if not candidates or any("\n" in "".join(cells) for cells in body_cells):
         return []
     whole = len(candidates) == n
@@ -188,16 +176,6 @@ def _template(template: str, cache: dict):
     return cache[key]
 
 
-def _dim(kind: str, key: str):
-    from ..commands.inertia_read import DENSITY
-    from ..physics.inertia import DENSITY_KIND
-    from ..units import LENGTH, MASS
-
-    if key == "m":
-        return MASS
-    return DENSITY[DENSITY_KIND[kind]] if key == "rho" else LENGTH
-
-
 def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     """One template's rows: ``parts`` holds each body's column, template shape and number
     literals (a list a parameter), in the order of the row's bodies (``b1``, ``b2``, ...);
@@ -205,7 +183,7 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_columns import centred_composite
 
-    if any(len(shape) > 4 for _c, shape, _l in parts):
+    if any(len(shape) > 4 for _c, shape, _l in parts) or not _world_axis(axis):
         from .fast_inertia_placed import placed_block
 
         return placed_block(spec, parts, rows, body_cells, bodies, axis, want_json, cache)
@@ -268,6 +246,11 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
     return FastBlock(rows[keep], values, result_dims, head, inputs)
 
 
+def _world_axis(axis: str) -> bool:
+    """Whether the axis cell is empty or a world axis through the origin (``x``, ``-y``)."""
+    return axis.strip().lstrip("+-").strip() in ("", "x", "y", "z")
+
+
 def _about_world_axis(out, axis: str) -> None:
     """Add ``J_axis`` and ``radius_of_gyration`` about a world axis through the origin (the
     centre of mass of a centred composite): the one-off's ``n^T (J_C + 0) n`` with ``n`` a
@@ -277,29 +260,6 @@ def _about_world_axis(out, axis: str) -> None:
     with np.errstate(all="ignore"):
         out.values["J_axis"] = J
         out.values["radius_of_gyration"] = np.sqrt(J / out.values["m"])
-
-
-def _probe(spec, texts: dict, labels: dict, out, i: int):
-    """The one-off Result of one row, or ``None`` where it is not the kernel's to the bit."""
-    from .fast_commands import _same
-
-    try:
-        result = spec.compute(texts, labels)
-    except InputError:
-        return None
-    if (result.warnings or result.model != out.model or set(result.extra)
-            or list(result.results) != list(out.values)):
-        return None
-    for name, entry in result.results.items():
-        if entry.uncertainty is not None or not _same(entry.si, out.values[name][i]):
-            return None
-    return result
-
-
-def _probe_inputs(result) -> str:
-    from ..result.encode import _json_inputs
-
-    return json.dumps(_json_inputs(result.inputs))[1:-1]
 
 
 def _entries(reads, keep: np.ndarray, lines: int | None):

@@ -1,7 +1,8 @@
 """The vectorised path of ``inertia --batch`` for placed and turned bodies: body words with
 ``at=(x, y, z) UNIT`` (a column of positions, read a component at a time), ``along=`` a world
 axis word (``x``, ``-y``: the same turn on every row of a template), half-cylinder shells,
-and the axis cell a world axis, through
+and the axis cell any ``--axis`` (a world axis or a vector, perhaps ``through`` a point: the
+same text on every row of a block), through
 :func:`dyncalc.physics.inertia_placed_columns.placed_composite`. The templates and their
 reading are :mod:`.fast_inertia`'s; this module gives the shape of a placed template and
 computes its block, probed against the one-off like every block there.
@@ -100,10 +101,19 @@ def placed_block(spec, parts, rows, body_cells, bodies, axis: str, want_json, ca
     """One placed template's rows (``parts`` as :func:`.fast_inertia._block` takes them, the
     shapes :func:`placed_template`'s or the centred ones)."""
     from ..batch.columns import _read_column
+    from ..commands.inertia_read import read_axis
+    from ..errors import InputError
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_placed_columns import placed_composite
-    from .fast_inertia import _dim, _Param, _probe, _probe_inputs
+    from .inertia_probe import _dim, _Param, _probe, _probe_inputs
 
+    about = None
+    if axis.strip():
+        try:
+            read = read_axis(axis.strip(), spec.strict)
+        except InputError:  # the one-off's message, row by row
+            return None
+        about = (read.direction, read.point)
     n = len(rows)
     good = np.ones(n, dtype=bool)
     reads, placed = [], []
@@ -137,8 +147,7 @@ def placed_block(spec, parts, rows, body_cells, bodies, axis: str, want_json, ca
             bodies_si.append([kind, sign, m, dims, at, frame])
         for body in bodies_si:
             body[2] = np.where(good, body[2], 1.0)
-        axis_index = "xyz".index(axis.strip().lstrip("+-").strip()) if axis.strip() else None
-        out = placed_composite([tuple(b) for b in bodies_si], axis_index)
+        out = placed_composite([tuple(b) for b in bodies_si], about)
     good &= out.exact
     if not good.any():
         return None

@@ -1,18 +1,20 @@
 """Column kernel of ``inertia`` for placed and turned bodies: each body at ``at=`` (a column of
 positions), its own axes turned by a word (``along=x``, ``-y``, ...: a signed permutation),
-composites with holes, and the moment about a world axis through the origin; bit for bit
+composites with holes, and the moment about any axis (``--axis``: a direction, perhaps through
+a point); bit for bit
 :func:`dyncalc.commands.inertia.compute` on each row.
 
 .. math:: J_{C,i} = R_i \\operatorname{diag}(J_{xx}, J_{yy}, J_{zz})_i R_i^T, \\qquad
           J_{O,i} = J_{C,i} + m_i (|c_i|^2 I - c_i c_i^T),
 
     m = \\sum s_i m_i, \\quad r_c = \\sum s_i m_i c_i / m, \\quad
-    J_C = J_O - m (|r_c|^2 I - r_c r_c^T), \\quad J_{axis} = e_k^T (J_C + m (|r_c|^2 I
-    - r_c r_c^T)) e_k.
+    J_C = J_O - m (|r_c|^2 I - r_c r_c^T), \\quad J_{axis} = n^T (J_C + m (|d|^2 I
+    - d d^T)) n, \\ d = r_c - p.
 
 Bit for bit because every step is the one-off's in the same order: a rotation by a signed
 permutation has one non-zero term in each sum (exact whatever the order, signed zeros too),
-``|c|^2`` is :func:`~dyncalc.physics.inertia_tensor.squared_norm` in both, the sums over
+``|c|^2`` and ``n^T J n`` are :func:`~dyncalc.physics.inertia_tensor.squared_norm` and
+:func:`~dyncalc.physics.inertia_tensor.quadratic_form` in both, the sums over
 bodies run left to right from 0, and ``eigh``/``eigvalsh`` on the stack are one LAPACK call
 per matrix, as the one-off's. The principal axes follow the rule of
 :func:`~dyncalc.physics.inertia_tensor.principal`: a unit vector with its largest component
@@ -22,13 +24,16 @@ axes (else the rule's Gram-Schmidt could round otherwise: the generic path answe
 Parameters: ``bodies``, each ``(kind, sign, m, dims, at, frame)``: ``m`` (kg) and ``dims``
 (m) arrays, ``at`` an ``(n, 3)`` array (m) or ``None`` (the origin), ``frame`` the body's
 own axes (a 3x3 signed permutation, :func:`~dyncalc.physics.inertia_tensor.body_frame`);
-``axis`` the index (0, 1, 2) of the world axis for ``J_axis`` or ``None``.
+``axis`` the ``(unit direction, point)`` of ``--axis`` (as
+:func:`~dyncalc.commands.inertia_read.read_axis` reads them: the same on every row) for
+``J_axis`` or ``None``.
 
 Example::
 
     >>> rod = ("rod", 1.0, np.array([3.0]), {"l": np.array([2.0])},
     ...        np.array([[1.0, 0.0, 0.0]]), np.array([[0.0, 0, 1], [1, 0, 0], [0, 1, 0]]))
-    >>> placed_composite([rod], axis=2).values["J_axis"].tolist()   # m l^2 / 3 about its end
+    >>> z = (np.array([0.0, 0.0, 1.0]), np.zeros(3))
+    >>> placed_composite([rod], axis=z).values["J_axis"].tolist()   # m l^2 / 3 about its end
     [4.0]
 
 Reference: Gross et al., Engineering Mechanics 3, Section 3.2.3 and Example 3.41.
@@ -38,7 +43,7 @@ from __future__ import annotations
 from ..lazy import numpy as np
 from .columns import Columns
 from .inertia import principal_local, reference_offset
-from .inertia_tensor import DEGENERATE, squared_norm
+from .inertia_tensor import DEGENERATE, quadratic_form, squared_norm
 
 __all__ = ["placed_composite", "is_signed_permutation"]
 
@@ -79,14 +84,14 @@ def _symmetric(J):
     return (J + J.transpose(0, 2, 1)) / 2.0
 
 
-def placed_composite(bodies: list, axis: int | None = None) -> Columns:
+def placed_composite(bodies: list, axis=None) -> Columns:
     """The results of ``inertia`` for placed, turned bodies (see the module); overflow
     marks rows not exact, never warned by numpy."""
     with np.errstate(all="ignore"):
         return _placed_composite(bodies, axis)
 
 
-def _placed_composite(bodies: list, axis: int | None) -> Columns:
+def _placed_composite(bodies: list, axis) -> Columns:
     n = len(bodies[0][2])
     m = 0.0
     moment = 0.0
@@ -139,8 +144,9 @@ def _placed_composite(bodies: list, axis: int | None) -> Columns:
     for k in range(3):
         values[f"axis_{k + 1}"] = np.ascontiguousarray(axes[:, k, :])
     if axis is not None:
-        # n^T (J_C + m (|d|^2 I - d d^T)) n with n = +-e_k and d = r_c: the (k, k) element
-        J = J_C[:, axis, axis] + safe_m * (squared_norm(r_c) - r_c[:, axis] * r_c[:, axis])
+        # n^T (J_C + m (|d|^2 I - d d^T)) n with d = r_c - p: the one-off's moment_about
+        direction, point = axis
+        J = quadratic_form(direction, J_C + _steiner(safe_m, r_c - point))
         exact &= np.isfinite(J) & (J > 0.0)   # a zero moment: the one-off's signed zero
         values["J_axis"] = J
         values["radius_of_gyration"] = np.sqrt(np.where(exact, J, 1.0) / safe_m)

@@ -28,7 +28,8 @@ from ..lazy import numpy as np
 from .inertia import principal_local, reference_offset
 
 __all__ = ["PlacedBody", "Composite", "body_frame", "steiner", "placed", "composite",
-           "principal", "moment_about", "DEGENERATE", "unit_vector", "squared_norm"]
+           "principal", "moment_about", "DEGENERATE", "unit_vector", "squared_norm",
+           "quadratic_form"]
 
 _OVERFLOW = ("a mass, centre or moment of inertia overflows float64 (beyond 1.8e308 in kg, m, "
              "kg*m^2): give the bodies sizes and positions that keep them in range")
@@ -249,4 +250,16 @@ def moment_about(J_C, m: float, r_c, direction, point=(0.0, 0.0, 0.0)) -> float:
     n = unit_vector(direction, "--axis: the axis direction has zero length")
     d = np.asarray(r_c, dtype=float) - np.asarray(point, dtype=float)
     J = np.asarray(J_C, dtype=float) + steiner(m, d)
-    return float(n @ J @ n)
+    return float(quadratic_form(n, J))
+
+
+def quadratic_form(n, J):
+    """``n^T J n`` as ``v = n^T J`` (``v_j = (n_x J_xj + n_y J_yj) + n_z J_zj``), then
+    ``(v_x n_x + v_y n_y) + v_z n_z``, in this order (not BLAS's, which depends on the
+    processor); ``J`` one matrix or a stack ``(..., 3, 3)``, shared with the column kernel.
+
+    >>> float(quadratic_form(np.array([0.6, 0.8, 0.0]), np.diag([1.0, 2.0, 3.0])))
+    1.6400000000000001
+    """
+    v = [(n[0] * J[..., 0, j] + n[1] * J[..., 1, j]) + n[2] * J[..., 2, j] for j in range(3)]
+    return (v[0] * n[0] + v[1] * n[1]) + v[2] * n[2]
