@@ -1,8 +1,9 @@
 """The vectorised path of ``inertia --batch``: the rows whose bodies are all at the origin
 along z (``disk(m=4kg, r=0.2m)``, and composites such as a disk and ``-disk(...)``, a hole:
 mass or density and dimensions, plain numbers with plain units; no ``at=``, ``along=`` or
-``axis``), grouped by bodies and the parameters they name, through
-:func:`dyncalc.physics.inertia_columns.centred_composite`. Each group's first
+``axis`` but a world axis), grouped by bodies and the parameters they name, through
+:func:`dyncalc.physics.inertia_columns.centred_composite`; placed and turned bodies and other
+axes through :mod:`.fast_inertia_placed`. Each group's first
 row is also computed by the one-off (a *probe*): the group takes the generic path unless its
 results are the kernel's to the bit and its input entries the ones assembled here. Every
 other row takes the generic path.
@@ -24,7 +25,6 @@ __all__ = ["inertia_fast"]
 #: parentheses (no vector, no expression).
 _WORD_RE = re.compile(r"^\s*(-?)\s*([a-z][a-z-]*)\s*\(([^()]*)\)\s*$")
 _PAIR_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
-
 
 
 def _shape(cell: str):
@@ -57,8 +57,9 @@ def _allowed(kind: str, keys: tuple) -> bool:
     return rest == sorted(BODY_DIMENSIONS[kind]) and len(set(keys)) == len(keys)
 
 
-#: A number after ``=``, ``(``, ``[``, ``,`` or a blank (a template whose every number starts a value, after its
-#: ``=`` and blanks, is checked by :data:`_SLOT_RE`; the one-off reads it as this literal).
+#: A number after ``=``, ``(``, ``[``, ``,`` or a blank (a template whose every number starts
+#: a value, after its ``=`` and blanks, is checked by :data:`_SLOT_RE`, or a component of
+#: ``at=``, by :mod:`.fast_inertia_placed`; the one-off reads it as this literal).
 _VALUE_RE = re.compile(rf"(?<=[=(\[, \t]){_LITERAL_CELL}")
 _SLOT_RE = re.compile(r"^([ \t]*)#([^#]*)$")
 #: A slot of a template, as a pattern: the literal :data:`_VALUE_RE` takes there.
