@@ -282,27 +282,31 @@ def _value_equilibria(d, values, n, exact):
     chosen = x[np.arange(n), np.argmax(stable, axis=1)]
     word = {True: " (stable)", False: " (unstable)"}
     c = d.coord
-    rows = [(row[:k], st[:k]) for row, k, st in zip(x.tolist(), count.tolist(),
-                                                    stable.tolist())]
     texts = np.empty(n, dtype=object)
-    # rows with the same roots count and stabilities share the text of a root the same on
-    # all of them (0, pi): formatted once
+    # rows with the same roots count and stabilities share one format: the roots the same
+    # on all of them (0, pi) written into it once, the others one format call a row
     kinds, which = np.unique(count * 2 ** x.shape[1] + stable @ (2 ** np.arange(x.shape[1])),
                              return_inverse=True)
     for g in range(len(kinds)):
         at = np.flatnonzero(which == g)
         k = int(count[at[0]])
-        pieces = []
+        pieces, varying = [], []
         for j in range(k):
             col, w = x[at, j], word[bool(stable[at[0], j])]
-            pieces.append([f"{c}={col[0]:.6g}{w}"] * len(at) if (col == col[0]).all()
-                          else [f"{c}={v:.6g}{w}" for v in col.tolist()])
-        texts[at] = list(map("; ".join, zip(*pieces))) if pieces else [""] * len(at)
-
-    about = chosen.tolist()
+            if (col == col[0]).all():
+                pieces.append(f"{c}={col[0]:.6g}{w}".replace("{", "{{").replace("}", "}}"))
+            else:
+                pieces.append(f"{c}={{:.6g}}{w}")
+                varying.append(col.tolist())
+        template = "; ".join(pieces)
+        texts[at] = list(map(template.format, *varying)) if varying else [template] * len(at)
 
     def extras(keep):  # (JSON only: made for the rows kept)
+        keep = np.asarray(keep)
+        about = chosen[keep].tolist()
+        rows = [(row[:k], st[:k]) for row, k, st in zip(x[keep].tolist(), count[keep].tolist(),
+                                                        stable[keep].tolist())]
         return [['{"equilibria": [' + ", ".join(
-            [f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}' for v, s in zip(*rows[i])])
-            + f'], "about": {{"{c}": {about[i]!r}}}}}' for i in np.asarray(keep).tolist()]]
+            [f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}' for v, s in zip(*row)])
+            + f'], "about": {{"{c}": {a!r}}}}}' for row, a in zip(rows, about)]]
     return chosen, texts, extras
