@@ -124,9 +124,13 @@ def light_probe(spec, given_names, out):
     the table (no one-off, so no sympy): the inputs are the scene's parameters in its order
     (the defaults parsed as the one-off parses them), the results' units from the table.
     ``None``: not a scene of the table (the block probes the one-off)."""
+    from .eom_pairs import pair_entry
+
     scene = spec.settings.get("scene")
     d = derivation(scene) if scene is not None else None
-    if d is None or d.dims is None or spec.settings.get("about") is not None:
+    dims = pair_entry(scene)["dims"] if d is None and pair_entry(scene) is not None else (
+        None if d is None else d.dims)
+    if dims is None or spec.settings.get("about") is not None:
         return None
     from ..result import entry_from_parsed
     from ..scenes.energies import energies
@@ -144,7 +148,7 @@ def light_probe(spec, given_names, out):
             inputs[p.name] = entry_from_parsed(p.name, parsed, p.dim)
         else:
             return None
-    results = {name: _Named(d.dims.get(name)) for name in out.values}
+    results = {name: _Named(dims.get(name)) for name in out.values}
     return _Probe(scene, inputs, results)
 
 
@@ -193,8 +197,10 @@ def scene_columns(arrays: dict, settings: dict):
     record = energies(scene)
     params = {p.name: p for p in record.params}
     given = frozenset(k for k in arrays if k in params)
-    d = derivation(scene)
-    if d is None:
+    from .eom_pairs import pair_columns, pair_entry
+
+    d, pair = derivation(scene), pair_entry(scene)
+    if d is None and pair is None:
         return None
     n = len(next(iter(arrays.values())))
     values = _defaults(record, given, n)
@@ -208,6 +214,8 @@ def scene_columns(arrays: dict, settings: dict):
             exact &= (column >= 0) if name in ("kappa", "b") else (column > 0)
         exact &= np.isfinite(column)
     state = [k for k in arrays if k not in params]
+    if pair is not None:
+        return pair_columns(arrays, settings, pair, values, exact, n)
     with np.errstate(all="ignore"):
         made = (_constant_equilibria if d.roots is not None else _value_equilibria)(
             d, values, n, exact)
