@@ -200,6 +200,9 @@ class _Writer:
             if dim is None:  # words (a regime): the same text as the one-off's
                 words = array.tolist()
                 unique = list(set(words))  # (one writer for all: a text a row is common)
+                if not self.as_json and all(unique) and not _QUOTED.search("\0".join(unique)):
+                    shown[name] = ([words], "")  # (no text to quote: one search, not one a word)
+                    continue
                 if self.as_json:
                     text = dict(zip(unique, map(json.dumps, unique)))
                 else:  # csv.writer leaves a text without , " or a line break as it is
