@@ -16,7 +16,7 @@ import math
 
 from ..lazy import numpy as np
 
-__all__ = ["pair_entry", "pair_plan", "derive_pair", "pair_roots", "pair_columns"]
+__all__ = ["pair_entry", "derive_pair", "pair_roots", "pair_columns"]
 
 
 def pair_entry(scene: str | None) -> dict | None:
@@ -27,17 +27,6 @@ def pair_entry(scene: str | None) -> dict | None:
     from ..scenes.eom_tables2 import TABLES2
 
     return TABLES2.get(scene)
-
-
-def pair_plan(scene: str | None, given) -> object | None:
-    """The :class:`~dyncalc.physics.eom_pairs.PairPlan` of ``scene`` when every parameter
-    of its table entry is in ``given`` (names), else ``None``."""
-    entry = pair_entry(scene)
-    if entry is None or not set(entry["names"]) <= set(given):
-        return None
-    from ..physics.eom_pairs import PairPlan
-
-    return PairPlan(entry)
 
 
 def pair_roots(system, angles) -> list[list] | None:

@@ -172,10 +172,7 @@ def _build(inputs, cdims, per_mass, state) -> Result:
                   for e in system.static) if system.static else True
     plan = _plan(system, inputs) if numeric else None
     if plan is None and numeric and len(inputs.coords) == 2:
-        # the generated functions of a two-coordinate scene, the batch's too (bit for bit)
-        from .eom_pairs import pair_plan
-
-        plan = pair_plan(inputs.scene, inputs.values)
+        plan = _pair_plan(inputs)
     equilibria, stabilities, numbers = _equilibria(system, values, angles, inputs, numeric,
                                                    plan)
     extra: dict = {}
@@ -289,6 +286,20 @@ def _plan(system, inputs):
     return plans[key]
 
 
+def _pair_plan(inputs):
+    """The generated functions of a two-coordinate scene (dyncalc.scenes.eom_tables2), the
+    batch's too, so both agree bit for bit; ``None``: not in the table or a parameter
+    without a value."""
+    from ..scenes.eom_tables2 import TABLES2
+
+    entry = TABLES2.get(inputs.scene) if inputs.scene is not None else None
+    if entry is None or not set(entry["names"]) <= set(inputs.values):
+        return None
+    from ..physics.eom_pairs import PairPlan
+
+    return PairPlan(entry)
+
+
 def constant_roots(system, angle: bool):
     """The equilibria of a one-coordinate derivation that do not depend on the values
     (:func:`dyncalc.physics.eom_columns.constant_equilibria`), once per derivation."""
@@ -327,8 +338,6 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
     """``(points, stabilities, numbers)``: each point a list (None for a free coordinate)."""
     import sympy
 
-    from .eom_pairs import pair_entry
-
     from ..physics import lagrange_equations as lagrange
 
     s = system.symbols
@@ -344,8 +353,7 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
         roots = constant_roots(system, angles[0]) if plan is not None else None
         closed = _table_roots(inputs) if plan is not None and roots is None else None
         if pair is not None:  # the generated table's roots, as batch takes them: no search
-            found = [[0.0 if v is None else v for v in r]
-                     for r in pair_entry(inputs.scene)["roots"]]
+            found = [[0.0 if v is None else v for v in r] for r in pair.roots]
         elif roots is not None:  # sympy's roots, as batch takes them: no search
             found = [[r] for r in roots]
         elif closed is not None:  # the table's closed forms, as batch takes them

@@ -35,13 +35,15 @@ class PairPlan:
     """The generated functions of one two-coordinate scene (an entry of
     :mod:`dyncalc.scenes.eom_tables2`): ``names`` (the parameters, in the order the functions
     take them after the coordinates), ``M(q1, q2, *p)`` and ``K(q1, q2, *p)`` (the four
-    entries, row by row), ``detM`` and ``detK`` (the same arguments) and ``a(q1, q2, q1',
-    q2', t, *p)`` (the two accelerations)."""
+    entries, row by row), ``detM`` and ``detK`` (the same arguments), ``a(q1, q2, q1',
+    q2', t, *p)`` (the two accelerations) and ``roots`` (the equilibria, ``None`` for a free
+    coordinate)."""
 
-    __slots__ = ("names", "mass", "stiffness", "det_mass", "det_stiffness", "acceleration")
+    __slots__ = ("names", "mass", "stiffness", "det_mass", "det_stiffness", "acceleration",
+                 "roots")
 
     def __init__(self, entry: dict):
-        self.names = list(entry["names"])
+        self.names, self.roots = list(entry["names"]), entry["roots"]
         self.mass, self.stiffness = entry["M"], entry["K"]
         self.det_mass, self.det_stiffness = entry["detM"], entry["detK"]
         self.acceleration = entry["a"]
