@@ -309,12 +309,29 @@ def _value_equilibria(d, values, n, exact):
         template = "; ".join(pieces)
         texts[at] = list(map(template.format, *varying)) if varying else [template] * len(at)
 
-    def extras(keep):  # (JSON only: made for the rows kept)
+    def extras(keep):  # (JSON only: made for the rows kept, one format call a row)
         keep = np.asarray(keep)
-        about = chosen[keep].tolist()
-        rows = [(row[:k], st[:k]) for row, k, st in zip(x[keep].tolist(), count[keep].tolist(),
-                                                        stable[keep].tolist())]
-        return [['{"equilibria": [' + ", ".join(
-            [f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}' for v, s in zip(*row)])
-            + f'], "about": {{"{c}": {a!r}}}}}' for row, a in zip(rows, about)]]
+        out = np.empty(len(keep), dtype=object)
+        for g in np.unique(which[keep]).tolist():
+            at = keep[which[keep] == g]
+            first, k = int(at[0]), int(count[at[0]])
+            pieces, varying = [], []
+            for j in range(k):
+                col = x[at, j]
+                if (col == col[0]).all():
+                    value = repr(float(col[0]))
+                else:
+                    value, _ = "{%d!r}" % len(varying), varying.append(col.tolist())
+                pieces.append(f'{{{{"{c}": {value}, "stable": '
+                              f'{"true" if stable[first, j] else "false"}}}}}')
+            col = chosen[at]
+            if (col == col[0]).all():
+                about = repr(float(col[0]))
+            else:
+                about, _ = "{%d!r}" % len(varying), varying.append(col.tolist())
+            template = ('{{"equilibria": [' + ", ".join(pieces) + f'], "about": {{{{"{c}": '
+                        + about + "}}}}")
+            out[np.searchsorted(keep, at)] = list(map(template.format, *varying)) \
+                if varying else [template.format()] * len(at)
+        return [out.tolist()]
     return chosen, texts, extras
