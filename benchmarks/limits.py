@@ -60,6 +60,8 @@ LIMITS = {
     "eom pendulum": [str(LIMIT / "eom.py")],
     # round 6: equilibria that depend on the values, closed forms on columns (eom2)
     "eom bead-on-rotating-ring": [str(LIMIT / "eom_bead.py")],
+    # round 7: two coordinates from a generated table (issue 17's brief, eom2c)
+    "eom coupled-blocks": [str(LIMIT / "eom_coupled.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

@@ -35,7 +35,8 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "modes two-mass chain",
                       "modes damped two-mass chain",
                       "forced-response total response", "forced-response undamped",
-                      "eom pendulum", "eom bead-on-rotating-ring", "rigid-body drum-two-blocks",
+                      "eom pendulum", "eom bead-on-rotating-ring", "eom coupled-blocks",
+                      "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft"}
 
 

@@ -16,6 +16,8 @@ from .header import _HEADER_RE
 
 #: What makes csv.writer quote a cell (its delimiter, quote character or a line break).
 _QUOTED = re.compile(r'[,"\r\n]')
+#: What ``json.dumps`` escapes in a text (quotes, backslashes, controls, beyond ASCII).
+_ESCAPED = re.compile(r'["\\\x00-\x1f\x7f-\U0010ffff]')
 
 #: The outcome of a row the vectorised path computed, and of a blank row.
 _FAST = ("fast", None)
@@ -200,6 +202,13 @@ class _Writer:
             if dim is None:  # words (a regime): the same text as the one-off's
                 words = array.tolist()
                 unique = list(set(words))  # (one writer for all: a text a row is common)
+                # no text to quote or escape: one search, not one a word
+                if self.as_json and not _ESCAPED.search("".join(unique)):
+                    shown[name] = (['"', words, '"'], "")
+                    continue
+                if not self.as_json and all(unique) and not _QUOTED.search("\0".join(unique)):
+                    shown[name] = ([words], "")
+                    continue
                 if self.as_json:
                     text = dict(zip(unique, map(json.dumps, unique)))
                 else:  # csv.writer leaves a text without , " or a line break as it is

@@ -124,9 +124,13 @@ def light_probe(spec, given_names, out):
     the table (no one-off, so no sympy): the inputs are the scene's parameters in its order
     (the defaults parsed as the one-off parses them), the results' units from the table.
     ``None``: not a scene of the table (the block probes the one-off)."""
+    from .eom_pairs import pair_entry
+
     scene = spec.settings.get("scene")
     d = derivation(scene) if scene is not None else None
-    if d is None or d.dims is None or spec.settings.get("about") is not None:
+    dims = pair_entry(scene)["dims"] if d is None and pair_entry(scene) is not None else (
+        None if d is None else d.dims)
+    if dims is None or spec.settings.get("about") is not None:
         return None
     from ..result import entry_from_parsed
     from ..scenes.energies import energies
@@ -144,7 +148,7 @@ def light_probe(spec, given_names, out):
             inputs[p.name] = entry_from_parsed(p.name, parsed, p.dim)
         else:
             return None
-    results = {name: _Named(d.dims.get(name)) for name in out.values}
+    results = {name: _Named(dims.get(name)) for name in out.values}
     return _Probe(scene, inputs, results)
 
 
@@ -193,8 +197,10 @@ def scene_columns(arrays: dict, settings: dict):
     record = energies(scene)
     params = {p.name: p for p in record.params}
     given = frozenset(k for k in arrays if k in params)
-    d = derivation(scene)
-    if d is None:
+    from .eom_pairs import pair_columns, pair_entry
+
+    d, pair = derivation(scene), pair_entry(scene)
+    if d is None and pair is None:
         return None
     n = len(next(iter(arrays.values())))
     values = _defaults(record, given, n)
@@ -208,6 +214,8 @@ def scene_columns(arrays: dict, settings: dict):
             exact &= (column >= 0) if name in ("kappa", "b") else (column > 0)
         exact &= np.isfinite(column)
     state = [k for k in arrays if k not in params]
+    if pair is not None:
+        return pair_columns(arrays, settings, pair, values, exact, n)
     with np.errstate(all="ignore"):
         made = (_constant_equilibria if d.roots is not None else _value_equilibria)(
             d, values, n, exact)
@@ -282,27 +290,48 @@ def _value_equilibria(d, values, n, exact):
     chosen = x[np.arange(n), np.argmax(stable, axis=1)]
     word = {True: " (stable)", False: " (unstable)"}
     c = d.coord
-    rows = [(row[:k], st[:k]) for row, k, st in zip(x.tolist(), count.tolist(),
-                                                    stable.tolist())]
     texts = np.empty(n, dtype=object)
-    # rows with the same roots count and stabilities share the text of a root the same on
-    # all of them (0, pi): formatted once
+    # rows with the same roots count and stabilities share one format: the roots the same
+    # on all of them (0, pi) written into it once, the others one format call a row
     kinds, which = np.unique(count * 2 ** x.shape[1] + stable @ (2 ** np.arange(x.shape[1])),
                              return_inverse=True)
     for g in range(len(kinds)):
         at = np.flatnonzero(which == g)
         k = int(count[at[0]])
-        pieces = []
+        pieces, varying = [], []
         for j in range(k):
             col, w = x[at, j], word[bool(stable[at[0], j])]
-            pieces.append([f"{c}={col[0]:.6g}{w}"] * len(at) if (col == col[0]).all()
-                          else [f"{c}={v:.6g}{w}" for v in col.tolist()])
-        texts[at] = list(map("; ".join, zip(*pieces))) if pieces else [""] * len(at)
+            if (col == col[0]).all():
+                pieces.append(f"{c}={col[0]:.6g}{w}".replace("{", "{{").replace("}", "}}"))
+            else:
+                pieces.append(f"{c}={{:.6g}}{w}")
+                varying.append(col.tolist())
+        template = "; ".join(pieces)
+        texts[at] = list(map(template.format, *varying)) if varying else [template] * len(at)
 
-    about = chosen.tolist()
-
-    def extras(keep):  # (JSON only: made for the rows kept)
-        return [['{"equilibria": [' + ", ".join(
-            [f'{{"{c}": {v!r}, "stable": {"true" if s else "false"}}}' for v, s in zip(*rows[i])])
-            + f'], "about": {{"{c}": {about[i]!r}}}}}' for i in np.asarray(keep).tolist()]]
+    def extras(keep):  # (JSON only: made for the rows kept, one format call a row)
+        keep = np.asarray(keep)
+        out = np.empty(len(keep), dtype=object)
+        for g in np.unique(which[keep]).tolist():
+            at = keep[which[keep] == g]
+            first, k = int(at[0]), int(count[at[0]])
+            pieces, varying = [], []
+            for j in range(k):
+                col = x[at, j]
+                if (col == col[0]).all():
+                    value = repr(float(col[0]))
+                else:
+                    value, _ = "{%d!r}" % len(varying), varying.append(col.tolist())
+                pieces.append(f'{{{{"{c}": {value}, "stable": '
+                              f'{"true" if stable[first, j] else "false"}}}}}')
+            col = chosen[at]
+            if (col == col[0]).all():
+                about = repr(float(col[0]))
+            else:
+                about, _ = "{%d!r}" % len(varying), varying.append(col.tolist())
+            template = ('{{"equilibria": [' + ", ".join(pieces) + f'], "about": {{{{"{c}": '
+                        + about + "}}}}")
+            out[np.searchsorted(keep, at)] = list(map(template.format, *varying)) \
+                if varying else [template.format()] * len(at)
+        return [out.tolist()]
     return chosen, texts, extras

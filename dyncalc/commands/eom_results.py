@@ -171,6 +171,8 @@ def _build(inputs, cdims, per_mass, state) -> Result:
     numeric = all(not (e.free_symbols - set(s.q)) - set(values)
                   for e in system.static) if system.static else True
     plan = _plan(system, inputs) if numeric else None
+    if plan is None and numeric and len(inputs.coords) == 2:
+        plan = _pair_plan(inputs)
     equilibria, stabilities, numbers = _equilibria(system, values, angles, inputs, numeric,
                                                    plan)
     extra: dict = {}
@@ -201,7 +203,15 @@ def _build(inputs, cdims, per_mass, state) -> Result:
         if not M.free_symbols and not K.free_symbols:
             import numpy as np
 
-            if plan is not None:  # the numbers batch gives too (dyncalc.physics.eom_columns)
+            if len(inputs.coords) == 2 and plan is not None:  # (dyncalc.physics.eom_pairs)
+                from ..physics.eom_pairs import two_frequencies
+
+                with np.errstate(all="ignore"):
+                    at = [np.array([float(point[q])]) for q in s.q]
+                    Mn, Kn, dm, dk = plan.matrices(*at, _one_row(inputs.values))
+                    omega, stable_rows = two_frequencies(Mn, Kn, dm, dk)
+                Mn, Kn = Mn[0], Kn[0]
+            elif plan is not None:  # the numbers batch gives too (dyncalc.physics.eom_columns)
                 with np.errstate(all="ignore"):
                     Mn, Kn = (x.reshape(1, 1) for x in plan.matrices(
                         np.array([float(point[s.q[0]])]), _one_row(inputs.values)))
@@ -212,7 +222,9 @@ def _build(inputs, cdims, per_mass, state) -> Result:
                     False)
             _matrix(results, extra, "stiffness_matrix", Kn, inputs.coords, cdims, per_mass,
                     known, True)
-            if plan is not None:
+            if len(inputs.coords) == 2 and plan is not None:
+                omegas, stable = omega[0].tolist(), bool(stable_rows[0])
+            elif plan is not None:
                 from ..physics.eom_columns import one_frequency
 
                 omega, stable_rows = one_frequency(Mn[:, 0], Kn[:, 0])
@@ -274,6 +286,20 @@ def _plan(system, inputs):
     return plans[key]
 
 
+def _pair_plan(inputs):
+    """The generated functions of a two-coordinate scene (dyncalc.scenes.eom_tables2), the
+    batch's too, so both agree bit for bit; ``None``: not in the table or a parameter
+    without a value."""
+    from ..scenes.eom_tables2 import TABLES2
+
+    entry = TABLES2.get(inputs.scene) if inputs.scene is not None else None
+    if entry is None or not set(entry["names"]) <= set(inputs.values):
+        return None
+    from ..physics.eom_pairs import PairPlan
+
+    return PairPlan(entry)
+
+
 def constant_roots(system, angle: bool):
     """The equilibria of a one-coordinate derivation that do not depend on the values
     (:func:`dyncalc.physics.eom_columns.constant_equilibria`), once per derivation."""
@@ -321,9 +347,14 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
         lengths = [abs(v) for name, v in inputs.values.items()
                    if inputs.dims.get(name) == LENGTH_DIM and v != 0]
         scale = max(lengths) if lengths else 1.0
+        pair = plan if len(s.q) == 2 else None
+        if pair is not None:
+            plan = None
         roots = constant_roots(system, angles[0]) if plan is not None else None
         closed = _table_roots(inputs) if plan is not None and roots is None else None
-        if roots is not None:  # sympy's roots, as batch takes them: no search
+        if pair is not None:  # the generated table's roots, as batch takes them: no search
+            found = [[0.0 if v is None else v for v in r] for r in pair.roots]
+        elif roots is not None:  # sympy's roots, as batch takes them: no search
             found = [[r] for r in roots]
         elif closed is not None:  # the table's closed forms, as batch takes them
             found = closed
@@ -335,6 +366,18 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
             if any(not lo - 1e-9 <= p[i] <= hi + 1e-9 for i, (lo, hi) in bounds.items()):
                 continue
             point = [None if i in free else v for i, v in enumerate(p)]
+            if pair is not None:
+                import numpy as np
+
+                from ..physics.eom_pairs import two_frequencies
+
+                with np.errstate(all="ignore"):
+                    Mp, Kp, dm, dk = pair.matrices(np.array([float(p[0])]),
+                                                   np.array([float(p[1])]),
+                                                   _one_row(inputs.values))
+                points.append(point)
+                stabilities.append(bool(two_frequencies(Mp, Kp, dm, dk)[1][0]))
+                continue
             if plan is not None:
                 import numpy as np
 
@@ -511,7 +554,16 @@ def _accelerations(results, inputs, system, s, values, cdims, state, plan=None):
             shown = ", ".join(m.replace("''", "_ddot").replace("'", "_dot") + "="
                               for m in missing)
             raise InputError(f"{c}_ddot at the state needs {shown} too")
-        if plan is not None:  # the batch's numbers (dyncalc.physics.eom_columns)
+        if plan is not None and len(inputs.coords) == 2:  # (dyncalc.physics.eom_pairs)
+            import numpy as np
+
+            with np.errstate(all="ignore"):
+                rows = [np.array([float(state.get(k, 0.0))]) for k in
+                        (*inputs.coords, *(c + "_dot" for c in inputs.coords))]
+                number = complex(float(plan.accelerations(
+                    *rows, np.array([float(state.get("t", 0.0))]),
+                    _one_row(inputs.values))[i][0]))
+        elif plan is not None:  # the batch's numbers (dyncalc.physics.eom_columns)
             import numpy as np
 
             with np.errstate(all="ignore"):
