@@ -345,13 +345,14 @@ def RigidRows(*, scene: str | None = None, rtol: float | None = None,
     # the vectorised path: the scene's physics on each row's SI floats (commands/rigid_columns)
     from ..commands.record import Parameter
     from ..commands.rigid_columns import scene_columns
-    from .fast_commands import _command_fast
+    from .fast_rigid import rigid_fast
 
     params = {p.name: Parameter(p.name, p.dim, p.description, kind="choice",
                                 choices=tuple(p.choices)) if p.choices is not None
               else Parameter(p.name, p.dim, p.description) for p in chosen.params}
     spec.parameter = params.get
-    spec.adapter, spec.fast = scene_columns, _command_fast
+    # forward rows through the scene's adapter; inverse rows in closed form (fast_rigid)
+    spec.adapter, spec.fast = scene_columns, rigid_fast
     return spec
 
 
