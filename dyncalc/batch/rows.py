@@ -242,13 +242,13 @@ class _CoriolisRows(RecordRows):
     """:class:`RecordRows` of ``coriolis`` that also read its inverse problems: a result column
     (:data:`dyncalc.scenes.coriolis_scalar.TARGETS`) and a ``?`` cell go to the one-off as
     ``NAME=QUANTITY`` and ``NAME=?`` words (the perpendicular ones solved on columns:
-    :mod:`dyncalc.batch.fast_coriolis`)."""
+    :mod:`dyncalc.batch.fast_coriolis`; the Earth's: :mod:`dyncalc.batch.fast_coriolis_earth`)."""
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        from .fast_coriolis import coriolis_fast
+        from .fast_coriolis_earth import coriolis_rows_fast
 
-        self.fast = coriolis_fast
+        self.fast = coriolis_rows_fast
 
     def key(self, name):
         from ..scenes.coriolis_scalar import TARGETS
