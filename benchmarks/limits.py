@@ -58,6 +58,8 @@ LIMITS = {
     "eom pendulum": [str(LIMIT / "eom.py")],
     # round 6: equilibria that depend on the values, closed forms on columns (eom2)
     "eom bead-on-rotating-ring": [str(LIMIT / "eom_bead.py")],
+    # round 7: inverse rows on columns (issue 17's brief, rigidinv)
+    "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 
