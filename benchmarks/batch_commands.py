@@ -149,6 +149,10 @@ CASES = [
     ("coriolis Earth", ["coriolis"], "latitude [deg],speed [m/s],heading [deg],mass [kg]",
      lambda r: [f"{r.uniform(-90, 90):.6g}", f"{r.uniform(0, 300):.6g}",
                 f"{r.uniform(0, 360):.6g}", f"{r.uniform(0.1, 1e3):.6g}"]),
+    # round 7: an inverse row on columns (the Earth's speed from |a_c|, closed form)
+    ("coriolis Earth inverse vr", ["coriolis"], "a_c_mag [m/s^2],latitude [deg],vr",
+     lambda r: [f"{10 ** r.uniform(-6, -2):.6g}",
+                f"{r.choice((-1, 1)) * r.uniform(1, 89):.6g}", "?"]),
 ]
 
 

@@ -62,6 +62,8 @@ LIMITS = {
     "eom bead-on-rotating-ring": [str(LIMIT / "eom_bead.py")],
     # round 7: two coordinates from a generated table (issue 17's brief, eom2c)
     "eom coupled-blocks": [str(LIMIT / "eom_coupled.py")],
+    # round 7: inverse rows on columns (issue 17's brief, rigidinv)
+    "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

@@ -281,3 +281,22 @@ def test_table_numbers_are_the_plain_floats_of_each_column(text, plain):
             assert values[:, j].view(np.int64).tolist() == \
                 _plain_floats(list(table[j])).view(np.int64).tolist()
         assert np.signbit(values[1, 0]) and values[2].tolist() == [4.0, 5.0]  # -0 as float
+
+
+@pytest.mark.parametrize("columns, n", [(1, 5000), (100, 1000), (300, 700)])
+def test_write_lines_in_steps_of_cells_writes_every_line_once(columns, n):
+    """A wide result is assembled STEP_CELLS cells at a time (coriolis over times: 60-odd
+    columns, memory flat): the lines are each row's ``repr``s joined, in order, whatever the
+    step (1 column: 4096 lines a step; 100: 327; 300: the floor of 256)."""
+    rng = np.random.default_rng(7)
+    arrays = [rng.normal(size=n) * 10.0 ** rng.integers(-300, 300, size=n)
+              for _ in range(columns)]
+    words = [f"w{i}" for i in range(n)]
+    parts = ["<"]
+    for array in arrays:
+        parts += [array, ","]
+    parts += [words, ">"]
+    out = io.StringIO()
+    assemble.write_lines(out, parts, n)
+    expected = ["<" + "".join(f"{float(a[i])!r}," for a in arrays) + f"w{i}>" for i in range(n)]
+    assert out.getvalue() == "\n".join(expected) + "\n"

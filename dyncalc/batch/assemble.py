@@ -45,15 +45,21 @@ def lines(parts: list, n: int, joined: bool = False):
     return list(map("".join, zip(*columns)))
 
 
-#: Lines assembled at a time by :func:`write_lines` (flat memory).
+#: Lines assembled at a time by :func:`write_lines` (flat memory) ...
 STEP = 4096
+#: ... and at most this many column cells (a wide result, ``coriolis`` over times' 60-odd
+#: columns, would hold 4096 rows' texts at once: 19 MB of a 100 MB budget), at least
+#: :data:`MIN_STEP` lines.
+STEP_CELLS, MIN_STEP = 32768, 256
 
 
 def write_lines(out, parts: list, n: int) -> None:
-    """Write the ``n`` lines of ``parts`` to the text stream ``out``, :data:`STEP` at a time,
-    each ending in a line break."""
-    for start in range(0, n, STEP):
-        stop = min(n, start + STEP)
+    """Write the ``n`` lines of ``parts`` to the text stream ``out``, :data:`STEP` lines (or
+    :data:`STEP_CELLS` cells) at a time, each ending in a line break."""
+    columns = sum(1 for p in parts if not isinstance(p, str))
+    step = max(MIN_STEP, min(STEP, STEP_CELLS // max(1, columns)))
+    for start in range(0, n, step):
+        stop = min(n, start + step)
         piece = parts if (start, stop) == (0, n) else [
             p if isinstance(p, str) else p[start:stop] for p in parts]
         out.write(lines(piece, stop - start, joined=True))

@@ -4,8 +4,9 @@
 ``a_c=12m/s^2 --omega 2rad/s vr=?``), solved in closed form on columns
 (:func:`~dyncalc.scenes.inverse_columns.closed_form_columns`) through the column kernel of
 :func:`~dyncalc.physics.relative_motion.coriolis_perpendicular`. A probe row run by the
-one-off must agree to the bit (values, order, model, method, ``extra``); every other row (the
-Earth's inverse problems, a refusal, a value the kernel does not take) runs the one-off."""
+one-off must agree to the bit (values, order, model, method, ``extra``); the Earth's inverse
+rows are :mod:`dyncalc.batch.fast_coriolis_earth`'s; every other row (a refusal, a value the
+kernel does not take) runs the one-off."""
 from __future__ import annotations
 
 import json

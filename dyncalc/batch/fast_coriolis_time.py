@@ -60,20 +60,24 @@ def coriolis_time_fast(spec, columns, table, want_json: bool, cache: dict) -> li
     if setup is None:
         return []
     motion, mass, probe = setup
-    values, exact, Q = _values(motion, times, mass)
+    values, exact, Q = _sliced_values(motion, times, mass)
     if not exact.any():
         return []
     keep = np.flatnonzero(exact)
-    values = {name: array[keep] for name, array in values.items()}
+    if len(keep) < len(exact):  # (all exact, the usual case: no copy of every result)
+        values = {name: array[keep] for name, array in values.items()}
     first = {name: array[0] for name, array in values.items()}
     if int(rows[keep[0]]) != int(rows[0]) or list(probe.results) != list(values) \
             or not all(_same(probe.results[n].si, first[n]) for n in values):
         return []
-    extra = _extra(probe.extra, Q[keep], motion.rotation != "none")
     from .assemble import lines
 
-    if lines(extra if isinstance(extra, list) else [extra], 1)[0] != json.dumps(probe.extra):
+    turned = motion.rotation != "none"
+    first_extra = _extra(probe.extra, Q[keep[:1]], turned)  # (the probe's row alone: the
+    if lines(first_extra if isinstance(first_extra, list) else [first_extra], 1)[0] \
+            != json.dumps(probe.extra):                      # parts of every row are big)
         return []
+    extra = _extra(probe.extra, Q[keep], turned) if want_json else "{}"
     head = inputs = None
     if want_json:
         from ..result.encode import _json_inputs
@@ -84,7 +88,7 @@ def coriolis_time_fast(spec, columns, table, want_json: bool, cache: dict) -> li
             return []
         head = json_head("coriolis", probe.scene, probe.model, probe.method)
     dims = {name: entry.dim for name, entry in probe.results.items()}
-    return [FastBlock(rows[keep], values, dims, head, inputs, extra if want_json else "{}")]
+    return [FastBlock(rows[keep], values, dims, head, inputs, extra)]
 
 
 def _setup(spec, col, cell: str, cache: dict):
@@ -121,6 +125,29 @@ def _setup(spec, col, cell: str, cache: dict):
     if cache[key] is None:
         return None
     return (*cache[key], probe)
+
+
+#: Times evaluated at a time: the kernels' temporaries (a few dozen arrays of this many rows)
+#: stay small whatever the chunk (issue 17: memory flat, <= 100 MB).
+SLICE = 2048
+
+
+def _sliced_values(motion, times, mass):
+    """:func:`_values` of ``times`` a :data:`SLICE` of rows at a time, into whole arrays."""
+    if len(times) <= SLICE:
+        return _values(motion, times, mass)
+    values = exact = Q = None
+    for start in range(0, len(times), SLICE):
+        part = slice(start, start + SLICE)
+        v, e, q = _values(motion, times[part], mass)
+        if values is None:
+            n = len(times)
+            values = {name: np.empty((n, *a.shape[1:]), dtype=a.dtype) for name, a in v.items()}
+            exact, Q = np.empty(n, dtype=bool), np.empty((n, *q.shape[1:]), dtype=q.dtype)
+        for name, array in v.items():
+            values[name][part] = array
+        exact[part], Q[part] = e, q
+    return values, exact, Q
 
 
 def _values(motion, times, mass):

@@ -242,13 +242,13 @@ class _CoriolisRows(RecordRows):
     """:class:`RecordRows` of ``coriolis`` that also read its inverse problems: a result column
     (:data:`dyncalc.scenes.coriolis_scalar.TARGETS`) and a ``?`` cell go to the one-off as
     ``NAME=QUANTITY`` and ``NAME=?`` words (the perpendicular ones solved on columns:
-    :mod:`dyncalc.batch.fast_coriolis`)."""
+    :mod:`dyncalc.batch.fast_coriolis`; the Earth's: :mod:`dyncalc.batch.fast_coriolis_earth`)."""
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        from .fast_coriolis import coriolis_fast
+        from .fast_coriolis_earth import coriolis_rows_fast
 
-        self.fast = coriolis_fast
+        self.fast = coriolis_rows_fast
 
     def key(self, name):
         from ..scenes.coriolis_scalar import TARGETS
@@ -275,6 +275,9 @@ class CoriolisTimeRows(RowSpec):
 
     command = "coriolis"
     example_header = "t [s]"
+    #: 60-odd result columns a row on top of sympy's 78 MB: 16384 rows a chunk peaked at
+    #: 117 MB (CSV), 8192 at 94 MB, as fast (issue 17: <= 100 MB)
+    csv_rows = 8192
 
     def __init__(self, values: dict, words=(), *, strict: bool = False):
         self.values, self.strict = dict(values), strict
@@ -345,13 +348,14 @@ def RigidRows(*, scene: str | None = None, rtol: float | None = None,
     # the vectorised path: the scene's physics on each row's SI floats (commands/rigid_columns)
     from ..commands.record import Parameter
     from ..commands.rigid_columns import scene_columns
-    from .fast_commands import _command_fast
+    from .fast_rigid import rigid_fast
 
     params = {p.name: Parameter(p.name, p.dim, p.description, kind="choice",
                                 choices=tuple(p.choices)) if p.choices is not None
               else Parameter(p.name, p.dim, p.description) for p in chosen.params}
     spec.parameter = params.get
-    spec.adapter, spec.fast = scene_columns, _command_fast
+    # forward rows through the scene's adapter; inverse rows in closed form (fast_rigid)
+    spec.adapter, spec.fast = scene_columns, rigid_fast
     return spec
 
 
