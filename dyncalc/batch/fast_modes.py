@@ -10,13 +10,17 @@ numbers read in one pass a column, solved on a stack
 
 Unlike the other vectorised paths these rows are not the one-off's to the bit: the stacked
 Cholesky reduction rounds otherwise than LAPACK's ``sygvd`` (a few units in the last place;
-tests/test_batch_modes.py holds them to 1e-12 relative). Each group's first row is computed
-by the one-off too (a *probe*): the group takes the generic path unless the probe's results,
-model and method are the kernel's (to 1e-9) and its input entries the ones assembled here.
+tests/test_batch_modes.py holds them to 1e-12 relative). The first row of each kind of rows
+(templates and units) is computed by the one-off too, once a run (a *probe*): the rows take
+the generic path unless the probe's results, model and method are the kernel's (to 1e-9)
+and its input entries the ones assembled here. A chunk whose cells all share a template is
+read in one pass of the number pattern a column (:func:`_uniform`).
 Set ``DYNCALC_BATCH_GENERIC=1`` for the one-off's own digits.
 """
 from __future__ import annotations
 
+import functools
+import itertools
 import json
 import re
 
@@ -30,6 +34,7 @@ from .floats import parse_floats
 __all__ = ["modes_fast"]
 
 _NUMBER_RE = re.compile(_LITERAL_CELL)
+_SPLIT_RE = re.compile(f"({_LITERAL_CELL})")
 #: The relative agreement a probe must show.
 PROBE_RTOL = 1e-9
 
@@ -62,11 +67,13 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         return []
     if len(keys) == 3 and not "".join(cells[2]).strip():
         keys, cells = keys[:2], cells[:2]  # an empty C column: undamped rows
-    templates = [_NUMBER_RE.sub("#", "\n".join(c)).split("\n") for c in cells]
+    uniform = [_uniform(c) for c in cells]  # one pass a column: its template and numbers
     groups: dict[tuple, list[int]] = {}
-    if all(t.count(t[0]) == len(t) for t in templates):
-        groups[tuple(t[0] for t in templates)] = list(range(len(cells[0])))
+    if all(u is not None for u in uniform):
+        groups[tuple(t for t, _numbers in uniform)] = list(range(len(cells[0])))
     else:
+        uniform = None
+        templates = [_NUMBER_RE.sub("#", "\n".join(c)).split("\n") for c in cells]
         for i, key in enumerate(zip(*templates)):
             groups.setdefault(key, []).append(i)
     blocks = []
@@ -81,11 +88,13 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         rows = np.asarray(members, dtype=np.intp)
         every = len(members) == len(cells[0])
         group = [c if every else [c[i] for i in members] for c in cells[:len(split)]]
-        matrices = [_numbers(g, n) for g in group]
+        matrices = [_numbers(g, n) for g in group] if uniform is None else \
+            [None if values is None or len(values) != len(members) * n * n else
+             values.reshape(len(members), n, n) for _t, values in uniform[:len(split)]]
         if any(m is None for m in matrices):
             continue
         matrices = [matrix * factor for matrix, (factor, _suffix) in zip(matrices, units)]
-        block = _block(spec, by_key, rows, group, matrices, want_json, units)
+        block = _block(spec, by_key, rows, group, matrices, want_json, units, group_key)
         if block is not None:
             blocks.append(block)
     return blocks
@@ -131,19 +140,83 @@ def _units(by_key, cell_units: list[str], cache: dict):
     return out
 
 
-def _numbers(cells: list[str], n: int):
-    """The (rows, n, n) numbers of cells of one template, read in one pass; ``None`` where
-    the count is off."""
-    found = _NUMBER_RE.findall("\n".join(cells))
-    if len(found) != len(cells) * n * n:
+def _uniform(cells: list[str]):
+    """``(the template, its numbers, a flat float array or None where ``float`` refuses
+    one)`` of a column whose cells all have the first one's template, read in one pass;
+    ``None`` where a cell's template differs.
+
+    Where the text around the first cell's numbers holds no character a number may hold
+    (``0-9 . e E + -``) and two numbers are never adjacent, a cell has that template exactly
+    when it matches the template with each ``#`` a number (:func:`_template_re`): every
+    number is then a whole run of number characters, as ``sub`` finds it. Otherwise ``split``
+    finds the numbers ``sub`` replaces by ``#`` and the text between them, which must repeat
+    the first cell's."""
+    first = _SPLIT_RE.split(cells[0])
+    between = first[0::2]  # the text around the first cell's numbers
+    count = len(between) - 1
+    if not count:
         return None
+    joined = "\n".join(cells)
+    if not any(map(_NUMBER_CHARS.intersection, between)) and all(between[1:-1]):
+        found = _template_re(tuple(between)).findall(joined)
+        if len(found) != len(cells):
+            return None
+        if count > 1:
+            found = list(itertools.chain.from_iterable(found))
+    else:
+        parts = _SPLIT_RE.split(joined)
+        del joined
+        inner = between[1:-1] + [between[-1] + "\n" + between[0]]
+        expected = [between[0], *inner * (len(cells) - 1), *between[1:]]
+        if parts[0::2] != expected:
+            return None
+        found = parts[1::2]
+        del parts
+    return "#".join(between), _parsed(found)
+
+
+#: The characters a number of a cell may hold (:data:`_NUMBER_RE`).
+_NUMBER_CHARS = frozenset("0123456789.eE+-")
+#: Numbers parsed at a time (orjson's document for a list of numbers takes some 13 bytes a
+#: character of its text at once: smaller slices keep the peak low).
+PARSE_SLICE = 8192
+
+
+@functools.lru_cache(maxsize=64)
+def _template_re(between: tuple[str, ...]):
+    """A line (of cells joined by line breaks) that is the text ``between`` with a number
+    (a group) between each two pieces."""
+    number = f"({_LITERAL_CELL})"
+    return re.compile("^" + number.join(map(re.escape, between)) + "$", re.M)
+
+
+def _parsed(found: list[str]):
+    """``float`` of each number's text, a flat array; ``None`` where ``float`` refuses one."""
     try:
-        return np.asarray(parse_floats(found), dtype=float).reshape(len(cells), n, n)
+        return np.concatenate([parse_floats(found[i:i + PARSE_SLICE])
+                               for i in range(0, len(found), PARSE_SLICE)])
     except ValueError:
         return None
 
 
-def _block(spec, by_key, rows, cells, matrices, want_json, units):
+def _floats(found: list[str], rows: int, n: int):
+    """The (rows, n, n) floats of a column's numbers' texts; ``None`` where the count is off
+    or ``float`` refuses one."""
+    if len(found) != rows * n * n:
+        return None
+    values = _parsed(found)
+    return None if values is None else values.reshape(rows, n, n)
+
+
+def _numbers(cells: list[str], n: int):
+    """The (rows, n, n) numbers of cells of one template, read in one pass; ``None`` where
+    the count is off."""
+    return _floats(_NUMBER_RE.findall("\n".join(cells)), len(cells), n)
+
+
+def _block(spec, by_key, rows, cells, matrices, want_json, units, kind):
+    """The block of the rows the kernel takes, where the probe of this ``kind`` of rows
+    (their templates and units; probed once a run, in ``spec.probed``) agrees."""
     from ..physics.modes_columns import stacked_modes
 
     normalize = spec.settings.get("normalize") or "max"
@@ -153,27 +226,39 @@ def _block(spec, by_key, rows, cells, matrices, want_json, units):
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
-    probe = _probe(spec, by_key, [c[first] + suffix for c, (_f, suffix) in zip(cells, units)],
-                   out, first)
-    if probe is None:
-        return None
-    values = {name: array[keep] for name, array in out.values.items()}
-    dims = {name: entry.dim for name, entry in probe.results.items()}
-    head = inputs = None
-    extra = json.dumps(probe.extra, allow_nan=False)
-    if want_json:
-        from ..result.encode import _json_inputs
-
-        from .assemble import lines
-
-        if lines(_inputs([[c[first]] for c in cells], [X[[first]] for X in matrices], units),
-                 1)[0] != json.dumps(_json_inputs(probe.inputs))[1:-1]:
+    probed = getattr(spec, "probed", None)
+    kind = (kind, tuple(units), normalize, want_json, out.model, out.method, tuple(out.values))
+    known = probed.get(kind) if probed is not None else None
+    if known is None:
+        known = _probe(spec, by_key,
+                       [c[first] + suffix for c, (_f, suffix) in zip(cells, units)], out,
+                       first)
+        if known is None or want_json and not _same_inputs(cells, matrices, units, first,
+                                                           known):
             return None
+        known = ({name: entry.dim for name, entry in known.results.items()},
+                 json.dumps(known.extra, allow_nan=False))
+        if probed is not None:
+            probed[kind] = known
+    values = {name: array[keep] for name, array in out.values.items()}
+    dims, extra = known
+    head = inputs = None
+    if want_json:
         head = json_head("modes", None, out.model, out.method)
         picked = keep.tolist()
         inputs = _inputs([[c[i] for i in picked] for c in cells], [X[keep] for X in matrices],
                          units)
     return FastBlock(rows[keep], values, dims, head, inputs, extra)
+
+
+def _same_inputs(cells, matrices, units, first: int, probe) -> bool:
+    """Whether the JSON input entries assembled here for row ``first`` are the probe's."""
+    from ..result.encode import _json_inputs
+
+    from .assemble import lines
+
+    return lines(_inputs([[c[first]] for c in cells], [X[[first]] for X in matrices], units),
+                 1)[0] == json.dumps(_json_inputs(probe.inputs))[1:-1]
 
 
 def _probe(spec, by_key, texts: list[str], out, i: int):

@@ -1,0 +1,109 @@
+"""How ``modes --batch`` reads a chunk's matrix cells (dyncalc/batch/fast_modes.py): a column
+whose cells share one template is read in one pass, and that pass must give exactly what the
+reference reading gives (each cell's template by ``sub``, its numbers by ``findall``, each
+read by ``float``); the one-off is probed once a run per kind of rows, not once a chunk."""
+from __future__ import annotations
+
+import io
+import random
+
+import numpy as np
+import pytest
+
+from dyncalc.batch import run_batch
+from dyncalc.batch import fast_modes
+from dyncalc.batch.fast_modes import _NUMBER_RE, _uniform
+from dyncalc.batch.rows import ModesRows
+
+
+def _reference(cells: list[str]):
+    """(template, floats) by the per-cell reading, or ``None`` where templates differ or
+    ``float`` refuses a number (then the floats are ``None``)."""
+    templates = {_NUMBER_RE.sub("#", c) for c in cells}
+    if len(templates) != 1 or "#" not in next(iter(templates)):
+        return None
+    found = [x for c in cells for x in _NUMBER_RE.findall(c)]
+    try:
+        values = [float(x) for x in found]
+    except ValueError:
+        values = None
+    return templates.pop(), values
+
+
+_PIECES = ["[", "]", ",", ";", " ", "[[", "]]", "],[", ", ", " kg", "kN/m", ".", "e", "E",
+           "+", "-", "..", "x", "\t", "meter"]
+_NUMBERS = ["0", "1", "-0", "+5", ".5", "5.", "1e5", "1E-3", "007", "1.5e+300", "1e400",
+            "-2.25", "12", "3", "0.1", "1-2", "1e", "2.5.5", "9007199254740993"]
+
+
+def _cell(rng, template: list[str]) -> str:
+    return "".join(rng.choice(_NUMBERS) if part == "#" else part for part in template)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_one_pass_reading_is_the_per_cell_reading(seed):
+    rng = random.Random(seed)
+    for _ in range(400):
+        template = []
+        for _ in range(rng.randint(1, 7)):
+            template += [rng.choice(_PIECES)] if rng.random() < 0.6 else ["#"]
+        template.append(rng.choice(["#", *_PIECES]))
+        cells = [_cell(rng, template) for _ in range(rng.randint(1, 6))]
+        if rng.random() < 0.3:  # a cell of another template, sometimes one of few numbers
+            cells[rng.randrange(len(cells))] = _cell(rng, template[:-1] or ["#"])
+        mine, theirs = _uniform(cells), _reference(cells)
+        if theirs is None:
+            assert mine is None, cells
+            continue
+        assert mine is not None and mine[0] == theirs[0], cells
+        if theirs[1] is None:
+            assert mine[1] is None, cells
+        else:
+            assert mine[1] is not None and mine[1].tolist() == theirs[1], cells
+            assert np.signbit(mine[1]).tolist() == np.signbit(theirs[1]).tolist(), cells
+
+
+def test_a_number_run_that_is_two_numbers_is_not_the_template():
+    # "[.5]" reads as one number ".5"; "[..5]" as "[." and ".5": other templates
+    assert _uniform(["[..5]", "[.5]"]) is None
+    assert _uniform(["[[1,2],[3,4]]", "[[1,2],[3,4]5]"]) is None
+    assert _uniform(["[[1,2],[3,4]]", "[[1,],[23,4]]"]) is None
+    template, values = _uniform(["[[1,-0],[2e3,4]] kg", "[[5,6],[7,.5]] kg"])
+    assert template == "[[#,#],[#,#]] kg"
+    assert values.tolist() == [1.0, -0.0, 2000.0, 4.0, 5.0, 6.0, 7.0, 0.5]
+    assert np.signbit(values[1])
+
+
+def test_numbers_are_parsed_in_slices(monkeypatch):
+    monkeypatch.setattr(fast_modes, "PARSE_SLICE", 3)
+    cells = [f"[[{i}.25,-{i}],[{i}e-3,{i}]]" for i in range(1, 6)]
+    _template, values = _uniform(cells)
+    assert values.tolist() == [float(x) for c in cells for x in _NUMBER_RE.findall(c)]
+
+
+def _chain_rows(rng, count: int) -> list[str]:
+    rows = []
+    for _ in range(count):
+        m1, m2, k1, k2 = (round(rng.uniform(lo, hi), 4) for lo, hi in
+                          ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4)))
+        rows.append(f'"[[{m1},0],[0,{m2}]]","[[{k1 + k2},{-k2}],[{-k2},{k2}]]"')
+    return rows
+
+
+def test_the_one_off_is_probed_once_a_run_not_once_a_chunk(tmp_path, monkeypatch):
+    rng = random.Random(7)
+    rows = _chain_rows(rng, 50)
+    rows[30] = rows[30].replace("[[", "[ [", 1)  # another template: probed once too
+    path = tmp_path / "chains.csv"
+    path.write_text("M,K\n" + "\n".join(rows) + "\n")
+    spec = ModesRows()
+    spec.csv_rows = 8  # seven chunks
+    calls = []
+    compute = spec.compute
+    spec.compute = lambda texts, labels: calls.append(texts) or compute(texts, labels)
+    out, err = io.StringIO(), io.StringIO()
+    assert run_batch(spec, str(path), out=out, err=err) == 0 and not err.getvalue()
+    assert len(calls) == 2  # the first row's template and row 30's
+    generic = io.StringIO()
+    assert run_batch(ModesRows(), str(path), out=generic, fast=False) == 0
+    assert len(out.getvalue().splitlines()) == len(generic.getvalue().splitlines()) == 51
