@@ -29,7 +29,7 @@ import numpy as np
 from ..errors import InputError
 from .columns import _LITERAL_CELL
 from .fast import FastBlock, json_head
-from .floats import parse_floats
+from .floats import json_floats, parse_floats
 
 __all__ = ["modes_fast"]
 
@@ -63,11 +63,13 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         return []
     keys = ("M", "K", "C") if "C" in by_key else ("M", "K")
     cells = [list(table[by_key[key].index]) for key in keys]
-    if "\n" in "".join("".join(c) for c in cells):
+    joined = ["\n".join(c) for c in cells]
+    if any(j.count("\n") != len(c) - 1 for j, c in zip(joined, cells)):
         return []
-    if len(keys) == 3 and not "".join(cells[2]).strip():
-        keys, cells = keys[:2], cells[:2]  # an empty C column: undamped rows
-    uniform = [_uniform(c) for c in cells]  # one pass a column: its template and numbers
+    if len(keys) == 3 and not joined[2].strip():
+        keys, cells, joined = keys[:2], cells[:2], joined[:2]  # empty C cells: undamped rows
+    uniform = [_uniform(c, j) for c, j in zip(cells, joined)]  # one pass a column
+    del joined
     groups: dict[tuple, list[int]] = {}
     if all(u is not None for u in uniform):
         groups[tuple(t for t, _numbers in uniform)] = list(range(len(cells[0])))
@@ -140,7 +142,7 @@ def _units(by_key, cell_units: list[str], cache: dict):
     return out
 
 
-def _uniform(cells: list[str]):
+def _uniform(cells: list[str], joined: str):
     """``(the template, its numbers, a flat float array or None where ``float`` refuses
     one)`` of a column whose cells all have the first one's template, read in one pass;
     ``None`` where a cell's template differs.
@@ -150,14 +152,16 @@ def _uniform(cells: list[str]):
     when it matches the template with each ``#`` a number (:func:`_template_re`): every
     number is then a whole run of number characters, as ``sub`` finds it. Otherwise ``split``
     finds the numbers ``sub`` replaces by ``#`` and the text between them, which must repeat
-    the first cell's."""
+    the first cell's. ``joined``: the cells joined by line breaks (none in a cell)."""
     first = _SPLIT_RE.split(cells[0])
     between = first[0::2]  # the text around the first cell's numbers
     count = len(between) - 1
     if not count:
         return None
-    joined = "\n".join(cells)
     if not any(map(_NUMBER_CHARS.intersection, between)) and all(between[1:-1]):
+        values = _plain(joined, between, len(cells))
+        if values is not None:
+            return "#".join(between), values
         found = _template_re(tuple(between)).findall(joined)
         if len(found) != len(cells):
             return None
@@ -165,7 +169,6 @@ def _uniform(cells: list[str]):
             found = list(itertools.chain.from_iterable(found))
     else:
         parts = _SPLIT_RE.split(joined)
-        del joined
         inner = between[1:-1] + [between[-1] + "\n" + between[0]]
         expected = [between[0], *inner * (len(cells) - 1), *between[1:]]
         if parts[0::2] != expected:
@@ -180,6 +183,51 @@ _NUMBER_CHARS = frozenset("0123456789.eE+-")
 #: Numbers parsed at a time (orjson's document for a list of numbers takes some 13 bytes a
 #: character of its text at once: smaller slices keep the peak low).
 PARSE_SLICE = 8192
+
+
+_IS_NUMBER = np.zeros(256, dtype=bool)
+_IS_NUMBER[np.frombuffer("".join(sorted(_NUMBER_CHARS)).encode(), dtype=np.uint8)] = True
+_NO_NUMBERS = str.maketrans("", "", "".join(sorted(_NUMBER_CHARS)))
+
+
+def _plain(joined: str, between: list[str], rows: int):
+    """The flat floats of a column of ASCII cells that are each the text ``between`` (which
+    holds no number character, the inner pieces not empty) with a run of number characters
+    at each gap, every run a JSON number (read by orjson: :func:`json_floats`), with numpy
+    on the column's bytes; ``None`` where one is not (the template pattern decides then)."""
+    if not joined.isascii() or joined.translate(_NO_NUMBERS) != "\n".join(
+            ["".join(between)] * rows):
+        return None  # the text around the numbers is not the template's in every cell
+    count = len(between) - 1
+    text = np.frombuffer(joined.encode("ascii"), dtype=np.uint8)
+    number = _IS_NUMBER[text]
+    edges = np.diff(number.view(np.int8))
+    starts, ends = np.flatnonzero(edges == 1) + 1, np.flatnonzero(edges == -1) + 1
+    if number[0]:
+        starts = np.concatenate(([0], starts))
+    if number[-1]:
+        ends = np.append(ends, len(text))
+    if len(starts) != rows * count:
+        return None
+    lengths = ends - starts
+    before = np.cumsum(lengths) - lengths  # number characters before each run
+    line = len("".join(between)) + 1  # a cell's text around its numbers, and its line break
+    gaps = np.cumsum([len(piece) for piece in between[:-1]])
+    if not np.array_equal((starts - before).reshape(rows, count),
+                          np.arange(rows)[:, None] * line + gaps[None, :]):
+        return None  # a run is not at a gap of the template: another template
+    keep = number.copy()
+    keep[starts[1:] - 1] = True  # the character before each run but the first: a comma
+    numbers = np.where(number, text, ord(","))[keep].tobytes().decode("ascii")
+    at = (before + np.arange(len(starts))).tolist() + [len(numbers) + 1]  # runs' offsets
+    out = []
+    for i in range(0, len(starts), PARSE_SLICE):
+        j = min(i + PARSE_SLICE, len(starts))
+        values = json_floats(numbers[at[i]:at[j] - 1], j - i)
+        if values is None:
+            return None
+        out.append(values)
+    return np.concatenate(out)
 
 
 @functools.lru_cache(maxsize=64)
