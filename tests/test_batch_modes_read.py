@@ -161,3 +161,11 @@ def test_columns_of_plain_templates_read_by_numpy_are_the_per_cell_reading(seed,
             assert mine[1] is not None and mine[1].tolist() == theirs[1], cells
             assert np.signbit(mine[1]).tolist() == np.signbit(theirs[1]).tolist(), cells
     assert taken.count(True) > 100 and taken.count(False) > 20
+
+
+def test_quoted_cells_without_a_comma_are_left_to_the_csv_module():
+    from dyncalc.batch.cells import _quoted_columns
+
+    assert _quoted_columns('"1,2","3,4"\n"5,6","7,8"', 2) == [["1,2", "5,6"], ["3,4", "7,8"]]
+    assert _quoted_columns('"1,2","3,4"\n"5,6","78"', 2) is None
+    assert _quoted_columns('"12","3,4"\n"5,6","7,8"', 2) is None
