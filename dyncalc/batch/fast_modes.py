@@ -2,8 +2,9 @@
 numbers (``"[[2, 0], [0, 1]]"`` or ``"2,0;0,1"``: SI, every coordinate a translation; or with
 a unit, in the header, ``M [g]``, or after the matrix, ``"[[2, 0], [0, 1]] kg"``: the numbers
 times the SI value of one unit, as the one-off reads them), with or without a ``C`` cell of
-the same kind (proportional damping: ``zeta_i``, ``omega_d_i``; rows whose damping is not
-proportional, near critical or overdamped are the one-off's), grouped by
+the same kind (proportional damping: ``zeta_i``, ``omega_d_i``; damping that is not
+proportional from the state-space eigenvalues, a block of its own with the one-off's note;
+near-critical, overdamped or barely damped rows are the one-off's), grouped by
 *template* (the cells with their numbers taken out: the same size, spelling and unit), their
 numbers read in one pass a column, solved on a stack
 (:func:`dyncalc.physics.modes_columns.stacked_modes`).
@@ -96,9 +97,7 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         if any(m is None for m in matrices):
             continue
         matrices = [matrix * factor for matrix, (factor, _suffix) in zip(matrices, units)]
-        block = _block(spec, by_key, rows, group, matrices, want_json, units, group_key)
-        if block is not None:
-            blocks.append(block)
+        blocks += _blocks(spec, by_key, rows, group, matrices, want_json, units, group_key)
     return blocks
 
 
@@ -262,13 +261,30 @@ def _numbers(cells: list[str], n: int):
     return _floats(_NUMBER_RE.findall("\n".join(cells)), len(cells), n)
 
 
-def _block(spec, by_key, rows, cells, matrices, want_json, units, kind):
-    """The block of the rows the kernel takes, where the probe of this ``kind`` of rows
-    (their templates and units; probed once a run, in ``spec.probed``) agrees."""
+def _blocks(spec, by_key, rows, cells, matrices, want_json, units, kind) -> list:
+    """The blocks of the rows the kernel takes: undamped or proportionally damped, then (of
+    the rest, with C) damping that is not proportional (state-space eigenvalues)."""
     from ..physics.modes_columns import stacked_modes
 
     normalize = spec.settings.get("normalize") or "max"
     out = stacked_modes(*matrices[:2], normalize, *matrices[2:])
+    blocks = [_block(spec, by_key, rows, cells, matrices, want_json, units, kind, out)]
+    rest = np.flatnonzero(~np.asarray(out.exact, dtype=bool))
+    if len(matrices) == 3 and len(rest):
+        picked = rest.tolist()
+        cells = [[c[i] for i in picked] for c in cells]
+        matrices = [X[rest] for X in matrices]
+        out = stacked_modes(*matrices[:2], normalize, matrices[2], damping="complex")
+        blocks.append(_block(spec, by_key, rows[rest], cells, matrices, want_json, units, kind,
+                             out))
+    return [block for block in blocks if block is not None]
+
+
+def _block(spec, by_key, rows, cells, matrices, want_json, units, kind, out):
+    """The block of the rows the kernel takes (``out``), where the probe of this ``kind`` of
+    rows (their templates and units, the model; probed once a run, in ``spec.probed``)
+    agrees."""
+    normalize = spec.settings.get("normalize") or "max"
     good = np.asarray(out.exact, dtype=bool)
     if not good.any():
         return None
@@ -296,7 +312,7 @@ def _block(spec, by_key, rows, cells, matrices, want_json, units, kind):
         picked = keep.tolist()
         inputs = _inputs([[c[i] for i in picked] for c in cells], [X[keep] for X in matrices],
                          units)
-    return FastBlock(rows[keep], values, dims, head, inputs, extra)
+    return FastBlock(rows[keep], values, dims, head, inputs, extra, out.warnings)
 
 
 def _same_inputs(cells, matrices, units, first: int, probe) -> bool:
@@ -317,7 +333,7 @@ def _probe(spec, by_key, texts: list[str], out, i: int):
         result = spec.compute(dict(zip(keys, texts)), {k: by_key[k].name for k in keys})
     except InputError:
         return None
-    if (result.warnings or result.model != out.model or result.method != out.method
+    if (tuple(result.warnings) != out.warnings or result.model != out.model or result.method != out.method
             or list(result.results) != list(out.values)
             or any(c["kind"] != "translation" for c in result.extra.get("coordinates", []))):
         return None
