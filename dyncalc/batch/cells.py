@@ -12,7 +12,8 @@ Example::
 """
 from __future__ import annotations
 
-import re
+from itertools import repeat
+from operator import contains
 
 from .floats import json_floats
 
@@ -105,10 +106,6 @@ def _without_quotes(lines: list[str], text: str) -> list[str] | None:
     return plain if len(plain) == len(lines) else None
 
 
-#: A cell without a comma, in a column of cells joined by line breaks (between them).
-_NO_COMMA_RE = re.compile("\n[^,\n]*(?=\n)")
-
-
 def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
     """The cells of ``text`` (``n`` lines joined by ``\\n``, no NUL, no ``\\r``) column by
     column where every cell of every line is quoted, each line has as many, and each holds a
@@ -124,7 +121,7 @@ def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
             or between.count("\n") != n - 1 or between[width - 1::width].count("\n") != n - 1:
         return None  # (n - 1 line breaks between cells: none inside one)
     columns = [cells[j::width] for j in range(width)]
-    for column in columns:
-        if _NO_COMMA_RE.search("\n" + "\n".join(column) + "\n"):
+    for column in columns:  # (a test a cell, in C: a regular expression over the joined
+        if not all(map(contains, column, repeat(",", n))):  # column took ten times longer)
             return None
     return columns

@@ -2,21 +2,26 @@
 numbers (``"[[2, 0], [0, 1]]"`` or ``"2,0;0,1"``: SI, every coordinate a translation; or with
 a unit, in the header, ``M [g]``, or after the matrix, ``"[[2, 0], [0, 1]] kg"``: the numbers
 times the SI value of one unit, as the one-off reads them), with or without a ``C`` cell of
-the same kind (proportional damping: ``zeta_i``, ``omega_d_i``; rows whose damping is not
-proportional, near critical or overdamped are the one-off's), grouped by
+the same kind (proportional damping: ``zeta_i``, ``omega_d_i``; damping that is not
+proportional from the state-space eigenvalues, a block of its own with the one-off's note;
+near-critical, overdamped or barely damped rows are the one-off's), grouped by
 *template* (the cells with their numbers taken out: the same size, spelling and unit), their
 numbers read in one pass a column, solved on a stack
 (:func:`dyncalc.physics.modes_columns.stacked_modes`).
 
 Unlike the other vectorised paths these rows are not the one-off's to the bit: the stacked
 Cholesky reduction rounds otherwise than LAPACK's ``sygvd`` (a few units in the last place;
-tests/test_batch_modes.py holds them to 1e-12 relative). Each group's first row is computed
-by the one-off too (a *probe*): the group takes the generic path unless the probe's results,
-model and method are the kernel's (to 1e-9) and its input entries the ones assembled here.
+tests/test_batch_modes.py holds them to 1e-12 relative). The first row of each kind of rows
+(templates and units) is computed by the one-off too, once a run (a *probe*): the rows take
+the generic path unless the probe's results, model and method are the kernel's (to 1e-9)
+and its input entries the ones assembled here. A chunk whose cells all share a template is
+read in one pass of the number pattern a column (:func:`_uniform`).
 Set ``DYNCALC_BATCH_GENERIC=1`` for the one-off's own digits.
 """
 from __future__ import annotations
 
+import functools
+import itertools
 import json
 import re
 
@@ -25,11 +30,12 @@ import numpy as np
 from ..errors import InputError
 from .columns import _LITERAL_CELL
 from .fast import FastBlock, json_head
-from .floats import parse_floats
+from .floats import json_floats, parse_floats
 
 __all__ = ["modes_fast"]
 
 _NUMBER_RE = re.compile(_LITERAL_CELL)
+_SPLIT_RE = re.compile(f"({_LITERAL_CELL})")
 #: The relative agreement a probe must show.
 PROBE_RTOL = 1e-9
 
@@ -58,15 +64,19 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         return []
     keys = ("M", "K", "C") if "C" in by_key else ("M", "K")
     cells = [list(table[by_key[key].index]) for key in keys]
-    if "\n" in "".join("".join(c) for c in cells):
+    joined = ["\n".join(c) for c in cells]
+    if any(j.count("\n") != len(c) - 1 for j, c in zip(joined, cells)):
         return []
-    if len(keys) == 3 and not "".join(cells[2]).strip():
-        keys, cells = keys[:2], cells[:2]  # an empty C column: undamped rows
-    templates = [_NUMBER_RE.sub("#", "\n".join(c)).split("\n") for c in cells]
+    if len(keys) == 3 and not joined[2].strip():
+        keys, cells, joined = keys[:2], cells[:2], joined[:2]  # empty C cells: undamped rows
+    uniform = [_uniform(c, j) for c, j in zip(cells, joined)]  # one pass a column
+    del joined
     groups: dict[tuple, list[int]] = {}
-    if all(t.count(t[0]) == len(t) for t in templates):
-        groups[tuple(t[0] for t in templates)] = list(range(len(cells[0])))
+    if all(u is not None for u in uniform):
+        groups[tuple(t for t, _numbers in uniform)] = list(range(len(cells[0])))
     else:
+        uniform = None
+        templates = [_NUMBER_RE.sub("#", "\n".join(c)).split("\n") for c in cells]
         for i, key in enumerate(zip(*templates)):
             groups.setdefault(key, []).append(i)
     blocks = []
@@ -81,13 +91,13 @@ def modes_fast(spec, columns, table, want_json: bool, cache: dict) -> list[FastB
         rows = np.asarray(members, dtype=np.intp)
         every = len(members) == len(cells[0])
         group = [c if every else [c[i] for i in members] for c in cells[:len(split)]]
-        matrices = [_numbers(g, n) for g in group]
+        matrices = [_numbers(g, n) for g in group] if uniform is None else \
+            [None if values is None or len(values) != len(members) * n * n else
+             values.reshape(len(members), n, n) for _t, values in uniform[:len(split)]]
         if any(m is None for m in matrices):
             continue
         matrices = [matrix * factor for matrix, (factor, _suffix) in zip(matrices, units)]
-        block = _block(spec, by_key, rows, group, matrices, want_json, units)
-        if block is not None:
-            blocks.append(block)
+        blocks += _blocks(spec, by_key, rows, group, matrices, want_json, units, group_key)
     return blocks
 
 
@@ -131,49 +141,188 @@ def _units(by_key, cell_units: list[str], cache: dict):
     return out
 
 
-def _numbers(cells: list[str], n: int):
-    """The (rows, n, n) numbers of cells of one template, read in one pass; ``None`` where
-    the count is off."""
-    found = _NUMBER_RE.findall("\n".join(cells))
-    if len(found) != len(cells) * n * n:
+def _uniform(cells: list[str], joined: str):
+    """``(the template, its numbers, a flat float array or None where ``float`` refuses
+    one)`` of a column whose cells all have the first one's template, read in one pass;
+    ``None`` where a cell's template differs.
+
+    Where the text around the first cell's numbers holds no character a number may hold
+    (``0-9 . e E + -``) and two numbers are never adjacent, a cell has that template exactly
+    when it matches the template with each ``#`` a number (:func:`_template_re`): every
+    number is then a whole run of number characters, as ``sub`` finds it. Otherwise ``split``
+    finds the numbers ``sub`` replaces by ``#`` and the text between them, which must repeat
+    the first cell's. ``joined``: the cells joined by line breaks (none in a cell)."""
+    first = _SPLIT_RE.split(cells[0])
+    between = first[0::2]  # the text around the first cell's numbers
+    count = len(between) - 1
+    if not count:
         return None
+    if not any(map(_NUMBER_CHARS.intersection, between)) and all(between[1:-1]):
+        values = _plain(joined, between, len(cells))
+        if values is not None:
+            return "#".join(between), values
+        found = _template_re(tuple(between)).findall(joined)
+        if len(found) != len(cells):
+            return None
+        if count > 1:
+            found = list(itertools.chain.from_iterable(found))
+    else:
+        parts = _SPLIT_RE.split(joined)
+        inner = between[1:-1] + [between[-1] + "\n" + between[0]]
+        expected = [between[0], *inner * (len(cells) - 1), *between[1:]]
+        if parts[0::2] != expected:
+            return None
+        found = parts[1::2]
+        del parts
+    return "#".join(between), _parsed(found)
+
+
+#: The characters a number of a cell may hold (:data:`_NUMBER_RE`).
+_NUMBER_CHARS = frozenset("0123456789.eE+-")
+#: Numbers parsed at a time (orjson's document for a list of numbers takes some 13 bytes a
+#: character of its text at once: smaller slices keep the peak low).
+PARSE_SLICE = 8192
+
+
+_IS_NUMBER = np.zeros(256, dtype=bool)
+_IS_NUMBER[np.frombuffer("".join(sorted(_NUMBER_CHARS)).encode(), dtype=np.uint8)] = True
+_NO_NUMBERS = str.maketrans("", "", "".join(sorted(_NUMBER_CHARS)))
+
+
+def _plain(joined: str, between: list[str], rows: int):
+    """The flat floats of a column of ASCII cells that are each the text ``between`` (which
+    holds no number character, the inner pieces not empty) with a run of number characters
+    at each gap, every run a JSON number (read by orjson: :func:`json_floats`), with numpy
+    on the column's bytes; ``None`` where one is not (the template pattern decides then)."""
+    if not joined.isascii() or joined.translate(_NO_NUMBERS) != "\n".join(
+            ["".join(between)] * rows):
+        return None  # the text around the numbers is not the template's in every cell
+    count = len(between) - 1
+    text = np.frombuffer(joined.encode("ascii"), dtype=np.uint8)
+    number = _IS_NUMBER[text]
+    edges = np.diff(number.view(np.int8))
+    starts, ends = np.flatnonzero(edges == 1) + 1, np.flatnonzero(edges == -1) + 1
+    if number[0]:
+        starts = np.concatenate(([0], starts))
+    if number[-1]:
+        ends = np.append(ends, len(text))
+    if len(starts) != rows * count:
+        return None
+    lengths = ends - starts
+    before = np.cumsum(lengths) - lengths  # number characters before each run
+    line = len("".join(between)) + 1  # a cell's text around its numbers, and its line break
+    gaps = np.cumsum([len(piece) for piece in between[:-1]])
+    if not np.array_equal((starts - before).reshape(rows, count),
+                          np.arange(rows)[:, None] * line + gaps[None, :]):
+        return None  # a run is not at a gap of the template: another template
+    keep = number.copy()
+    keep[starts[1:] - 1] = True  # the character before each run but the first: a comma
+    numbers = np.where(number, text, ord(","))[keep].tobytes().decode("ascii")
+    at = (before + np.arange(len(starts))).tolist() + [len(numbers) + 1]  # runs' offsets
+    out = []
+    for i in range(0, len(starts), PARSE_SLICE):
+        j = min(i + PARSE_SLICE, len(starts))
+        values = json_floats(numbers[at[i]:at[j] - 1], j - i)
+        if values is None:
+            return None
+        out.append(values)
+    return np.concatenate(out)
+
+
+@functools.lru_cache(maxsize=64)
+def _template_re(between: tuple[str, ...]):
+    """A line (of cells joined by line breaks) that is the text ``between`` with a number
+    (a group) between each two pieces."""
+    number = f"({_LITERAL_CELL})"
+    return re.compile("^" + number.join(map(re.escape, between)) + "$", re.M)
+
+
+def _parsed(found: list[str]):
+    """``float`` of each number's text, a flat array; ``None`` where ``float`` refuses one."""
     try:
-        return np.asarray(parse_floats(found), dtype=float).reshape(len(cells), n, n)
+        return np.concatenate([parse_floats(found[i:i + PARSE_SLICE])
+                               for i in range(0, len(found), PARSE_SLICE)])
     except ValueError:
         return None
 
 
-def _block(spec, by_key, rows, cells, matrices, want_json, units):
+def _floats(found: list[str], rows: int, n: int):
+    """The (rows, n, n) floats of a column's numbers' texts; ``None`` where the count is off
+    or ``float`` refuses one."""
+    if len(found) != rows * n * n:
+        return None
+    values = _parsed(found)
+    return None if values is None else values.reshape(rows, n, n)
+
+
+def _numbers(cells: list[str], n: int):
+    """The (rows, n, n) numbers of cells of one template, read in one pass; ``None`` where
+    the count is off."""
+    return _floats(_NUMBER_RE.findall("\n".join(cells)), len(cells), n)
+
+
+def _blocks(spec, by_key, rows, cells, matrices, want_json, units, kind) -> list:
+    """The blocks of the rows the kernel takes: undamped or proportionally damped, then (of
+    the rest, with C) damping that is not proportional (state-space eigenvalues)."""
     from ..physics.modes_columns import stacked_modes
 
     normalize = spec.settings.get("normalize") or "max"
     out = stacked_modes(*matrices[:2], normalize, *matrices[2:])
+    blocks = [_block(spec, by_key, rows, cells, matrices, want_json, units, kind, out)]
+    rest = np.flatnonzero(~np.asarray(out.exact, dtype=bool))
+    if len(matrices) == 3 and len(rest):
+        picked = rest.tolist()
+        cells = [[c[i] for i in picked] for c in cells]
+        matrices = [X[rest] for X in matrices]
+        out = stacked_modes(*matrices[:2], normalize, matrices[2], damping="complex")
+        blocks.append(_block(spec, by_key, rows[rest], cells, matrices, want_json, units, kind,
+                             out))
+    return [block for block in blocks if block is not None]
+
+
+def _block(spec, by_key, rows, cells, matrices, want_json, units, kind, out):
+    """The block of the rows the kernel takes (``out``), where the probe of this ``kind`` of
+    rows (their templates and units, the model; probed once a run, in ``spec.probed``)
+    agrees."""
+    normalize = spec.settings.get("normalize") or "max"
     good = np.asarray(out.exact, dtype=bool)
     if not good.any():
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
-    probe = _probe(spec, by_key, [c[first] + suffix for c, (_f, suffix) in zip(cells, units)],
-                   out, first)
-    if probe is None:
-        return None
-    values = {name: array[keep] for name, array in out.values.items()}
-    dims = {name: entry.dim for name, entry in probe.results.items()}
-    head = inputs = None
-    extra = json.dumps(probe.extra, allow_nan=False)
-    if want_json:
-        from ..result.encode import _json_inputs
-
-        from .assemble import lines
-
-        if lines(_inputs([[c[first]] for c in cells], [X[[first]] for X in matrices], units),
-                 1)[0] != json.dumps(_json_inputs(probe.inputs))[1:-1]:
+    probed = getattr(spec, "probed", None)
+    kind = (kind, tuple(units), normalize, want_json, out.model, out.method, tuple(out.values))
+    known = probed.get(kind) if probed is not None else None
+    if known is None:
+        known = _probe(spec, by_key,
+                       [c[first] + suffix for c, (_f, suffix) in zip(cells, units)], out,
+                       first)
+        if known is None or want_json and not _same_inputs(cells, matrices, units, first,
+                                                           known):
             return None
+        known = ({name: entry.dim for name, entry in known.results.items()},
+                 json.dumps(known.extra, allow_nan=False))
+        if probed is not None:
+            probed[kind] = known
+    values = {name: array[keep] for name, array in out.values.items()}
+    dims, extra = known
+    head = inputs = None
+    if want_json:
         head = json_head("modes", None, out.model, out.method)
         picked = keep.tolist()
         inputs = _inputs([[c[i] for i in picked] for c in cells], [X[keep] for X in matrices],
                          units)
-    return FastBlock(rows[keep], values, dims, head, inputs, extra)
+    return FastBlock(rows[keep], values, dims, head, inputs, extra, out.warnings)
+
+
+def _same_inputs(cells, matrices, units, first: int, probe) -> bool:
+    """Whether the JSON input entries assembled here for row ``first`` are the probe's."""
+    from ..result.encode import _json_inputs
+
+    from .assemble import lines
+
+    return lines(_inputs([[c[first]] for c in cells], [X[[first]] for X in matrices], units),
+                 1)[0] == json.dumps(_json_inputs(probe.inputs))[1:-1]
 
 
 def _probe(spec, by_key, texts: list[str], out, i: int):
@@ -184,7 +333,7 @@ def _probe(spec, by_key, texts: list[str], out, i: int):
         result = spec.compute(dict(zip(keys, texts)), {k: by_key[k].name for k in keys})
     except InputError:
         return None
-    if (result.warnings or result.model != out.model or result.method != out.method
+    if (tuple(result.warnings) != out.warnings or result.model != out.model or result.method != out.method
             or list(result.results) != list(out.values)
             or any(c["kind"] != "translation" for c in result.extra.get("coordinates", []))):
         return None

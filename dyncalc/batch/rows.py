@@ -373,6 +373,8 @@ def ModesRows(*, scene: str | None = None, normalize: str | None = None,
         from .fast_modes import modes_fast
 
         spec.fast = modes_fast
+        spec.probed = {}  # one probe (a one-off) per kind of rows a run, not one per chunk
+        spec.csv_rows = 8192  # up to 27 numbers a row read, 16 written: flat memory
     return spec
 
 

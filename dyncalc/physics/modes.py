@@ -30,6 +30,11 @@ ZERO_RTOL = 1e-10
 #: The modal damping matrix ``Phi^T C Phi`` counts as diagonal (proportional damping) when
 #: its off-diagonal entries are within this share of its largest entry.
 PROPORTIONAL_RTOL = 1e-8
+#: The note of a system whose damping is not proportional (complex modes).
+NON_PROPORTIONAL_NOTE = (
+    "the damping is not proportional (Phi^T C Phi is not diagonal: C M^-1 K != K M^-1 C), so "
+    "the modes are complex; zeta_i and omega_d_i come from the eigenvalues s = -zeta omega +- "
+    "i omega_d of the state-space form, and mode_i are the undamped mode shapes")
 #: Mode components below this share of the largest are shown as 0 (rounding of eigh).
 _COMPONENT_FLOOR = 2.0 ** -46
 
@@ -353,10 +358,7 @@ def _damping(out: Modes, parts: list) -> None:
         if not _damp_part(out, p, Cs, complex_notes):
             out.proportional = False
     if not out.proportional:
-        out.notes.append("the damping is not proportional (Phi^T C Phi is not diagonal: "
-                         "C M^-1 K != K M^-1 C), so the modes are complex; zeta_i and "
-                         "omega_d_i come from the eigenvalues s = -zeta omega +- i omega_d of "
-                         "the state-space form, and mode_i are the undamped mode shapes")
+        out.notes.append(NON_PROPORTIONAL_NOTE)
     out.notes += complex_notes
 
 

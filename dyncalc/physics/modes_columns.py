@@ -33,9 +33,10 @@ import math
 
 from ..lazy import numpy as np
 from .columns import Columns
-from .modes import _COMPONENT_FLOOR, PROPORTIONAL_RTOL, SYMMETRY_RTOL
+from .modes import (_COMPONENT_FLOOR, NON_PROPORTIONAL_NOTE, PROPORTIONAL_RTOL,
+                    SYMMETRY_RTOL, ZERO_RTOL)
 
-__all__ = ["stacked_modes", "MARGIN", "APART", "DAMPING_SPREAD", "UNDERDAMPED"]
+__all__ = ["stacked_modes", "MARGIN", "APART", "DAMPING_SPREAD", "UNDERDAMPED", "COMPLEX_ZETA"]
 
 #: Smallest eigenvalue of M and of ``K phi = lambda M phi``, as a share of the largest, below
 #: which a row goes to the one-off (its thresholds are 1e-10: a margin of 100).
@@ -49,12 +50,16 @@ MARGIN_P = 100.0
 DAMPING_SPREAD = 1e-4
 #: ``(1 - zeta)(1 + zeta)`` at or below this goes to the one-off (near critical: its note).
 UNDERDAMPED = 1e-6
+#: Damping that is not proportional: a mode's zeta below this goes to the one-off.
+COMPLEX_ZETA = 1e-3
 
 
-def stacked_modes(M, K, normalize: str = "max", C=None) -> Columns:
+def stacked_modes(M, K, normalize: str = "max", C=None, damping: str = "proportional"
+                  ) -> Columns:
     """The one-off's results of every row (see the module); ``exact`` marks the rows the
-    vectorised path takes. With ``C`` (N s/m, (rows, n, n)) also the proportional damping's
-    ``zeta_i`` and ``omega_d_i`` (:func:`_damping`)."""
+    vectorised path takes. With ``C`` (N s/m, (rows, n, n)) also ``zeta_i`` and
+    ``omega_d_i``: of proportional damping (:func:`_damping`), or with ``damping="complex"``
+    of damping that is not, from the state-space eigenvalues (:func:`_complex_damping`)."""
     rows, n, _ = M.shape
     with np.errstate(all="ignore"):
         exact = np.isfinite(M).all(axis=(1, 2)) & np.isfinite(K).all(axis=(1, 2))
@@ -91,7 +96,10 @@ def stacked_modes(M, K, normalize: str = "max", C=None) -> Columns:
             & np.isfinite(modal_stiffness).all(axis=1) & np.isfinite(omega).all(axis=1)
         if C is not None:
             C = (C + C.transpose(0, 2, 1)) / 2.0
-            zeta, omega_d, damped = _damping(C, V, omega)
+            if damping == "complex":
+                zeta, omega_d, damped = _complex_damping(M, K, C, L, A, V, omega)
+            else:
+                zeta, omega_d, damped = _damping(C, V, omega)
             exact &= damped
     values = {}
     for i in range(n):
@@ -107,6 +115,10 @@ def stacked_modes(M, K, normalize: str = "max", C=None) -> Columns:
             values[f"zeta_{i + 1}"] = np.ascontiguousarray(zeta[:, i])
         for i in range(n):
             values[f"omega_d_{i + 1}"] = np.ascontiguousarray(omega_d[:, i])
+        if damping == "complex":
+            return Columns(values, exact, model="non-proportional damping",
+                           method="eigh+state-space", warnings=(NON_PROPORTIONAL_NOTE,),
+                           warned=exact.copy())
         return Columns(values, exact, model="proportional damping", method="eigh")
     return Columns(values, exact, model="linear", method="eigh")
 
@@ -135,6 +147,69 @@ def _damping(C, V, omega):
     exact &= (gap > UNDERDAMPED).all(axis=1)
     omega_d = omega * np.sqrt(np.where(gap > 0.0, gap, 1.0))
     exact &= np.isfinite(zeta).all(axis=1) & np.isfinite(omega_d).all(axis=1)
+    return zeta, omega_d, exact
+
+
+def _complex_damping(M, K, C, L, A, V, omega):
+    """``(zeta, omega_d, exact)`` of damping that is not proportional, on a stack:
+
+    .. math:: \\begin{bmatrix} 0 & I \\\\ -A & -L^{-1} C L^{-T} \\end{bmatrix} z = s z,
+              \\quad s = -\\zeta \\omega \\pm i \\omega_d,
+
+    the state-space form reduced by ``M = L L^T`` (``A = L^{-1} K L^{-T}``), whose
+    eigenvalues are the one-off's (it solves ``[[0, I], [-K, -C]] z = s [[I, 0], [0, M]] z``
+    with LAPACK's ``ggev``: the same values, rounded otherwise). As the one-off, the
+    eigenvalues with ``Im s > 0``, by ascending ``|s|``, go to the free undamped mode of
+    nearest ``omega``: ``zeta = -Re s / |s|``, ``omega_d = Im s``. A row is exact where
+    ``V^T C V`` is far from diagonal (:data:`MARGIN_P` beyond the one-off's test), C is
+    positive semi-definite with a margin, no entry of M, K or C leaves a coordinate uncoupled
+    from the rest (the one-off solves such groups apart), every eigenvalue is complex, the
+    ``|s|`` and the matches are clear (:data:`APART`) and every ``zeta`` is at least
+    :data:`COMPLEX_ZETA` (below it, ``Re s`` carries the rounding of ``|s|``)."""
+    rows, n, _ = C.shape
+    modal = V.transpose(0, 2, 1) @ C @ V
+    diag = np.diagonal(modal, axis1=1, axis2=2)
+    off = np.abs(modal - diag[:, :, None] * np.eye(n))
+    scale = np.abs(modal).max(axis=(1, 2))
+    exact = off.max(axis=(1, 2)) > PROPORTIONAL_RTOL * MARGIN_P * scale
+    c_eigs = np.linalg.eigvalsh(C)
+    exact &= c_eigs[:, 0] >= -ZERO_RTOL / MARGIN_P * np.abs(c_eigs).max(axis=1)
+    linked = ((M != 0.0) | (K != 0.0) | (C != 0.0)).astype(np.int64)
+    reach = linked
+    for _ in range(max(1, math.ceil(math.log2(n)))):  # paths of up to n - 1 links
+        reach = np.minimum(reach @ reach + reach, 1)
+    exact &= (reach > 0).all(axis=(1, 2))
+    Cr = np.linalg.solve(L, np.linalg.solve(L, C).transpose(0, 2, 1))
+    state = np.zeros((rows, 2 * n, 2 * n))
+    state[:, :n, n:] = np.eye(n)
+    state[:, n:, :n] = -A
+    state[:, n:, n:] = -(Cr + Cr.transpose(0, 2, 1)) / 2.0
+    state = np.where(exact[:, None, None], state, 0.0)
+    s = np.linalg.eigvals(state)
+    size = np.abs(s)
+    top = size.max(axis=1)
+    exact &= np.isfinite(s).all(axis=1) & (np.abs(s.imag) > APART * top[:, None]).all(axis=1)
+    upper = np.where(s.imag > 0.0, size, np.inf)
+    order = np.argsort(upper, axis=1)[:, :n]  # the n with Im s > 0, ascending |s|
+    r = np.arange(rows)[:, None]
+    picked, sizes = s[r, order], upper[r, order]
+    exact &= np.isfinite(sizes).all(axis=1)
+    if n > 1:
+        exact &= (np.diff(sizes, axis=1) > APART * sizes[:, 1:]).all(axis=1)
+    zeta, omega_d = np.zeros((rows, n)), np.zeros((rows, n))
+    free = np.ones((rows, n), dtype=bool)
+    for j in range(n):  # the one-off's matching, a mode at a time
+        distance = np.where(free, np.abs(omega - sizes[:, j:j + 1]), np.inf)
+        nearest = np.argmin(distance, axis=1)
+        if n - j > 1:
+            two = np.sort(distance, axis=1)[:, :2]
+            exact &= two[:, 1] - two[:, 0] > APART * sizes[:, j]
+        k = np.arange(rows)
+        free[k, nearest] = False
+        z = picked[:, j]
+        zeta[k, nearest] = -z.real / np.abs(z)
+        omega_d[k, nearest] = z.imag
+    exact &= (zeta >= COMPLEX_ZETA).all(axis=1) & np.isfinite(omega_d).all(axis=1)
     return zeta, omega_d, exact
 
 
