@@ -124,3 +124,24 @@ def test_values_typed_with_blanks_show_as_typed_on_both_paths(tmp_path):
     code, out, err = _run("parallel", path, True, True)
     assert (code, err) == (0, "") and out.count('"text": "\\t2 m"') == 1
     assert (code, out, err) == _run("parallel", path, False, True)
+
+
+@pytest.mark.parametrize("rows, probes", [
+    (["100,200"] * 25, 1),
+    (['"axial(l=2 m, EA=3 N)",5'] * 25, 1),
+    (["100 N/m,200"] * 12 + ["100 lbf/in,200"] * 13, 2),  # another unit typed: its own probe
+])
+def test_one_probe_per_kind_of_block_a_run(tmp_path, monkeypatch, rows, probes):
+    """The one-off checks one row of each kind of block once a run, not once a chunk (a
+    third of a plain run's time went to one probe a chunk); the output is unchanged."""
+    from dyncalc.batch import fast_commands
+
+    calls = []
+    probe = fast_commands._probe
+    monkeypatch.setattr(fast_commands, "_probe", lambda *a, **k: calls.append(1) or probe(*a, **k))
+    monkeypatch.setattr(batch, "CHUNK_ROWS", 10)
+    path = tmp_path / "chunks.csv"
+    path.write_text("k1,k2\n" + "\n".join(rows) + "\n")
+    fast = _run("parallel", path, True, False)
+    assert len(calls) == probes
+    assert fast == _run("parallel", path, False, False) and fast[1].count("\n") == 26

@@ -329,12 +329,16 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache,
     values = {"k_eq": k_eq, **results}
     first = int(np.argmax(good))
     columns_out = Columns(values, exact=good, model=how)
-    if parsed is not None:  # the first good row's cells, as the one-off reads them
-        cells = {col.key: {first: cells[col.key][first].strip()} for col in given}
-    probe = _probe(spec, given, cells, int(rows[first]), columns_out,
-                   {name: array[first] for name, array in values.items()})
-    if probe is None:
-        return None
+    # one probe per kind of block a run (the shapes, the units typed), not one per chunk
+    kind = ("elements", key, tuple(read.unit_json[first] for _n, read, *_r in inputs))
+    probed = getattr(spec, "probed", {})
+    if kind not in probed:
+        if parsed is not None:  # the first good row's cells, as the one-off reads them
+            cells = {col.key: {first: cells[col.key][first].strip()} for col in given}
+        if _probe(spec, given, cells, int(rows[first]), columns_out,
+                  {name: array[first] for name, array in values.items()}) is None:
+            return None
+        probed[kind] = True
     keep = np.flatnonzero(good)
     head = texts_out = None
     if want_json:
