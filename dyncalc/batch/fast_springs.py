@@ -12,6 +12,11 @@ in N/m, bit for bit the one-off (tests/test_batch_spring_elements.py). The one-o
 first element's unit: an element's is SI (N/m, N*m/rad), so a group is taken where its
 first element is an element word or a stiffness typed in SI (or bare).
 
+A column whose cells share one template (the same word, names, units and spacing; only
+the numbers differ: the common file) is split without a pass per cell: the template's fixed
+texts are replaced away and the literals read as JSON at once, the split checked by writing
+the lines back (:func:`_split_fixed`; one regular expression where JSON refuses a literal).
+
 Left to the one-off row by row: shared values (``EI=...`` columns), nested groups, expressions in parentheses, a header unit on a column of
 element words, and every row that warns or is refused (a non-positive or infinite value, an
 element or a result that overflows or underflows).
@@ -119,10 +124,13 @@ def _uniform(columns, table):
 
 def _element_column(column: list[str], first: str):
     """``(shape, {parameter: (literals, values or None, unit, (text before, text after the
-    literal))})``
-    of a column of element words whose every cell is ``first`` but for its number literals
-    (the literals as :func:`~dyncalc.batch.columns._read_column` splits each value from its
-    unit), or ``None``."""
+    literal))})`` of a column of element words whose every cell is ``first`` but for its
+    number literals (split off as :func:`~dyncalc.batch.columns._read_column` splits a value
+    from its unit), or ``None``.
+
+    Example: ``["axial(l=2 m, EA=3 N)", "axial(l=5 m, EA=1e6 N)"]`` gives the shape
+    ``("axial", ("l", "EA"))``, ``l``'s literals ``["2", "5"]`` in ``m``, ``EA``'s
+    ``["3", "1e6"]`` in ``N``."""
     from .columns import _CELL_LINE_RE, _LITERAL_CELL
 
     shape = _shape(_VALUE_RE.sub("=", first)) if first == first.strip() else None
