@@ -335,7 +335,7 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
     first = int(np.argmax(good))
     first_extra = None if out.extras is None else _joined(out.extras(np.array([first])))
     # a spec with ``probed`` (a dict) probes each kind of block once a run (eom: a probe is
-    # a whole one-off, with its explanation; springs: one per chunk was a third of a run);
+    # a whole one-off, with its explanation; springs: one per chunk was a quarter of a run);
     # the others probe every block. A kind: the columns, the units typed, the results.
     probed = getattr(spec, "probed", None)
     key = (tuple(col.key for col in given), out.model, out.method, first_extra, warnings,
