@@ -158,8 +158,6 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
                  plain: np.ndarray | None = None) -> _ColumnValues:
     """Read the cells of one parameter column (rows known to give it): a unit is read once per
     group of cells that share it, and pint converts the group's values as one array."""
-    from ..units import registry
-
     n = len(cells)
     out = _ColumnValues()
     out.ok = np.zeros(n, dtype=bool)
@@ -205,6 +203,37 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
             for unit, rows in members.items():
                 lits = [literals[i] for i in rows]
                 groups[unit] = (rows, np.array(list(map(float, lits)), dtype=float), lits)
+    return _converted(out, groups, param, strict, cache)
+
+
+def read_literals(literals: list[str], unit: str, param, strict: bool, cache: dict,
+                  values: np.ndarray | None = None) -> _ColumnValues:
+    """:func:`_read_column` of the cells ``literal + unit`` (plain number literals, as
+    ``_CELL_LINE_RE`` splits them, all in one ``unit``), from their literals alone: the
+    values read at once (or given: ``values``, as :func:`parse_floats` reads them), the
+    unit once.
+
+    Example: the literals ``["2", "0.5"]`` with ``m`` read as the cells ``2 m`` and ``0.5 m``.
+    """
+    n = len(literals)
+    out = _ColumnValues()
+    out.ok = np.zeros(n, dtype=bool)
+    out.si = np.zeros(n)
+    out.shown = np.zeros(n)
+    out.unit_json = [("", "")] * n
+    groups = {}
+    if n and (not unit or _SIMPLE_UNIT_RE.fullmatch(unit)):
+        groups[unit] = (None, parse_floats(literals) if values is None else values, literals)
+    return _converted(out, groups, param, strict, cache)
+
+
+def _converted(out: _ColumnValues, groups: dict, param, strict: bool,
+               cache: dict) -> _ColumnValues:
+    """``out`` filled in from ``groups`` (unit -> (rows or ``None`` for all, values, their
+    literals)): each group's values converted to SI by pint as one array."""
+    from ..units import registry
+
+    n = len(out.ok)
     ureg = registry()
     for unit, (rows, values, literals) in groups.items():
         info = _unit_info(unit, param.dim, strict, cache)

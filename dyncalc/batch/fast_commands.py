@@ -335,10 +335,11 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
     first = int(np.argmax(good))
     first_extra = None if out.extras is None else _joined(out.extras(np.array([first])))
     # a spec with ``probed`` (a dict) probes each kind of block once a run (eom: a probe is
-    # a whole one-off, with its explanation); the others probe every block
+    # a whole one-off, with its explanation; springs: one per chunk was a quarter of a run);
+    # the others probe every block. A kind: the columns, the units typed, the results.
     probed = getattr(spec, "probed", None)
     key = (tuple(col.key for col in given), out.model, out.method, first_extra, warnings,
-           tuple(out.values))
+           tuple(out.values), tuple(_unit_at(reads[col.key][0], first) for col in given))
     probe = probed.get(key) if probed is not None else None
     light = getattr(spec, "light_probe", None)  # eom: the generated table stands in for it
     if probe is None and light is not None and all(reads[col.key][0][4] == "number"
@@ -364,6 +365,14 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
     if out.extras is not None:
         extra = out.extras(keep) if want_json else "{}"
     return FastBlock(rows[keep], values, dims, head, texts, extra, warnings)
+
+
+def _unit_at(read, row: int):
+    """The unit (JSON) a number or vector column of a block was typed in at ``row``."""
+    _ok, _si, shown, info, kind = read
+    if kind == "number":
+        return shown.unit_json[row] if shown.unit_json else None
+    return info.unit_json if kind == "vector" else None
 
 
 def _joined(parts: list) -> str:

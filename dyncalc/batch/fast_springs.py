@@ -12,6 +12,11 @@ in N/m, bit for bit the one-off (tests/test_batch_spring_elements.py). The one-o
 first element's unit: an element's is SI (N/m, N*m/rad), so a group is taken where its
 first element is an element word or a stiffness typed in SI (or bare).
 
+A column whose cells share one template (the same word, names, units and spacing; only
+the numbers differ: the common file) is split without a pass per cell: the template's fixed
+texts are replaced away and the literals read as JSON at once, the split checked by writing
+the lines back (:func:`_split_fixed`; one regular expression where JSON refuses a literal).
+
 Left to the one-off row by row: shared values (``EI=...`` columns), nested groups, expressions in parentheses, a header unit on a column of
 element words, and every row that warns or is refused (a non-positive or infinite value, an
 element or a result that overflows or underflows).
@@ -24,8 +29,9 @@ import re
 import numpy as np
 
 from .cells import Table
-from .columns import _read_column
+from .columns import _read_column, read_literals
 from .fast import FastBlock, _input_texts, json_head
+from .floats import json_floats
 
 __all__ = ["spring_fast", "ELEMENT_FORMS"]
 
@@ -61,6 +67,14 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     if not table or not columns or any(spec.parameter(col.key) is None for col in columns) \
             or (isinstance(table, Table) and table.numbers() is not None):
         return _command_fast(spec, columns, table, want_json, cache)
+    uniform = _uniform(columns, table)
+    if uniform is not None:  # every row one shape, its values read off each column at once
+        key, parsed = uniform
+        n = table.n if isinstance(table, Table) else len(table[0])
+        block = _group_block(spec, columns, key, np.arange(n),
+                             {col.key: table[col.index] for col in columns}, want_json, cache,
+                             parsed)
+        return [] if block is None else [block]
     cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
     if not any("(" in c for col in columns for c in cells[col.key]):
         return _command_fast(spec, columns, table, want_json, cache)
@@ -80,6 +94,112 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
         if block is not None:
             blocks.append(block)
     return blocks
+
+
+def _uniform(columns, table):
+    """``(shapes, parsed)`` where every cell of each column has its first cell's form: a
+    plain number (``parsed[key]``: ``(values, cells)``) or one element word whose cells differ
+    only in their number literals (``parsed[key]``: ``{parameter: (literals, values or None,
+    unit, texts around the literal)}``); ``None`` otherwise (then rows are grouped by shape)."""
+    from .columns import _plain_floats
+
+    shapes, parsed = [], {}
+    for col in columns:
+        column = table[col.index]
+        first = column[0] if len(column) else ""
+        if "(" not in first:
+            values = _plain_floats(column)
+            if values is None:
+                return None
+            shapes.append("leaf")
+            parsed[col.key] = (values, column)
+            continue
+        read = _element_column(column, first)
+        if read is None:
+            return None
+        shapes.append(read[0])
+        parsed[col.key] = read[1]
+    return tuple(shapes), parsed
+
+
+def _element_column(column: list[str], first: str):
+    """``(shape, {parameter: (literals, values or None, unit, (text before, text after the
+    literal))})`` of a column of element words whose every cell is ``first`` but for its
+    number literals (split off as :func:`~dyncalc.batch.columns._read_column` splits a value
+    from its unit), or ``None``.
+
+    Example: ``["axial(l=2 m, EA=3 N)", "axial(l=5 m, EA=1e6 N)"]`` gives the shape
+    ``("axial", ("l", "EA"))``, ``l``'s literals ``["2", "5"]`` in ``m``, ``EA``'s
+    ``["3", "1e6"]`` in ``N``."""
+    from .columns import _CELL_LINE_RE, _LITERAL_CELL
+
+    shape = _shape(_VALUE_RE.sub("=", first)) if first == first.strip() else None
+    if not isinstance(shape, tuple):
+        return None
+    fixed, pattern, units, at = [], ["^"], [], 0
+    for m in _VALUE_RE.finditer(first):
+        value = m.group(1)
+        lead = value[:len(value) - len(value.lstrip(" \t"))]
+        split = _CELL_LINE_RE.match(value.strip())
+        if split is None or value.strip() != value[len(lead):].rstrip():
+            return None
+        rest = value[len(lead) + len(split.group(1)):]
+        fixed.append(first[at:m.start(1)] + lead)
+        fixed.append(rest)
+        pattern += [re.escape(fixed[-2]), f"({_LITERAL_CELL})", re.escape(rest)]
+        units.append((split.group(2).rstrip(" \t"), (lead, rest)))
+        at = m.end(1)
+    pattern += [re.escape(first[at:]), "$"]
+    texts = [fixed[0], *(fixed[i] + fixed[i + 1] for i in range(1, len(fixed) - 1, 2)),
+             fixed[-1] + first[at:]]
+    n, k = len(column), len(units)
+    joined = "\n".join(column)
+    if joined.count("\n") != n - 1:
+        return None
+    found = _split_fixed(joined, n, texts)
+    values = None
+    if found is not None:
+        values = json_floats(",".join(found), n * k, found)
+        if values is None:
+            found = None
+    if found is None:  # (a literal JSON does not read: ``+5``, ``.5``)
+        found = re.compile("".join(pattern), re.M).findall(joined)
+        if len(found) != n:
+            return None
+        found = [x for row in found for x in row] if k > 1 else found
+    literals = [found[j::k] for j in range(k)] if k > 1 else [found]
+    values = [None] * k if values is None else list(values.reshape(n, k).T)
+    return shape, {name: (lits, vals, unit, around) for name, lits, vals, (unit, around)
+                   in zip(shape[1], literals, values, units)}
+
+
+#: Characters that may continue a number literal: a fixed text starting with one could
+#: take part of the literal (the reader splits a literal off greedily).
+_CONTINUES = frozenset("0123456789.eE")
+
+
+def _split_fixed(joined: str, n: int, texts: list[str]) -> list[str] | None:
+    """The values of ``n`` lines (``joined``) that each read ``texts[0] v1 texts[1] v2 ...
+    texts[k]``, row after row (``[v1, v2, ..., vk, v1, ...]``), where every value is a JSON
+    number (the caller checks), split by plain text replacement and checked by writing the
+    lines back; ``None`` otherwise."""
+    k = len(texts) - 1
+    if any(not t or t[0] in _CONTINUES for t in texts[1:]) or "\n" in "".join(texts):
+        return None
+    text = ("\n" + joined + "\n").replace("\n" + texts[0], "\n").replace(texts[-1] + "\n", "\n")
+    for t in texts[1:-1]:
+        text = text.replace(t, "\n")
+    found = text[1:-1].split("\n")
+    if len(found) != n * k or " " in text or "\t" in text or "\r" in text:
+        return None
+    width = 2 * k + 1
+    parts: list = [None] * (n * width)
+    parts[0::width] = [texts[0]] * n
+    for j in range(k):
+        parts[2 * j + 1::width] = found[j::k]
+        parts[2 * j + 2::width] = [texts[j + 1]] * n
+    parts[width - 1::width] = [texts[-1] + "\n"] * n
+    return found if "".join(parts) == joined + "\n" else None
 
 
 def _shape_of(cell: str, known: dict):
@@ -124,15 +244,20 @@ def _shape(skeleton: str):
 
 def _texts(cells: list[str], names: tuple) -> dict[str, list[str]] | None:
     """The parameter texts of element cells of one shape (``names`` in the cells' order), by
-    name, read off the whole column in one pass; ``None`` if the values do not line up."""
+    name, read off the whole column in one pass (as typed: blanks kept, as the one-off's
+    input entries show them); ``None`` if the values do not line up."""
     values = _VALUE_RE.findall("\n".join(cells))
     if len(values) != len(cells) * len(names):
         return None
     k = len(names)
-    return {name: [v.strip() for v in values[j::k]] for j, name in enumerate(names)}
+    return {name: values[j::k] for j, name in enumerate(names)}
 
 
-def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock | None:
+def _group_block(spec, columns, key, rows, cells, want_json, cache,
+                 parsed=None) -> FastBlock | None:
+    """The block of ``rows`` (one shape a column: ``key``), or ``None``; ``parsed``: the
+    columns read by :func:`_uniform` (``rows`` is then every row of the chunk, ``cells``
+    the columns as they are, not stripped)."""
     from ..commands.springs import ELEMENTS
     from ..physics.columns import Columns
     from ..physics.numerics_arrays import monomial_array
@@ -153,9 +278,14 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
     row_list = rows.tolist()
     for index, (col, shape) in enumerate(zip(given, shapes), 1):
         name = f"k{index}"
-        column = [cells[col.key][i] for i in row_list]
-        if shape == "leaf":
+        if parsed is not None and shape == "leaf":
+            values, column = parsed[col.key]
+            read = _read_column(column, col.unit, _Param(name, dim), spec.strict, cache,
+                                values)
+        elif shape == "leaf":
+            column = [cells[col.key][i] for i in row_list]
             read = _read_column(column, col.unit, _Param(name, dim), spec.strict, cache)
+        if shape == "leaf":
             good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
             if dim is TORSIONAL_STIFFNESS:  # a bare number is N/m to the one-off: linear
                 good &= np.array([not assumed for _u, assumed in read.unit_json], dtype=bool)
@@ -163,23 +293,31 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
                 good &= np.array([json.loads(u) == dim.si for u, _a in read.unit_json],
                                  dtype=bool) if m else good
             stiffness.append(read.si)
-            inputs.append((name, read, column, col.unit, False, None))
+            inputs.append((name, read, column, col.unit, parsed is not None, None))
             continue
         if col.unit:
             return None
         kind, names = shape
         coefficient, lead, alternatives, required = ELEMENT_FORMS[kind]
         dims = ELEMENTS[kind].params
-        texts = _texts(column, names)
-        if texts is None:
+        texts = _texts([cells[col.key][i] for i in row_list], names) if parsed is None \
+            else None
+        if parsed is None and texts is None:
             return None
         si = {}
         for pname in names:
-            read = _read_column(texts[pname], "", _Param(pname, dims[pname]), spec.strict,
-                                cache)
+            if parsed is None:
+                read = _read_column([v.strip() for v in texts[pname]], "",
+                                    _Param(pname, dims[pname]), spec.strict, cache)
+                shown = (texts[pname], "as typed")
+            else:
+                literals, values, unit, around = parsed[col.key][pname]
+                read = read_literals(literals, unit, _Param(pname, dims[pname]), spec.strict,
+                                     cache, values)
+                shown = (literals, around)
             good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
             si[pname] = np.where(good, read.si, 1.0)
-            inputs.append((f"{name}.{pname}", read, texts[pname], "", False, None))
+            inputs.append((f"{name}.{pname}", read, shown[0], "", shown[1], None))
         chosen = [g for g in alternatives if g[0][0] in names]
         factors = [(si[p], power) for p, power in (*lead, *(chosen[0] if chosen else ()))]
         factors += [(si[p], power) for p, power in required]
@@ -199,10 +337,16 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
     values = {"k_eq": k_eq, **results}
     first = int(np.argmax(good))
     columns_out = Columns(values, exact=good, model=how)
-    probe = _probe(spec, given, cells, int(rows[first]), columns_out,
-                   {name: array[first] for name, array in values.items()})
-    if probe is None:
-        return None
+    # one probe per kind of block a run (the shapes, the units typed), not one per chunk
+    kind = ("elements", key, tuple(read.unit_json[first] for _n, read, *_r in inputs))
+    probed = getattr(spec, "probed", {})
+    if kind not in probed:
+        if parsed is not None:  # the first good row's cells, as the one-off reads them
+            cells = {col.key: {first: cells[col.key][first].strip()} for col in given}
+        if _probe(spec, given, cells, int(rows[first]), columns_out,
+                  {name: array[first] for name, array in values.items()}) is None:
+            return None
+        probed[kind] = True
     keep = np.flatnonzero(good)
     head = texts_out = None
     if want_json:
@@ -210,3 +354,4 @@ def _group_block(spec, columns, key, rows, cells, want_json, cache) -> FastBlock
         texts_out = _input_texts(inputs, keep, {})
     return FastBlock(rows[keep], {name: array[keep] for name, array in values.items()},
                      {name: dim for name in values}, head, texts_out, "{}")
+

@@ -12,7 +12,10 @@ from .header import with_header_unit
 def input_parts(inputs, keep: np.ndarray, words: dict) -> list:
     """The parts of each kept row's ``inputs`` object text (without the braces), in the
     scene's parameter order. ``inputs`` holds ``(name, read, cells, header unit, plain
-    column, word entry)`` of each parameter (:func:`dyncalc.batch.fast._scene_block`)."""
+    column, word entry)`` of each parameter (:func:`dyncalc.batch.fast._scene_block`); for
+    "plain column", ``(before, after)``: the cells are number literals, each shown between
+    these texts (:func:`dyncalc.batch.fast_springs._uniform`), ``"as typed"``: the cells
+    shown as they are (no header unit, blanks kept)."""
     parts: list = []
     n = len(keep)
     for name, read, column, header_unit, plain_column, entry in inputs:
@@ -35,7 +38,12 @@ def _number_parts(name, read, column, header_unit, plain_column, keep, n) -> lis
     unit_json = read.unit_json if every else [read.unit_json[i] for i in keep.tolist()]
     typed = column if every else [column[i] for i in keep.tolist()]
     prefix = json.dumps(name) + ': {"value": '
-    if plain_column:  # plain numbers: the text is the cell and the header's unit
+    if isinstance(plain_column, tuple):  # number literals, each between these texts
+        before, after = (json.dumps(t)[1:-1] for t in plain_column)
+        text = ['"' + before, typed, after + '"']
+    elif plain_column == "as typed":  # the cells' texts as they are
+        text = [[json.dumps(c) for c in typed]]
+    elif plain_column:  # plain numbers: the text is the cell and the header's unit
         suffix = json.dumps(" " + header_unit)[1:-1] if header_unit else ""
         joined = "".join(typed)
         if " " in joined or "\t" in joined:

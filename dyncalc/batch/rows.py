@@ -125,6 +125,7 @@ class SpringRows(RowSpec):
 
             # plain stiffnesses (fast_commands) and element words (fast_springs)
             self.adapter, self.fast = record.columns, spring_fast
+            self.probed = {}  # one probe per kind of block a run, not one per chunk
 
     def parameter(self, key):
         """An element column holds plain stiffnesses on the vectorised path (a torsional
