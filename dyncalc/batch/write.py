@@ -129,13 +129,13 @@ class _Writer:
                 elif kind == "ok":
                     texts[i] = self._result_text(lines[i], chunk.row(i), item)
                     if not self.as_json and item.warnings:
-                        messages += [(i, f"warning: line {lines[i]}: {w}")
+                        messages += [(i, f"warning: line {lines[i]}{_tail(w)}")
                                      for w in item.warnings]
                 elif kind == "error":
                     raise _Failure(item)
             except _Failure as exc:
                 texts[i] = None
-                messages.append((i, f"Error: line {lines[i]}: {exc}"))
+                messages.append((i, one_line(f"Error: line {lines[i]}: {exc}")))
                 failed = True
                 if self.on_error == "stop":
                     stopped = True
@@ -147,15 +147,15 @@ class _Writer:
         if shown:
             self.out.write("\n".join(shown) + "\n")
         if not self.as_json:  # the warnings of the vectorised rows written
-            messages += [(i, f"warning: line {lines[i]}: {w}") for block in blocks
-                         if block.warnings for i in block.rows.tolist()
-                         if i < upto and texts[i] is not None
-                         and not isinstance(texts[i], _Failure) for w in block.warnings]
-        if messages:
+            for block in blocks:
+                tails = [_tail(w) for w in block.warnings]
+                messages += [(i, f"warning: line {lines[i]}{tail}")
+                             for i in block.rows.tolist()
+                             if i < upto and texts[i] is not None
+                             and not isinstance(texts[i], _Failure) for tail in tails]
+        if messages:  # each message already one line (errors.one_line)
             self.out.flush()
-            self.err.write("\n".join(one_line(m) for _i, m in sorted(messages,
-                                                                      key=lambda p: p[0]))
-                           + "\n")
+            self.err.write("\n".join(m for _i, m in sorted(messages, key=_first)) + "\n")
             self.err.flush()
         return failed, stopped
 
@@ -163,11 +163,17 @@ class _Writer:
         """The CSV run's ``warning:`` lines of vectorised blocks (the same texts each row)."""
         if self.as_json or not any(block.warnings for block in blocks):
             return
-        rows = sorted((i, w) for block in blocks for i in block.rows.tolist()
-                      for w in block.warnings)
+        if len(blocks) == 1 and len(blocks[0].rows) == len(lines):
+            # one block over the whole chunk: every row has the same warnings, so each is made
+            # one line once and the line numbers are joined around it in one call (one_line of
+            # the whole message a row was half of a 10^6-row undamped forced-response run)
+            text = _same_warnings(lines, sorted(blocks[0].warnings))
+        else:
+            rows = sorted((i, w) for block in blocks for i in block.rows.tolist()
+                          for w in block.warnings)
+            text = "\n".join(one_line(f"warning: line {lines[i]}: {w}") for i, w in rows)
         self.out.flush()
-        self.err.write("\n".join(one_line(f"warning: line {lines[i]}: {w}") for i, w in rows)
-                       + "\n")
+        self.err.write(text + "\n")
         self.err.flush()
 
     def _fast_texts(self, block, chunk, texts) -> None:
@@ -333,3 +339,30 @@ def _component(column):
     if len(bits) and (bits == bits[0]).all():
         return repr(float(column[0]))
     return column
+
+
+def _same_warnings(lines, warnings: list[str]) -> str:
+    """The ``warning:`` lines of rows that all carry ``warnings`` (already in order), without
+    the trailing line break: ``one_line`` of each whole message, made once a warning.
+
+    ``one_line("warning: line 7: " + w)`` is ``"warning: line 7: " + one_line(w)`` (a line
+    number holds no blank or character to escape), or ``"warning: line 7:"`` when ``w`` is
+    blank."""
+    tails = list(map(_tail, warnings))
+    numbers = list(map(str, lines))
+    if len(tails) == 1:
+        tail = tails[0]
+        return "warning: line " + (tail + "\nwarning: line ").join(numbers) + tail
+    return "\n".join(f"warning: line {number}{tail}" for number in numbers for tail in tails)
+
+
+def _tail(warning: str) -> str:
+    """What follows ``warning: line N`` for ``warning``, so that the whole message is
+    ``one_line`` of ``f"warning: line {N}: {warning}"``: a line number holds no blank or
+    character to escape, so only the warning needs making one line (once, not once a row)."""
+    text = one_line(warning)
+    return ": " + text if text else ":"
+
+
+def _first(pair: tuple) -> Any:
+    return pair[0]
