@@ -352,9 +352,12 @@ def _pending(fd: int) -> int:
 def test_ctrl_c_during_a_batch_is_status_130_without_traceback(warm_cache, command):
     """A batch read from a slow pipe, interrupted once it has read the first rows."""
     header = b"k [N/m],m [kg]\n100,2\n" if command == "natural-frequency" else b"k1,k2\n1,2\n"
+    # Ctrl-C's default restored in the child: a suite started in the background by a shell
+    # without job control inherits SIGINT ignored, and then so would the program (rightly)
     proc = subprocess.Popen([str(DYNCALC), command, "--batch", "-"], stdin=subprocess.PIPE,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            env=env_for(warm_cache))
+                            env=env_for(warm_cache),
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     proc.stdin.write(header)
     proc.stdin.flush()
     deadline = time.monotonic() + 30
