@@ -137,9 +137,9 @@ def test_bracketed_numbers_and_method():
 
 
 def test_rows_the_columns_cannot_prove_take_the_one_off(monkeypatch):
-    """No root (alpha of the wrong sign: the one-off's message with the range it takes), a
-    flat result (omega at t = 0) and a power law (J_A tiny beside m r^2? no: the probes) go
-    row by row; the good row between them is solved on columns."""
+    """No root (alpha of the wrong sign: the one-off's message with the range it takes) and
+    a flat result (omega at t = 0 whatever M0) go row by row with the one-off's messages; the
+    good row after each is solved on columns."""
     solved = _bracketed_rows(monkeypatch)
     text = ("m1,m2,r1,r2,J_A,alpha\n20,15,0.2,0.4,?,-2\n20,15,0.2,0.4,?,3\n")
     fast = _fast_and_generic(monkeypatch, ["rigid-body", "--scene", "drum-two-blocks",
