@@ -22,9 +22,9 @@ def alpha_of(M0, m, l):
 
 
 def step_points(a, b, j):
-    """The one-off's refinement points j of [a, b] (a b > 0: geometric)."""
+    """The one-off's refinement points j of [a, b] (a b > 0: geometric; the 50th is b)."""
     power = elementwise(lambda r, k: r ** k, b / a, j / 50)
-    return np.where(a * b > 0, a * power, a + (b - a) * j / 50)
+    return np.where(j == 50, b, np.where(a * b > 0, a * power, a + (b - a) * j / 50))
 
 
 np.seterr(all="ignore")   # b / a on [0, 5e-324]: the linear points are taken there
