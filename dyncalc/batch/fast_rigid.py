@@ -3,10 +3,12 @@ the scene's column adapter (:func:`~dyncalc.batch.fast_commands._command_fast`),
 inverse rows (a result column such as ``alpha`` and one parameter left out or given as ``?``,
 as ``alpha=3rad/s^2 J_A=?``) whose result is a power of the unknown, solved in closed form on
 columns (:func:`~dyncalc.scenes.inverse_columns.closed_form_columns`) through the scene's
-column kernel (:mod:`dyncalc.physics.kinetics_columns`), the one-off's steps bit for bit. The
-first row of each block is also run by the one-off (a probe) and must agree to the bit
-(values, order, model, method, ``extra``). Every other row (a bracketed search, a refusal, a
-warning, a row the kernel cannot certify) runs the one-off."""
+column kernel (:mod:`dyncalc.physics.kinetics_columns`), or, where the result is monotone in
+the unknown, by the one-off's bracketed search on columns
+(:func:`~dyncalc.scenes.inverse_monotone.monotone_columns`), the one-off's steps bit for bit.
+The first row of each block is also run by the one-off (a probe) and must agree to the bit
+(values, order, model, method, ``extra``). Every other row (another bracketed search, a
+refusal, a warning, a row the kernel cannot certify) runs the one-off."""
 from __future__ import annotations
 
 import json
