@@ -13,7 +13,7 @@ Here the result is monotone in the unknown by construction (:data:`MONOTONE`: an
 rational rounded once, or float operations each monotone, in a quantity the unknown enters
 linearly or as one term of a positive denominator), so two neighbouring samples with
 ``y - goal`` of opposite signs, both nonzero, fix every other sample's sign: the one-off's
-bracket is found by bisecting the grid and then its refinement (``a`` guess on the kernel's
+bracket is found by bisecting the grid and then its refinement (a guess from the kernel's
 values), and proven by the kernel's exact values at the bracket's two ends alone. No turning
 point exists, so no extremum is added; an edge where the scene stops answering (an overflow at
 the grid's ends) adds samples only inside its own interval, never inside the bracket. A row is
@@ -75,7 +75,8 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
     n = len(goal)
 
     def y(x, rows):
-        """``(y at x, exact)`` of the rows ``rows``; NaN where the kernel has no value."""
+        """``(y at x, exact, the kernel's Columns)`` of the rows ``rows``; NaN where the
+        kernel has no value."""
         args = {k: (v[rows] if isinstance(v, np.ndarray) else v) for k, v in arguments.items()}
         args[unknown.name] = np.asarray(x, dtype=float)
         ok = np.ones(len(rows), dtype=bool)
@@ -91,7 +92,7 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
     every = np.arange(n)
     with np.errstate(all="ignore"):
         exact = _no_power_law(y, unknown, every, n)
-        rising, exact = _direction(y, xs, every, goal, exact)
+        rising, exact = _direction(y, xs, every, exact)
         a, b, exact = _coarse(y, xs, every, goal, rising, exact)
         a, b, exact = _fine(y, a, b, every, goal, rising, exact)
         rows = np.flatnonzero(exact)
@@ -133,7 +134,7 @@ def _no_power_law(y, unknown, every, n):
     return exact & ~power
 
 
-def _direction(y, xs, every, goal, exact):
+def _direction(y, xs, every, exact):
     """``(rising, exact)``: the sense of ``y`` from its values at the first and the last
     finite grid samples (inward from the grid's ends), and the rows whose result is not flat
     over the grid (the one-off's refusal) with a margin."""
