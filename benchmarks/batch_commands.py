@@ -129,6 +129,11 @@ CASES = [
      "m [kg],l [m],M0 [N*m],omega [rad/s]",
      lambda r: [f"{r.uniform(0.5, 20):.6g}", f"{r.uniform(0.1, 2):.6g}",
                 f"{r.uniform(1, 100):.6g}", f"{r.uniform(0.5, 50):.6g}"]),
+    # round 8: a signed unknown by the one-off's bracketed search, on columns
+    ("rigid-body inverse", ["rigid-body", "--scene", "angled-bar-on-shaft"],
+     "m [kg],l [m],M0 [N*m],omega [rad/s],alpha [rad/s^2]",
+     lambda r: [f"{r.uniform(0.5, 20):.6g}", f"{r.uniform(0.1, 2):.6g}", "?",
+                f"{r.uniform(0.5, 50):.6g}", f"{r.choice((-1, 1)) * r.uniform(0.1, 100):.6g}"]),
     ("eom pendulum", ["eom", "--scene", "pendulum"], "l [m],phi [rad],phi_dot [rad/s]",
      lambda r: [f"{r.uniform(0.1, 5):.6g}", f"{r.uniform(-3, 3):.6g}",
                 f"{r.uniform(-2, 2):.6g}"]),

@@ -64,6 +64,8 @@ LIMITS = {
     "eom coupled-blocks": [str(LIMIT / "eom_coupled.py")],
     # round 7: inverse rows on columns (issue 17's brief, rigidinv)
     "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
+    # round 8: a bracketed inverse on columns (issue 17's brief, rigidbracket)
+    "rigid-body inverse": [str(LIMIT / "rigid_body_inverse.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 

@@ -3,10 +3,12 @@ the scene's column adapter (:func:`~dyncalc.batch.fast_commands._command_fast`),
 inverse rows (a result column such as ``alpha`` and one parameter left out or given as ``?``,
 as ``alpha=3rad/s^2 J_A=?``) whose result is a power of the unknown, solved in closed form on
 columns (:func:`~dyncalc.scenes.inverse_columns.closed_form_columns`) through the scene's
-column kernel (:mod:`dyncalc.physics.kinetics_columns`), the one-off's steps bit for bit. The
-first row of each block is also run by the one-off (a probe) and must agree to the bit
-(values, order, model, method, ``extra``). Every other row (a bracketed search, a refusal, a
-warning, a row the kernel cannot certify) runs the one-off."""
+column kernel (:mod:`dyncalc.physics.kinetics_columns`), or, where the result is monotone in
+the unknown, by the one-off's bracketed search on columns
+(:func:`~dyncalc.scenes.inverse_monotone.monotone_columns`), the one-off's steps bit for bit.
+The first row of each block is also run by the one-off (a probe) and must agree to the bit
+(values, order, model, method, ``extra``). Every other row (another bracketed search, a
+refusal, a warning, a row the kernel cannot certify) runs the one-off."""
 from __future__ import annotations
 
 import json
@@ -107,6 +109,7 @@ def _solved(spec, view, scene, given, unknown, target, asked, rows, cells, want_
             cache) -> list[FastBlock]:
     from ..commands.rigid_columns import _defaults, _kernel, _words
     from ..scenes.inverse_columns import closed_form_columns
+    from ..scenes.inverse_monotone import DETAIL, monotone_columns
 
     kernel = _kernel(scene)
     params = [c for c in given if c is not target]
@@ -140,31 +143,48 @@ def _solved(spec, view, scene, given, unknown, target, asked, rows, cells, want_
     if not good.any():
         return []
     arguments = {k: np.where(good, v, 1.0) for k, v in arguments.items()}
+    goal = np.where(good, goal, 1.0)
     with np.errstate(all="ignore"):
-        solved = closed_form_columns(scene, kernel, unknown, target.key, arguments,
-                                     np.where(good, goal, 1.0), {})
-    if solved is None:
-        return []
-    exact = good & solved.exact
-    blocks = []
-    for exponent in sorted(set(solved.exponent[exact].tolist())):
-        keep = np.flatnonzero(exact & (solved.exponent == exponent))
-        values = {unknown.name: solved.x[keep]}
-        values.update((name, array[keep]) for name, array in solved.out.values.items())
-        extra = {"inverse": {"unknown": unknown.name, "method": "closed-form",
-                             "detail": f"{target.key} is proportional to {unknown.name}^"
-                                       f"({exponent}): inverted exactly"}}
-        probe = _probe(spec, given, asked, cells, int(rows[keep[0]]),
-                       {name: array[0] for name, array in values.items()}, extra, solved.out)
-        if probe is None:
-            continue
-        head = texts = None
-        if want_json:
-            head = json_head("rigid-body", probe.scene, probe.model, probe.method)
-            texts = _input_texts(_inputs(view, given, reads, probe), keep, {})
-        dims = {name: entry.dim for name, entry in probe.results.items()}
-        blocks.append(FastBlock(rows[keep], values, dims, head, texts, json.dumps(extra)))
+        solved = closed_form_columns(scene, kernel, unknown, target.key, arguments, goal, {})
+    blocks, taken = [], np.zeros(m, dtype=bool)
+    block = (spec, view, given, asked, unknown, reads, rows, cells, want_json)
+    if solved is not None:
+        taken = good & solved.exact
+        for exponent in sorted(set(solved.exponent[taken].tolist())):
+            keep = np.flatnonzero(taken & (solved.exponent == exponent))
+            detail = f"{target.key} is proportional to {unknown.name}^({exponent}): " \
+                     "inverted exactly"
+            blocks += _block(*block, solved, keep, "closed-form", detail)
+    rest = np.flatnonzero(good & ~taken)
+    if len(rest):
+        bracketed = monotone_columns(scene, kernel, unknown, target.key,
+                                     {k: v[rest] for k, v in arguments.items()}, goal[rest])
+        if bracketed is not None and bracketed.exact.any():
+            keep = np.flatnonzero(bracketed.exact)
+            blocks += _block(*block, bracketed, keep, "bracketed-root",
+                             DETAIL.format(unknown.name), at=rest)
     return blocks
+
+
+def _block(spec, view, given, asked, unknown, reads, rows, cells, want_json, solved, keep,
+           method: str, detail: str, at=None) -> list[FastBlock]:
+    """The block of the rows ``keep`` of ``solved`` (rows ``at[keep]`` of the chunk's
+    ``rows``, ``at`` all of them if ``None``), solved by ``method``; none where the one-off's
+    probe of its first row differs."""
+    where = keep if at is None else at[keep]
+    values = {unknown.name: solved.x[keep]}
+    values.update((name, array[keep]) for name, array in solved.out.values.items())
+    extra = {"inverse": {"unknown": unknown.name, "method": method, "detail": detail}}
+    probe = _probe(spec, given, asked, cells, int(rows[where[0]]),
+                   {name: array[0] for name, array in values.items()}, extra, solved.out)
+    if probe is None:
+        return []
+    head = texts = None
+    if want_json:
+        head = json_head("rigid-body", probe.scene, probe.model, probe.method)
+        texts = _input_texts(_inputs(view, given, reads, probe), where, {})
+    dims = {name: entry.dim for name, entry in probe.results.items()}
+    return [FastBlock(rows[where], values, dims, head, texts, json.dumps(extra))]
 
 
 def _probe(spec, given, asked, cells, row: int, values: dict, extra: dict, out):
