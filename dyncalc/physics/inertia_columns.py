@@ -4,8 +4,9 @@
 
 .. math:: J_C = J_O = \\operatorname{diag}(J_{xx}, J_{yy}, J_{zz}), \\qquad r_c = 0,
 
-the principal moments ``J_1 <= J_2 <= J_3`` and axes from :func:`numpy.linalg.eigh` on the
-stack (one LAPACK call per matrix, as the one-off's), the axes chosen by the rule of
+the principal moments ``J_1 <= J_2 <= J_3`` and axes the sorted diagonal (what the one-off's
+:func:`numpy.linalg.eigh` gives a diagonal tensor, bit for bit, :func:`_diagonal_eigh`; the
+stack's ``eigh`` for rows LAPACK would scale), the axes chosen by the rule of
 :func:`~dyncalc.physics.inertia_tensor.principal`: a world axis, and where moments are equal
 (to ``DEGENERATE`` of the trace) the world axes of that plane in the order x, y, z. A row is
 exact where every value is finite and the eigenvectors ``eigh`` gives are signed world axes
