@@ -137,6 +137,22 @@ def test_lines_of_texts_alone_and_of_tiny_floats():
         "x=1e-05;", "x=0.5;", "x=inf;"]
 
 
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.sampled_from([0.0, -0.0, 1.0, 1.5, float("nan"), 1e-05, -2.0]),
+                min_size=1, max_size=8), st.integers(0, 7))
+def test_equal_float_columns_written_once_are_each_their_own_reprs(values, flip):
+    """Columns equal bit for bit share their texts (written once); a column equal but for one
+    row (``-0.0`` for ``0.0``, another value) gets its own, so each line is the ``repr``s."""
+    a = np.array(values)
+    b = a.copy()
+    i = flip % len(values)
+    b[i] = -b[i] if b[i] == 0.0 else b[i] + 1.0
+    parts = [a, ",", a.copy(), ",", b, ",", a[::-1].copy()]
+    expected = [f"{x!r},{x!r},{y!r},{z!r}"
+                for x, y, z in zip(a.tolist(), b.tolist(), a[::-1].tolist())]
+    assert assemble.lines(parts, len(values)) == expected
+
 # --- simple quoted cells read a block at a time --------------------------------------------------
 
 QUOTED = ['"0,0,1"', '"a b"', '""', '"', ",", "\n", "\r\n", "1", " ", '"x\ny"', "\0", "x"]

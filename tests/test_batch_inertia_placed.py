@@ -152,10 +152,15 @@ def test_rows_the_kernel_cannot_take_keep_the_one_off_messages(tmp_path):
 
 
 @pytest.mark.filterwarnings("ignore::RuntimeWarning")
-def test_the_kernel_is_the_one_off_on_stacked_random_composites():
-    """The kernel alone against inertia_tensor.placed/composite/principal row by row."""
+@pytest.mark.parametrize("slice_rows", [4096, 64])
+def test_the_kernel_is_the_one_off_on_stacked_random_composites(monkeypatch, slice_rows):
+    """The kernel alone against inertia_tensor.placed/composite/principal row by row, all
+    400 rows at once and 64 at a time (its ``SLICE``: the last slice shorter)."""
+    from dyncalc.physics import inertia_placed_columns
     from dyncalc.physics.inertia_placed_columns import placed_composite
     from dyncalc.physics.inertia_tensor import body_frame, composite, placed, principal
+
+    monkeypatch.setattr(inertia_placed_columns, "SLICE", slice_rows)
 
     rng = np.random.default_rng(7)
     n = 400

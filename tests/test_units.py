@@ -868,3 +868,18 @@ def test_same_results_under_python_O():
     first = outs[0].splitlines()[0]
     assert ulps_off(float(first), 1500 * LBF_PER_IN) <= 4
     assert outs[0].splitlines()[1] == "2000.0"
+
+
+@pytest.mark.parametrize("typed, target, same", [
+    ("kg", "kg", True), ("kilogram", "kg", True), ("m", "m", True), ("kg/m**3", "kg/m**3", True),
+    ("g", "kg", False), ("mm", "m", False), ("rpm", "rad/s", False), ("N/m", "kg/s**2", False)])
+def test_same_units_is_where_pint_hands_back_the_magnitude(typed, target, same):
+    """``same_units`` (batch skips the conversion of a column there) is true exactly where
+    pint's conversion returns the array itself (``N/m`` to ``kg/s**2``: a new array)."""
+    from dyncalc.units import registry, same_units
+
+    ureg = registry()
+    values = np.array([0.1, 3.0, 7.25, 1e-300])
+    converted = ureg.Quantity(values, ureg.parse_units(typed)).to(target).magnitude
+    assert same_units(ureg.parse_units(typed), target) is same
+    assert (converted is values) is same

@@ -30,11 +30,13 @@ def lines(parts: list, n: int, joined: bool = False):
     made): three times faster than joining each line, then the lines."""
     merged = _merged(parts + ["\n"] if joined else parts)
     columns: list = []
+    written: list = []  # (float column, its texts): a column equal to one written is not again
     for part in merged:
         if isinstance(part, str):
             columns.append(repeat(part))
         elif isinstance(part, np.ndarray):
-            columns.append(int_texts(part) if part.dtype.kind == "i" else reprs(part))
+            columns.append(int_texts(part) if part.dtype.kind == "i" else
+                           _float_texts(part, written))
         else:
             columns.append(part)
     if all(isinstance(c, repeat) for c in columns):  # texts only: every line the same
@@ -63,6 +65,20 @@ def write_lines(out, parts: list, n: int) -> None:
         piece = parts if (start, stop) == (0, n) else [
             p if isinstance(p, str) else p[start:stop] for p in parts]
         out.write(lines(piece, stop - start, joined=True))
+
+
+def _float_texts(column: np.ndarray, written: list) -> list[str]:
+    """``repr`` of each float of ``column``, or the texts of a column of ``written`` equal to
+    it bit for bit (``inertia``'s moments appear in ``J_O``, ``J_C`` and ``J_1..J_3``: ten
+    columns of three distinct ones a disk); ``written`` gets the column's texts."""
+    bits = np.ascontiguousarray(column, dtype=np.float64).view(np.int64)
+    for other, texts in written:
+        if len(other) == len(bits) and (not len(bits) or other[0] == bits[0]) \
+                and np.array_equal(other, bits):
+            return texts
+    texts = reprs(column)
+    written.append((bits, texts))
+    return texts
 
 
 def _merged(parts: list) -> list:

@@ -55,14 +55,14 @@ class _UnitInfo:
     """What reading ``X unit`` gives for every plain number ``X``, found once by reading
     ``1 unit`` the one-off way: the pint unit, the SI unit, and how the input entry shows it."""
 
-    __slots__ = ("units", "target", "typed", "unit_json", "back")
+    __slots__ = ("units", "target", "typed", "unit_json", "back", "same")
 
 
 def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
     key = ("unit", unit, dim, strict)
     if key in cache:
         return cache[key]
-    from ..units import parse_quantity
+    from ..units import parse_quantity, same_units
 
     info = None
     if not unit or _SIMPLE_UNIT_RE.fullmatch(unit):
@@ -86,6 +86,7 @@ def _unit_info(unit: str, dim, strict: bool, cache: dict) -> _UnitInfo | None:
             if rate:
                 info.units, info.target, info.back = rate
             info.typed = bool(sample.unit_text)
+            info.same = same_units(info.units, info.target)
             info.unit_json = (json.dumps(sample.unit_text or dim.si),
                               ', "assumed_si": true' if sample.assumed_si else "")
     cache[key] = info
@@ -243,9 +244,12 @@ def _converted(out: _ColumnValues, groups: dict, param, strict: bool,
         for j in np.flatnonzero(values == 0.0):  # ... and so is one that underflows to zero
             if re.search(r"[1-9]", re.split(r"[eE]", literals[j])[0]):
                 good[j] = False
-        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
-            converted = np.asarray(ureg.Quantity(values, info.units).to(info.target).magnitude,
-                                   dtype=float)
+        if info.same:  # what pint's conversion gives: the values themselves
+            converted = np.asarray(values, dtype=float)
+        else:
+            with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+                converted = np.asarray(
+                    ureg.Quantity(values, info.units).to(info.target).magnitude, dtype=float)
         good &= np.isfinite(converted)
         if param.constraint == "positive":
             good &= converted > 0

@@ -224,6 +224,30 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
+    # a template probed once (its first chunk's first row) is not probed again: the probe
+    # gives what every row of it shares (method, dimensions, the axis entry)
+    key = ("inertia-probed", axis, want_json, out.model,
+           tuple((column.key, kind, keys, tuple(slots), sign)
+                 for column, (kind, keys, slots, sign), _l in parts))
+    if key not in cache:
+        found = _probed(spec, parts, rows, body_cells, bodies, axis, want_json, out, first,
+                        reads)
+        if found is None:
+            return None
+        cache[key] = found
+    method, result_dims, tail = cache[key]
+    values = {name: array[keep] for name, array in out.values.items()}
+    head = inputs = None
+    if want_json:
+        head = json_head("inertia", None, out.model, method)
+        inputs = _entries(reads, keep, None) + ([tail] if tail else [])
+    return FastBlock(rows[keep], values, result_dims, head, inputs)
+
+
+def _probed(spec, parts, rows, body_cells, bodies, axis, want_json, out, first, reads):
+    """``(method, result dimensions, JSON axis entry)`` of a block from the one-off's result
+    of its row ``first`` (:func:`~.inertia_probe._probe`), or ``None`` where that result is
+    not the kernel's to the bit or its input entries not those :func:`_entries` assembles."""
     row = int(rows[first])
     texts = {column.key: body_cells[bodies.index(column)][row] for column, _s, _l in parts}
     labels = {column.key: column.name for column, _s, _l in parts}
@@ -238,13 +262,7 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
         tail = theirs[len(mine):]
         if not theirs.startswith(mine) or (tail and not tail.startswith(', "axis": ')):
             return None
-    values = {name: array[keep] for name, array in out.values.items()}
-    result_dims = {name: entry.dim for name, entry in probe.results.items()}
-    head = inputs = None
-    if want_json:
-        head = json_head("inertia", None, out.model, probe.method)
-        inputs = _entries(reads, keep, None) + ([tail] if tail else [])
-    return FastBlock(rows[keep], values, result_dims, head, inputs)
+    return probe.method, {name: e.dim for name, e in probe.results.items()}, tail
 
 
 def _world_axis(axis: str) -> bool:

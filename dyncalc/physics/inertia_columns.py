@@ -4,8 +4,9 @@
 
 .. math:: J_C = J_O = \\operatorname{diag}(J_{xx}, J_{yy}, J_{zz}), \\qquad r_c = 0,
 
-the principal moments ``J_1 <= J_2 <= J_3`` and axes from :func:`numpy.linalg.eigh` on the
-stack (one LAPACK call per matrix, as the one-off's), the axes chosen by the rule of
+the principal moments ``J_1 <= J_2 <= J_3`` and axes the sorted diagonal (what the one-off's
+:func:`numpy.linalg.eigh` gives a diagonal tensor, bit for bit, :func:`_diagonal_eigh`; the
+stack's ``eigh`` for rows LAPACK would scale), the axes chosen by the rule of
 :func:`~dyncalc.physics.inertia_tensor.principal`: a world axis, and where moments are equal
 (to ``DEGENERATE`` of the trace) the world axes of that plane in the order x, y, z. A row is
 exact where every value is finite and the eigenvectors ``eigh`` gives are signed world axes
@@ -77,15 +78,11 @@ def centred_composite(bodies: list) -> Columns | None:
     exact = finite & np.isfinite(m) & (m > 0.0) & np.isfinite(J).all(axis=(1, 2))
     J[~exact] = np.eye(3)  # rows left to the generic path: any matrix eigh takes
     scale = 1e-9 * scale
+    moments, world, checked, axes_ok = _diagonal_eigh(J)
+    exact &= axes_ok
     if len(bodies) > 1:  # the one-off's checks of a composite (a hole cutting too much)
-        checked = np.linalg.eigvalsh(J)
         exact &= ~(checked[:, 0] < -scale) & ~(checked[:, 0] + checked[:, 1]
                                                < checked[:, 2] - scale)
-    moments, vectors = np.linalg.eigh(J)
-    # eigenvectors that are signed world axes: each column one +-1 and two zeros
-    unit = (np.abs(vectors) == 1.0) | (vectors == 0.0)
-    exact &= unit.all(axis=(1, 2)) & ((np.abs(vectors) == 1.0).sum(axis=1) == 1).all(axis=1)
-    world = np.argmax(np.abs(vectors), axis=1)  # (n, 3): the world axis of moment k
     tol = DEGENERATE * np.maximum(np.abs(moments).sum(axis=1), np.finfo(float).tiny)
     # the one-off's check of a composite (never fails for one body; kept for the bit)
     exact &= ~(moments[:, 0] + moments[:, 1] < moments[:, 2] - scale)
@@ -109,3 +106,39 @@ def centred_composite(bodies: list) -> Columns | None:
     for k in range(3):
         values[f"axis_{k + 1}"] = np.ascontiguousarray(axes[:, k, :])
     return Columns(values, exact, model=bodies[0][0] if len(bodies) == 1 else "composite")
+
+
+#: The range of the largest element of a matrix that LAPACK's ``dsyevd`` does not scale
+#: (``sqrt(safmin/eps)`` to its inverse, about 1e-146 to 1e146), within a margin.
+_UNSCALED = (1e-140, 1e140)
+
+
+def _diagonal_eigh(J):
+    """``eigh`` of a stack of diagonal matrices: the moments (ascending), the world axis of
+    each (``(n, 3)`` indices), ``eigvalsh``'s values and whether the eigenvectors are signed
+    world axes (else the row is not exact), without LAPACK where its answer is known.
+
+    For a diagonal matrix ``dsyevd`` reduces to the tridiagonal form with no reflection
+    (every Householder ``tau`` is zero), every off-diagonal is zero so each eigenvalue is a
+    diagonal element untouched, and the eigenvectors are the world axes, sorted with the
+    values: ``eigh``'s and ``eigvalsh``'s values are the sorted diagonal, bit for bit, where
+    the matrix is not scaled (its largest element within :data:`_UNSCALED`). Among equal
+    moments the order of the axes may differ from LAPACK's selection sort, but the rule of
+    :func:`~dyncalc.physics.inertia_tensor.principal` sorts the axes of equal moments (see
+    :func:`centred_composite`). Rows outside the range (or not finite) go through ``eigh``."""
+    d = np.ascontiguousarray(np.diagonal(J, axis1=1, axis2=2))
+    world = np.argsort(d, axis=1, kind="stable")
+    moments = np.take_along_axis(d, world, axis=1)
+    size = np.abs(d).max(axis=1)
+    other = np.flatnonzero(~((size >= _UNSCALED[0]) & (size <= _UNSCALED[1])))
+    checked, axes_ok = moments.copy(), np.ones(len(d), dtype=bool)
+    if len(other):
+        values, vectors = np.linalg.eigh(J[other])
+        checked[other] = np.linalg.eigvalsh(J[other])
+        moments[other] = values
+        world[other] = np.argmax(np.abs(vectors), axis=1)
+        # eigenvectors that are signed world axes: each column one +-1 and two zeros
+        unit = (np.abs(vectors) == 1.0) | (vectors == 0.0)
+        axes_ok[other] = unit.all(axis=(1, 2)) & (
+            (np.abs(vectors) == 1.0).sum(axis=1) == 1).all(axis=1)
+    return moments, world, checked, axes_ok

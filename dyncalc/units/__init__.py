@@ -13,11 +13,11 @@ from .dimensions import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_MOME
                          UNBALANCE, VELOCITY, Dim)
 from .grammar import (MAX_DEPTH, MAX_TEXT, Parsed, ReadError, convert, format_quantity,
                       parse_quantity, parse_unit, parse_vector, to_si)
-from .registry import Q_, registry
+from .registry import Q_, registry, same_units
 
 __all__ = [
-    "Dim", "Parsed", "ReadError", "registry", "Q_", "parse_quantity", "parse_vector",
-    "parse_unit", "convert", "to_si", "format_quantity", "MAX_TEXT", "MAX_DEPTH",
+    "Dim", "Parsed", "ReadError", "registry", "same_units", "Q_", "parse_quantity",
+    "parse_vector", "parse_unit", "convert", "to_si", "format_quantity", "MAX_TEXT", "MAX_DEPTH",
     "STIFFNESS", "TORSIONAL_STIFFNESS", "MASS", "INERTIA", "LENGTH", "TIME", "ANGLE",
     "ANGULAR_RATE", "CYCLE_RATE", "DIMENSIONLESS", "ACCELERATION", "VELOCITY", "FORCE",
     "MODULUS", "AREA", "SECOND_MOMENT", "DAMPING", "ANGULAR_ACCELERATION", "DECAY_RATE",

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from typing import Any
 
-__all__ = ["registry", "Q_"]
+__all__ = ["registry", "Q_", "same_units"]
 
 # --------------------------------------------------------------------------------------------
 # The registry
@@ -28,3 +28,16 @@ def registry():
 def Q_(value: Any, unit: Any = ""):
     """A quantity of the program's registry: ``Q_(2, "kg")``."""
     return registry().Quantity(value, unit)
+
+
+def same_units(units: Any, target: Any) -> bool:
+    """Whether pint's conversion from ``units`` to ``target`` hands back the magnitude itself:
+    its ``convert`` returns the value unchanged when both are the same unit container
+    (``kg`` to ``kg``), so such a conversion can be skipped, bit for bit.
+
+    Example: ``same_units(registry().kg, "kg")`` is true, ``same_units(registry().g, "kg")``
+    false."""
+    from pint.util import to_units_container
+
+    ureg = registry()
+    return to_units_container(units, ureg) == to_units_container(target, ureg)
