@@ -17,8 +17,9 @@ the numbers differ: the common file) is split without a pass per cell: the templ
 texts are replaced away and the literals read as JSON at once, the split checked by writing
 the lines back (:func:`_split_fixed`; one regular expression where JSON refuses a literal).
 
-Left to the one-off row by row: shared values (``EI=...`` columns), nested groups, expressions in parentheses, a header unit on a column of
-element words, and every row that warns or is refused (a non-positive or infinite value, an
+Shared values (``EI=...`` columns) and nested groups are
+:mod:`dyncalc.batch.fast_spring_trees`'s. Left to the one-off row by row: expressions in
+parentheses, a header unit on a column of element words, and every row that warns or is refused (a non-positive or infinite value, an
 element or a result that overflows or underflows).
 """
 from __future__ import annotations
@@ -63,9 +64,13 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     """The chunk's rows of plain stiffnesses (:func:`~dyncalc.batch.fast_commands._command_fast`)
     and of element words (here); the others are left to the generic path."""
     from .fast_commands import _command_fast
+    from .fast_spring_trees import tree_fast
 
-    if not table or not columns or any(spec.parameter(col.key) is None for col in columns) \
-            or (isinstance(table, Table) and table.numbers() is not None):
+    if table and columns and any(spec.parameter(col.key) is None for col in columns):
+        n = table.n if isinstance(table, Table) else len(table[0])
+        cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+        return tree_fast(spec, columns, cells, range(n), want_json, cache)
+    if not table or not columns or (isinstance(table, Table) and table.numbers() is not None):
         return _command_fast(spec, columns, table, want_json, cache)
     uniform = _uniform(columns, table)
     if uniform is not None:  # every row one shape, its values read off each column at once
@@ -86,13 +91,19 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     groups: dict[tuple, list[int]] = {}
     for i, key in enumerate(zip(*shapes)):
         groups.setdefault(key, []).append(i)
+    nested = []
     for key, members in groups.items():
-        if not any(isinstance(s, tuple) for s in key) or any(s is None for s in key):
+        if any(s is None for s in key):
+            nested += members
+            continue
+        if not any(isinstance(s, tuple) for s in key):
             continue
         block = _group_block(spec, columns, key, np.asarray(members, dtype=np.intp), cells,
                              want_json, cache)
         if block is not None:
             blocks.append(block)
+    if nested:  # nested groups (and what else parse_cell takes)
+        blocks += tree_fast(spec, columns, cells, sorted(nested), want_json, cache)
     return blocks
 
 
