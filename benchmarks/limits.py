@@ -64,6 +64,9 @@ LIMITS = {
     "eom coupled-blocks": [str(LIMIT / "eom_coupled.py")],
     # round 7: inverse rows on columns (issue 17's brief, rigidinv)
     "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
+    # round 8: a motion in time and a nested spring network (issue 17's brief, springnest)
+    "coriolis over times": [str(LIMIT / "coriolis_time.py")],
+    "spring-series nested group with a shared EI": [str(LIMIT / "spring_nested.py")],
 }
 GOAL_RATIO, GOAL_MB = 2.0, 100
 
