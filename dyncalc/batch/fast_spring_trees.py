@@ -141,34 +141,56 @@ def _resolve(kind: str, own: tuple, shared: tuple):
     return tuple(names), used
 
 
+#: A value in a cell: after ``=`` or ``,`` (or a non-empty one after ``(``) up to the next
+#: ``,`` or ``)``: the texts :func:`parse_cell` gives, in its order, cut out of a whole column.
+_PIECE_RE = re.compile(r"(?<=[,=])[^(),=\n]*(?=[,)])|(?<=\()[^(),=\n]+(?=[,)])")
+
+
+_LEAF, _OTHER = "\x00leaf", "\x00other"  # the skeletons of cells without "("
+
+
+def _skeletons(column: list[str]) -> list[str] | None:
+    """Each cell with its values cut out (:data:`_PIECE_RE`), in one pass over the column."""
+    joined = "\n".join(column)
+    if joined.count("\n") != len(column) - 1:
+        return None
+    return _PIECE_RE.sub("", joined).split("\n")
+
+
 def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) -> list[FastBlock]:
     """The blocks of ``rows`` (indices into ``cells``: column key -> stripped cells) whose
-    cells are networks this module takes (see the module docstring)."""
+    cells are networks this module takes (see the module docstring). Cells of one skeleton
+    (values cut out) have one structure, read off the first (:func:`parse_cell`) and checked
+    to cut its values where :data:`_PIECE_RE` does."""
     elements = [col for col in columns if _ELEMENT_RE.match(col.key)]
     shared = [col for col in columns if not _ELEMENT_RE.match(col.key)]
-    groups: dict[tuple, list[int]] = {}
-    known: dict[str, object] = {}
-    for i in rows:
-        key = []
-        for col in elements:
-            cell = cells[col.key][i]
-            if not cell:
-                key.append(None)
-                continue
-            got = known.get(cell)
-            if got is None:
+    rows = list(rows)
+    structures: dict[str, object] = {"": None, _LEAF: ("leaf",), _OTHER: False}
+    keys = []
+    for col in elements:
+        column = [cells[col.key][i] for i in rows]
+        skeletons = _skeletons(column)
+        if skeletons is None:
+            return []
+        skeletons = [k if "(" in c else "" if not c else _LEAF if
+                     _NUMBER_START_RE.match(c) and "=" not in c else _OTHER
+                     for c, k in zip(column, skeletons)]
+        for cell, skeleton in zip(column, skeletons):
+            if skeleton not in structures:
                 got = parse_cell(cell)
-            if got is None:
-                break
-            if len(known) < 4096:
-                known[cell] = got
-            key.append(got[0])
-        else:
-            present = tuple(bool(cells[col.key][i]) for col in shared)
-            groups.setdefault((tuple(key), present), []).append(i)
+                ok = got is not None and _PIECE_RE.findall(cell) == got[1]
+                structures[skeleton] = got[0] if ok else False
+        keys.append([structures[k] for k in skeletons])
+    present = [[bool(cells[col.key][i]) for i in rows] for col in shared]
+    groups: dict[tuple, list[int]] = {}
+    for r, key in enumerate(zip(*keys, *present)):
+        groups.setdefault(key, []).append(rows[r])
     blocks = []
-    for (key, present), members in groups.items():
-        block = _block(spec, elements, [c for c, p in zip(shared, present) if p], key,
+    n = len(elements)
+    for key, members in groups.items():
+        if any(s is False for s in key[:n]):
+            continue
+        block = _block(spec, elements, [c for c, p in zip(shared, key[n:]) if p], key[:n],
                        np.asarray(members, dtype=np.intp), cells, want_json, cache)
         if block is not None:
             blocks.append(block)
@@ -221,13 +243,22 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache):
         good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
         shared_reads[col.key] = (read, column, col.unit)
     count = [0]
-    # the texts of each row's values, depth first over the element columns
-    texts = [t for i in row_list for col in given for t in parse_cell(cells[col.key][i])[1]]
-    per_row = len(texts) // m if m else 0
+    # the texts of each value, depth first over the element columns, a column at a time
+    slots: list[list[str]] = []
+    for col, top in zip(given, tops):
+        column = [cells[col.key][i] for i in row_list]
+        if top[0] == "leaf":
+            slots.append(column)
+            continue
+        pieces = _PIECE_RE.findall("\n".join(column))
+        k = len(pieces) // m
+        if k * m != len(pieces):
+            return None
+        slots += [pieces[j::k] for j in range(k)]
     slot = [0]
 
     def values_at(j):
-        return [texts[r * per_row + j] for r in range(m)]
+        return slots[j]
 
     def build(node, top_col=None):
         """(stiffness array, SI-typed first leaf mask) of a node, reading its values."""
