@@ -146,3 +146,22 @@ def test_an_underflowing_group_falls_back_with_the_one_offs_warning(tmp_path):
     ("series(1, 2) x", None), ("spring(1)", None), ("series(1, 2", None)])
 def test_parse_cell(cell, expected):
     assert parse_cell(cell) == expected
+
+
+@pytest.mark.parametrize("how", ["series", "parallel"])
+def test_random_rows_of_one_template_equal_the_one_off(tmp_path, how):
+    """Every cell of a column one template (the split by text replacement), values from
+    ordinary to extreme, the shared columns given or not (unused or missing: refusals)."""
+    rng = random.Random(f"template-{how}")
+    lines = ["k1,k2 [N/m],EI [N*m^2],EA"]
+    for _ in range(300):
+        lines.append(f'"parallel(cantilever(l={_value(rng)} m), series({_value(rng)} N/m,'
+                     f'axial(l={_value(rng)}mm)))",{_value(rng)},'
+                     + (_value(rng) if rng.random() < 0.9 else "") + ","
+                     + (f"{_value(rng)} kN" if rng.random() < 0.9 else ""))
+    path = tmp_path / "template.csv"
+    path.write_text("\n".join(lines) + "\n")
+    for as_json in (False, True):
+        fast = _run(how, path, True, as_json)
+        assert fast == _run(how, path, False, as_json)
+        assert fast[1].count("\n") > 150  # most rows computed

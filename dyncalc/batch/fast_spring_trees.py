@@ -157,6 +157,48 @@ def _skeletons(column: list[str]) -> list[str] | None:
     return _PIECE_RE.sub("", joined).split("\n")
 
 
+_DELIMITER_RE = re.compile(r"[(),=\n]")
+
+
+def _uniform_split(column: list[str]):
+    """``(structure, slots)`` of a column whose every cell is its first cell's skeleton with
+    other values (``slots``: each value's texts, a list a value, depth first), split by plain
+    text replacement of the fixed texts and checked by writing the cells back; ``None``
+    otherwise."""
+    first = column[0] if column else ""
+    if "(" not in first:  # plain stiffnesses (the reader refuses what is not one)
+        joined = "".join(column)
+        plain = "(" not in joined and "=" not in joined and all(column)
+        return (("leaf",), [column]) if plain else None
+    got = parse_cell(first)
+    spans = [m.span() for m in _PIECE_RE.finditer(first)]
+    if got is None or [first[a:b] for a, b in spans] != got[1] or not spans:
+        return None
+    ends = [0] + [x for span in spans for x in span] + [len(first)]
+    fixed = [first[ends[i]:ends[i + 1]] for i in range(0, len(ends), 2)]
+    n, k = len(column), len(spans)
+    joined = "\n".join(column)
+    if joined.count("\n") != n - 1 or any(not t for t in fixed[1:-1]):
+        return None
+    text = ("\n" + joined + "\n").replace("\n" + fixed[0], "\n")
+    text = text.replace(fixed[-1] + "\n", "\n")
+    for t in fixed[1:-1]:
+        text = text.replace(t, "\n")
+    found = text[1:-1].split("\n")
+    if len(found) != n * k or _DELIMITER_RE.search("".join(found)):
+        return None
+    parts: list = [None] * (n * (2 * k + 1))
+    width = 2 * k + 1
+    parts[0::width] = [fixed[0]] * n
+    for j in range(k):
+        parts[2 * j + 1::width] = found[j::k]
+        parts[2 * j + 2::width] = [fixed[j + 1]] * n
+    parts[width - 1::width] = [fixed[-1] + "\n"] * n
+    if "".join(parts) != joined + "\n":
+        return None
+    return got[0], [found[j::k] for j in range(k)]
+
+
 def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) -> list[FastBlock]:
     """The blocks of ``rows`` (indices into ``cells``: column key -> stripped cells) whose
     cells are networks this module takes (see the module docstring). Cells of one skeleton
@@ -165,6 +207,23 @@ def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) ->
     elements = [col for col in columns if _ELEMENT_RE.match(col.key)]
     shared = [col for col in columns if not _ELEMENT_RE.match(col.key)]
     rows = list(rows)
+    if elements and all(cells[col.key][i] for col in elements for i in rows[:1]):
+        split = [_uniform_split([cells[col.key][i] for i in rows]) for col in elements]
+        if all(split):  # every row one structure: only the shared columns given may differ
+            present = [[bool(cells[col.key][i]) for i in rows] for col in shared]
+            groups: dict[tuple, list[int]] = {}
+            for r, key in enumerate(zip(*present)):
+                groups.setdefault(key, []).append(r)
+            blocks = []
+            for key, members in groups.items():
+                at = np.asarray(members, dtype=np.intp)
+                slots = [[[texts[i] for i in members] for texts in got[1]] for got in split]
+                block = _block(spec, elements, [c for c, p in zip(shared, key) if p],
+                               tuple(got[0] for got in split), np.asarray(rows)[at], cells,
+                               want_json, cache, slots)
+                if block is not None:
+                    blocks.append(block)
+            return blocks
     structures: dict[str, object] = {"": None, _LEAF: ("leaf",), _OTHER: False}
     keys = []
     for col in elements:
@@ -197,7 +256,7 @@ def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) ->
     return blocks
 
 
-def _block(spec, elements, shared, key, rows, cells, want_json, cache):
+def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=None):
     from ..commands.springs import ELEMENTS
     from ..physics.columns import Columns
     from ..physics.numerics_arrays import monomial_array
@@ -245,7 +304,10 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache):
     count = [0]
     # the texts of each value, depth first over the element columns, a column at a time
     slots: list[list[str]] = []
-    for col, top in zip(given, tops):
+    for index, (col, top) in enumerate(zip(given, tops)):
+        if split is not None:  # (every element column given: no empty cell)
+            slots += split[index]
+            continue
         column = [cells[col.key][i] for i in row_list]
         if top[0] == "leaf":
             slots.append(column)
