@@ -29,7 +29,9 @@ df = read(path)
 t = df["t [s]"].cast(pl.Float64).to_numpy()
 n = len(t)
 zero, one = np.zeros(n), np.ones(n)
-x = S0 - B * t ** 2 / 2
+# t**2 by Python's float power, as the compiled expression (libm's pow; numpy's square is
+# t*t, which differs from it in the last bit for some t)
+x = S0 - B * np.array([v ** 2 for v in t.tolist()]) / 2
 vx = -B * t
 cx = -W * (W * x) + 0.0       # the centripetal term
 cy = 2.0 * (W * vx) + 0.0     # the Coriolis term
