@@ -47,7 +47,7 @@ def parse_cell(cell: str):
     >>> parse_cell("parallel(cantilever(l=2m), 5 kN/m)")
     (('group', 'parallel', (('element', 'cantilever', ('l',)), ('leaf',))), ['2m', ' 5 kN/m'])
     """
-    from .fast_springs import ELEMENT_FORMS
+    from .spring_forms import ELEMENT_FORMS
 
     parts = _SPLIT_RE.split(cell)
     texts: list[str] = []
@@ -263,7 +263,7 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
     from ..physics.springs import parallel_stiffness, series_stiffness
     from ..units import STIFFNESS, TORSIONAL_STIFFNESS
     from .fast_commands import _Param, _probe
-    from .fast_springs import ELEMENT_FORMS
+    from .spring_forms import ELEMENT_FORMS
 
     given = [col for col, s in zip(elements, key) if s is not None]
     tops = [s for s in key if s is not None]
