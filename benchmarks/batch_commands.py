@@ -95,6 +95,12 @@ CASES = [
      lambda r: ['"cantilever(l=%.6g m, EI=%.6g N*m^2)"' % (r.uniform(0.2, 3), r.uniform(1e3, 1e6)),
                 '"axial(l=%.6g m, EA=%.6g N)"' % (r.uniform(0.2, 3), r.uniform(1e5, 1e8)),
                 f"{r.uniform(10, 1e4):.6g}"]),
+    # round 8: a nested group with a shared value column (issue 17, springnest)
+    ("spring-series nested group with a shared EI", ["spring-series"],
+     "k1,k2 [N/m],EI [N*m^2]",
+     lambda r: ['"parallel(cantilever(l=%.6g m), %.6g N/m)"' % (r.uniform(0.2, 3),
+                                                                r.uniform(10, 1e4)),
+                f"{r.uniform(10, 1e4):.6g}", f"{r.uniform(1e3, 1e6):.6g}"]),
     ("damping-ratio", ["damping-ratio"], "c [N*s/m],k [N/m],m [kg]",
      lambda r: [f"{r.uniform(0.1, 10):.6g}", f"{r.uniform(100, 1e4):.6g}",
                 f"{r.uniform(0.5, 20):.6g}"]),
@@ -154,6 +160,10 @@ CASES = [
     ("coriolis Earth", ["coriolis"], "latitude [deg],speed [m/s],heading [deg],mass [kg]",
      lambda r: [f"{r.uniform(-90, 90):.6g}", f"{r.uniform(0, 300):.6g}",
                 f"{r.uniform(0, 360):.6g}", f"{r.uniform(0.1, 1e3):.6g}"]),
+    # round 8: a motion given in time, derived once a run (issue 17, springnest)
+    ("coriolis over times", ["coriolis", "--r", "s0 - b*t^2/2, 0, 0 m", "s0=4m", "b=0.5m/s^2",
+                             "--omega", "0,0,2 rad/s"], "t [s]",
+     lambda r: [f"{r.uniform(0.01, 10):.6g}"]),
     # round 7: an inverse row on columns (the Earth's speed from |a_c|, closed form)
     ("coriolis Earth inverse vr", ["coriolis"], "a_c_mag [m/s^2],latitude [deg],vr",
      lambda r: [f"{10 ** r.uniform(-6, -2):.6g}",

@@ -38,7 +38,8 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "eom pendulum", "eom bead-on-rotating-ring", "eom coupled-blocks",
                       "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft", "coriolis Earth inverse vr",
-                      "rigid-body inverse"}
+                      "rigid-body inverse",
+                      "coriolis over times", "spring-series nested group with a shared EI"}
 
 
 @pytest.mark.parametrize("as_json", [False, True], ids=["csv", "json"])

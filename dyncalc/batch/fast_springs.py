@@ -17,8 +17,9 @@ the numbers differ: the common file) is split without a pass per cell: the templ
 texts are replaced away and the literals read as JSON at once, the split checked by writing
 the lines back (:func:`_split_fixed`; one regular expression where JSON refuses a literal).
 
-Left to the one-off row by row: shared values (``EI=...`` columns), nested groups, expressions in parentheses, a header unit on a column of
-element words, and every row that warns or is refused (a non-positive or infinite value, an
+Shared values (``EI=...`` columns) and nested groups are
+:mod:`dyncalc.batch.fast_spring_trees`'s. Left to the one-off row by row: expressions in
+parentheses, a header unit on a column of element words, and every row that warns or is refused (a non-positive or infinite value, an
 element or a result that overflows or underflows).
 """
 from __future__ import annotations
@@ -32,22 +33,10 @@ from .cells import Table
 from .columns import _read_column, read_literals
 from .fast import FastBlock, _input_texts, json_head
 from .floats import json_floats
+from .spring_forms import ELEMENT_FORMS
 
 __all__ = ["spring_fast", "ELEMENT_FORMS"]
 
-#: The elements taken here: (coefficient, its leading factors, the alternative groups of
-#: factors with their powers, the other factors with their powers), in the physics
-#: function's order (:mod:`dyncalc.physics.springs`: ``_rigidity`` first, then ``l``).
-#: ``beam``'s ``c`` is ``monomial``'s coefficient: a coefficient of 1 times ``c`` as the
-#: first factor is the same mantissa and exponent at every step.
-ELEMENT_FORMS = {
-    "cantilever": (3.0, (), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
-    "simply-supported": (48.0, (), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
-    "beam": (1.0, (("c", 1),), ((("EI", 1),), (("E", 1), ("I", 1))), (("l", -3),)),
-    "axial": (1.0, (), ((("EA", 1),), (("E", 1), ("A", 1))), (("l", -1),)),
-    "torsion-bar": (1.0, (), ((("GJ_t", 1),), (("G", 1), ("J_t", 1))), (("l", -1),)),
-    "coil": (0.125, (), (), (("G", 1), ("d", 4), ("D", -3), ("n", -1))),
-}
 _CELL_RE = re.compile(r"^\s*(cantilever|simply-supported|beam|axial|torsion-bar|coil)\s*"
                       r"\(([^()\[\]\"]*)\)\s*$")
 _ARG_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=(.*)$", re.S)
@@ -63,9 +52,13 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     """The chunk's rows of plain stiffnesses (:func:`~dyncalc.batch.fast_commands._command_fast`)
     and of element words (here); the others are left to the generic path."""
     from .fast_commands import _command_fast
+    from .fast_spring_trees import tree_fast
 
-    if not table or not columns or any(spec.parameter(col.key) is None for col in columns) \
-            or (isinstance(table, Table) and table.numbers() is not None):
+    if table and columns and any(spec.parameter(col.key) is None for col in columns):
+        n = table.n if isinstance(table, Table) else len(table[0])
+        cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+        return tree_fast(spec, columns, cells, range(n), want_json, cache)
+    if not table or not columns or (isinstance(table, Table) and table.numbers() is not None):
         return _command_fast(spec, columns, table, want_json, cache)
     uniform = _uniform(columns, table)
     if uniform is not None:  # every row one shape, its values read off each column at once
@@ -86,13 +79,19 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
     groups: dict[tuple, list[int]] = {}
     for i, key in enumerate(zip(*shapes)):
         groups.setdefault(key, []).append(i)
+    nested = []
     for key, members in groups.items():
-        if not any(isinstance(s, tuple) for s in key) or any(s is None for s in key):
+        if any(s is None for s in key):
+            nested += members
+            continue
+        if not any(isinstance(s, tuple) for s in key):
             continue
         block = _group_block(spec, columns, key, np.asarray(members, dtype=np.intp), cells,
                              want_json, cache)
         if block is not None:
             blocks.append(block)
+    if nested:  # nested groups (and what else parse_cell takes)
+        blocks += tree_fast(spec, columns, cells, sorted(nested), want_json, cache)
     return blocks
 
 
