@@ -2,7 +2,8 @@
 tools/gen_eom_columns.py): the committed file is what sympy derives today, its functions equal
 ``sympy.lambdify``'s to the bit, its equilibria are the numeric search's, the frequencies of
 dyncalc/physics/eom_pairs.py agree with mpmath's eigenvalues, and ``eom --scene coupled-blocks
---batch`` / ``wheel-on-moving-beam`` on columns is the one-off row by row, byte for byte, with
+--batch`` / ``wheel-on-moving-beam`` / ``pendulum-on-sliding-block`` (a unit on each matrix
+entry) on columns is the one-off row by row, byte for byte, with
 rows the table cannot take left to the one-off (their messages unchanged) and no sympy."""
 from __future__ import annotations
 
@@ -45,7 +46,7 @@ def test_committed_table_is_what_sympy_derives(gen):
 
 
 def test_the_table_holds_the_two_coordinate_scenes_it_can():
-    assert SCENES == ["coupled-blocks", "wheel-on-moving-beam"]
+    assert SCENES == ["coupled-blocks", "pendulum-on-sliding-block", "wheel-on-moving-beam"]
     assert TABLES2["wheel-on-moving-beam"]["roots"] == ((0.0, None),)  # y free
 
 
@@ -91,7 +92,8 @@ def test_table_roots_are_the_numeric_searchs(scene):
     free = set(lagrange.free_coordinates(system))
     for _ in range(3):
         values = {s.param(n): rng.uniform(0.2, 5.0) for n in TABLES2[scene]["names"]}
-        found = lagrange.numeric_equilibria(system, values, [False, False], [1.0, 1.0])
+        found = lagrange.numeric_equilibria(system, values, list(TABLES2[scene]["angles"]),
+                                            [1.0, 1.0])
         got = [tuple(None if i in free else v for i, v in enumerate(p)) for p in found]
         assert tuple(got) == TABLES2[scene]["roots"]
 
@@ -248,3 +250,93 @@ def test_coupled_blocks_batch_does_not_import_sympy(tmp_path):
     assert float(row["omega_1 [rad/s]"]) == pytest.approx(10.0, rel=1e-15)  # sqrt(k/m)
     assert float(row["omega_2 [rad/s]"]) == pytest.approx(math.sqrt(200.0), rel=1e-15)
     assert row["stiffness_matrix [N/m]"] == "150.0,-50.0;-50.0,150.0"
+
+
+def test_pendulum_on_sliding_block_against_the_textbook():
+    """Gross et al. E4.19: the bob swings about phi = 0 at omega^2 = g (m1 + m2) / (m1 l),
+    the block's x is free (omega_1 = 0); phi = pi is unstable."""
+    rng = random.Random(19)
+    n = 100
+    m1, m2, l, g = (np.array([10 ** rng.uniform(-3, 3) for _ in range(n)]) for _ in range(4))
+    plan = PairPlan(TABLES2["pendulum-on-sliding-block"])
+    values = {"m1": m1, "m2": m2, "l": l, "g": g}
+    M, K, dm, dk = plan.matrices(np.zeros(n), np.zeros(n), values)
+    omega, stable = two_frequencies(M, K, dm, dk)
+    assert stable.all() and (omega[:, 0] == 0.0).all()
+    assert np.allclose(omega[:, 1], np.sqrt(g * (m1 + m2) / (m1 * l)), rtol=1e-13, atol=0)
+    assert not two_frequencies(*plan.matrices(np.zeros(n), np.full(n, math.pi), values))[1].any()
+
+
+def _sliding_file(tmp_path, count=40):
+    rng = random.Random(29)
+    lines = ["m1 [kg],m2 [kg],l [m],g [m/s^2],x [m],phi [rad],x_dot [m/s],phi_dot [rad/s]"]
+    for i in range(count):  # one parameter of each row extreme (1e-300 .. 1e300), some none
+        values = [rng.uniform(0.01, 100.0) for _ in range(4)]
+        values[i % 5 if i % 5 < 4 else 0] = _value(rng) if i % 5 < 4 else values[0]
+        lines.append(",".join(map(repr, values)) + "," + ",".join(
+            repr(rng.uniform(-3, 3)) for _ in range(4)))
+    lines += ["2,1,0,9.81,0,0.1,0,0",              # l = 0: refused by the one-off
+              "2,1,0.5,9.81,0,0.1,0,",             # no phi_dot: the one-off asks for it
+              "2 lb,1 kg,20 in,9.81,1 cm,30deg,0,2 rpm"]   # units: read by the batch
+    path = tmp_path / "sliding.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_pendulum_on_sliding_block_rows_are_the_one_offs_byte_for_byte(tmp_path, as_json):
+    path = _sliding_file(tmp_path)
+    calls: list = []
+    fast = _run(path, "pendulum-on-sliding-block", as_json, True, calls)
+    assert len(calls) <= 8, len(calls)  # the refused rows, overflows: the rest on columns
+    assert fast == _run(path, "pendulum-on-sliding-block", as_json, False)
+    assert fast[0] == 2
+    errors = fast[2].splitlines()
+    mine = [e for e in errors if e.startswith(("Error: line 42:", "Error: line 43:"))]
+    assert len(mine) == 2 and "l=" in mine[0], errors
+    assert mine[1] == "Error: line 43: x_ddot at the state needs phi_dot= too", mine[1]
+    refused = sum(e.startswith("Error") for e in errors)
+    assert fast[1].count("\n") == 43 - refused + (0 if as_json else 1)
+    assert fast[1].count("\n") >= 25
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_pendulum_on_sliding_block_unit_on_its_mixed_matrix(tmp_path, as_json):
+    """``--unit mass_matrix=g`` on a matrix with a unit on each entry: the one-off labels
+    it so, the columns the same (byte for byte)."""
+    path = tmp_path / "s.csv"
+    path.write_text("m1,m2,l\n2kg,1kg,0.5m\n3kg,1kg,0.25m\n")
+    runs = []
+    for fast in (True, False):
+        out, err = io.StringIO(), io.StringIO()
+        status = run_batch(EomRows(scene="pendulum-on-sliding-block"), str(path),
+                           as_json=as_json, units={"mass_matrix": "g"}, on_error="skip",
+                           out=out, err=err, fast=fast)
+        runs.append((status, out.getvalue(), err.getvalue()))
+    assert runs[0] == runs[1] and runs[0][0] == 0
+
+
+def test_pendulum_on_sliding_block_on_columns_without_sympy(tmp_path):
+    """No one-off and no sympy; the mixed matrix cell as the one-off writes it, the
+    frequency the textbook's sqrt(g (m1 + m2) / (m1 l))."""
+    path = tmp_path / "s.csv"
+    path.write_text("m1,m2,l,g\n2,1,0.5,9.81\n" + "".join(
+        f"{1 + i / 7!r},{2 + i / 3!r},{0.5 + i / 11!r},9.81\n" for i in range(300)))
+    calls: list = []
+    status, out, _err = _run(path, "pendulum-on-sliding-block", False, True, calls)
+    assert status == 0 and out.count("\n") == 302 and len(calls) == 0
+    code = ("import sys\nfrom dyncalc.cli import cli\n"
+            "try:\n    cli(['eom', '--scene', 'pendulum-on-sliding-block', '--batch', "
+            "sys.argv[1]])\n"
+            "except SystemExit as e:\n    assert not e.code, e.code\n"
+            "print('sympy' in sys.modules, file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.strip().splitlines()[-1] == "False"
+    row = next(csv.DictReader(io.StringIO(done.stdout)))
+    assert row["mass_matrix"] == "[[3.0 kg, 0.5 kg*m], [0.5 kg*m, 0.25 kg*m^2]]"
+    assert row["stiffness_matrix"] == "[[0.0 N/m, 0.0 N/rad], [0.0 N/rad, 4.905 N*m/rad]]"
+    assert float(row["omega_1 [rad/s]"]) == 0.0
+    assert float(row["omega_2 [rad/s]"]) == pytest.approx(math.sqrt(9.81 * 3 / 1.0),
+                                                          rel=1e-15)

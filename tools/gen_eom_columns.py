@@ -131,7 +131,8 @@ linearised mass and stiffness matrices ``M(q1, q2, *p)``, ``K(q1, q2, *p)`` (the
 entries row by row), of their determinants (simplified by sympy) and of the two
 accelerations ``a(q1, q2, q1', q2', t, *p)`` (the parameters ``p`` in the order of ``names``)
 as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate), the
-equations and the units of the results. ``eom --scene --batch`` and the one-off evaluate
+equations and the units of the results (``matrix_units``: a matrix whose entries have units
+of their own). ``eom --scene --batch`` and the one-off evaluate
 these (no sympy on the batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
 ``python tools/gen_eom_columns.py`` (tests/test_eom_tables2.py checks them against sympy).
 """
@@ -144,9 +145,11 @@ __all__ = ["TABLES2"]
 '''
 
 
-def _dims(name, words, wanted):
-    """The units of the one-off's ``wanted`` results at the first values it takes, or
-    ``None`` (a value refused at both tries, a result without one unit)."""
+def _dims(name, words, wanted, mixed=()):
+    """``(units, matrix units)``: the units of the one-off's ``wanted`` results at the first
+    values it takes and, for the matrices of ``mixed`` whose entries have units of their own,
+    those units (``None`` in the first); or ``None`` (a value refused at both tries, a
+    result without one unit)."""
     from dyncalc.commands.eom import eom
 
     for value in (lambda i: 1.0 + i, lambda i: 1.0 / (1 + i)):  # (units do not depend on it)
@@ -154,10 +157,13 @@ def _dims(name, words, wanted):
             result = eom({}, words(value), scene=name)
         except ValueError:  # (InputError, PhysicsError: a value the scene refuses)
             continue
-        if any(result.results.get(w) is None or result.results[w].dim is None
-               for w in wanted):
+        got = [result.results.get(w) for w in wanted]
+        units = {w: tuple(map(tuple, e.units)) for w, e in zip(wanted, got)
+                 if w in mixed and e is not None and e.dim is None and e.units is not None}
+        if any(e is None or (e.dim is None and w not in units) for w, e in zip(wanted, got)):
             return None
-        return "".join(f"\n            {w!r}: {result.results[w].dim!r}," for w in wanted)
+        return ("".join(f"\n            {w!r}: {None if w in units else e.dim!r},"
+                        for w, e in zip(wanted, got)), units)
     return None
 
 
@@ -182,9 +188,10 @@ def _pair_scene(name: str):
                 if p.default is None] + state + ["t=0.0"]
     wanted = ["mass_matrix", "stiffness_matrix", "omega_1", "omega_2", "f_1", "f_2",
               *(f"{c}_ddot" for c in d["coords"])]
-    dims = _dims(name, words, wanted)
-    if dims is None:
+    made = _dims(name, words, wanted, ("mass_matrix", "stiffness_matrix"))
+    if made is None:
         return None
+    dims, mixed = made
     functions = "".join(f"'{part}': _{key}_{part}, " for part in parts).rstrip()
     entry = (f"    {name!r}: {{\n"
              f"        'coords': {d['coords']!r}, 'angles': {d['angles']!r},\n"
@@ -194,6 +201,7 @@ def _pair_scene(name: str):
              f"        'texts': {d['texts']!r},\n"
              f"        'warnings': {d['warnings']!r},\n"
              f"        'dims': {{{dims}\n        }},\n"
+             + (f"        'matrix_units': {mixed!r},\n" if mixed else "") +
              f"    }},")
     return "\n\n\n".join(sources), entry
 

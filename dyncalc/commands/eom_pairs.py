@@ -129,7 +129,7 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     (``values``: every parameter's SI column; ``exact`` updated in place), or ``None``: the
     first row has no stable equilibrium or the state is incomplete (the one-off answers)."""
     from ..physics.columns import Columns
-    from ..physics.eom_pairs import PairPlan, two_frequencies
+    from ..physics.eom_pairs import PairPlan, finite_rows, two_frequencies
     from .eom_results import _equilibria_text
 
     plan, coords = PairPlan(entry), entry["coords"]
@@ -143,10 +143,10 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
             q = [np.full(n, 0.0 if v is None else v) for v in root]
             M, K, dm, dk = plan.matrices(*q, values)
             stable.append(two_frequencies(M, K, dm, dk)[1])
-            exact &= np.isfinite(M).all(axis=(1, 2)) & np.isfinite(K).all(axis=(1, 2)) \
-                & (dm > 0) & np.isfinite(dk)
+            exact &= finite_rows(M, K, dm, dk)  # (elsewhere the one-off goes symbolic)
             at.append((M, K, dm, dk))
-        first = int(np.argmax(exact)) if exact.any() else 0
+        settled = exact & np.logical_or.reduce(stable)  # (a row with a stable equilibrium)
+        first = int(np.argmax(settled)) if settled.any() else 0
         pattern = [bool(s[first]) for s in stable]
         for s, want in zip(stable, pattern):
             exact &= s == want
@@ -176,6 +176,9 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     extra = {"equilibria": [{**dict(zip(coords, r)), "stable": s}
                             for r, s in zip(entry["roots"], pattern)],
              "about": dict(zip(coords, chosen))}
+    if entry.get("matrix_units"):  # (the one-off's extra.matrix_units, in its order)
+        extra["matrix_units"] = {name: [list(row) for row in units]
+                                 for name, units in entry["matrix_units"].items()}
     warnings = entry["warnings"]
     return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
                    warnings=warnings, warned=np.ones(n, dtype=bool) if warnings else None,

@@ -288,16 +288,25 @@ def _plan(system, inputs):
 
 def _pair_plan(inputs):
     """The generated functions of a two-coordinate scene (dyncalc.scenes.eom_tables2), the
-    batch's too, so both agree bit for bit; ``None``: not in the table or a parameter
-    without a value."""
+    batch's too, so both agree bit for bit; ``None``: not in the table, a parameter
+    without a value, or numbers the table cannot give at some equilibrium (an overflow:
+    the symbolic path answers, as the batch leaves such rows to this one-off)."""
     from ..scenes.eom_tables2 import TABLES2
 
     entry = TABLES2.get(inputs.scene) if inputs.scene is not None else None
     if entry is None or not set(entry["names"]) <= set(inputs.values):
         return None
-    from ..physics.eom_pairs import PairPlan
+    import numpy as np
 
-    return PairPlan(entry)
+    from ..physics.eom_pairs import PairPlan, finite_rows
+
+    plan, row = PairPlan(entry), _one_row(inputs.values)
+    with np.errstate(all="ignore"):
+        for root in entry["roots"]:
+            at = [np.array([0.0 if v is None else float(v)]) for v in root]
+            if not finite_rows(*plan.matrices(*at, row))[0]:
+                return None
+    return plan
 
 
 def constant_roots(system, angle: bool):
@@ -563,6 +572,8 @@ def _accelerations(results, inputs, system, s, values, cdims, state, plan=None):
                 number = complex(float(plan.accelerations(
                     *rows, np.array([float(state.get("t", 0.0))]),
                     _one_row(inputs.values))[i][0]))
+            if not math.isfinite(number.real):  # an overflow: the batch leaves it here
+                number = complex(value.evalf())
         elif plan is not None:  # the batch's numbers (dyncalc.physics.eom_columns)
             import numpy as np
 
