@@ -202,7 +202,7 @@ def _pair_scene(name: str):
              f"        'warnings': {d['warnings']!r},\n"
              f"        'dims': {{{dims}\n        }},\n"
              + (f"        'matrix_units': {mixed!r},\n" if mixed else "") +
-             f"    }},")
+             "    },")
     return "\n\n\n".join(sources), entry
 
 
