@@ -340,3 +340,23 @@ def test_pendulum_on_sliding_block_on_columns_without_sympy(tmp_path):
     assert float(row["omega_1 [rad/s]"]) == 0.0
     assert float(row["omega_2 [rad/s]"]) == pytest.approx(math.sqrt(9.81 * 3 / 1.0),
                                                           rel=1e-15)
+
+
+def test_an_overflowing_matrix_is_refused_in_one_line(tmp_path):
+    """l = 1e300 m: l^2 m2 overflows; neither the table (finite_rows) nor the symbolic path
+    can give frequencies, so the one-off refuses (exit 2), and the batch row the same."""
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+
+    done = CliRunner().invoke(cli, ["eom", "--scene", "pendulum-on-sliding-block", "m1=62kg",
+                                    "m2=88kg", "l=1e300m"])
+    assert done.exit_code == 2
+    message = ("the linearised mass or stiffness matrix overflows at these values (an entry "
+               "beyond 1.8e308 in SI units)")
+    assert done.output == f"Error: {message}\n"
+    path = tmp_path / "o.csv"
+    path.write_text("m1,m2,l\n62,88,1e300\n2,1,0.5\n")
+    status, out, err = _run(path, "pendulum-on-sliding-block", False, True)
+    assert status == 2 and err == f"Error: line 2: {message}\n"
+    assert out.count("\n") == 2  # the header and the good row
