@@ -46,7 +46,9 @@ def test_committed_table_is_what_sympy_derives(gen):
 
 
 def test_the_table_holds_the_two_coordinate_scenes_it_can():
-    assert SCENES == ["coupled-blocks", "pendulum-on-sliding-block", "wheel-on-moving-beam"]
+    assert SCENES == ["block-disk-springs", "coupled-blocks", "pendulum-on-sliding-block",
+                      "wheel-on-moving-beam"]
+    assert TABLES2["block-disk-springs"]["roots"] is None  # x = F/k: the closed form R
     assert TABLES2["wheel-on-moving-beam"]["roots"] == ((0.0, None),)  # y free
 
 
@@ -67,7 +69,7 @@ def test_generated_functions_equal_lambdify_to_the_bit(scene):
     rng = random.Random(scene)
     d, entry = derive_pair(scene), TABLES2[scene]
     assert tuple(d["names"]) == entry["names"] and d["texts"] == entry["texts"]
-    assert tuple(tuple(r) for r in d["roots"]) == entry["roots"]
+    assert (None if d["roots"] is None else tuple(map(tuple, d["roots"]))) == entry["roots"]
     n = 200
     q = [_columns(rng, n) for _ in range(4)]
     p = [_columns(rng, n) for _ in entry["names"]]
@@ -79,6 +81,9 @@ def test_generated_functions_equal_lambdify_to_the_bit(scene):
             assert all(_same(a, b, (n,)) for a, b in pairs), part
         for a, b in zip(d["a"](*q, t, *p), entry["a"](*q, t, *p)):
             assert _same(a, b, (n,))
+        assert (d["R"] is None) == (entry.get("R") is None)
+        if d["R"] is not None:
+            assert all(_same(a, b, (n,)) for a, b in zip(d["R"](*p), entry["R"](*p)))
 
 
 @pytest.mark.parametrize("scene", SCENES)
@@ -95,6 +100,13 @@ def test_table_roots_are_the_numeric_searchs(scene):
         found = lagrange.numeric_equilibria(system, values, list(TABLES2[scene]["angles"]),
                                             [1.0, 1.0])
         got = [tuple(None if i in free else v for i, v in enumerate(p)) for p in found]
+        if TABLES2[scene]["roots"] is None:  # the closed forms: the search's, to its tolerance
+            plan = PairPlan(TABLES2[scene])
+            row = {str(k): np.array([v]) for k, v in values.items()}
+            want = [float(v[0]) for v in plan.root_rows(row, 1)]
+            assert len(got) == 1
+            assert got[0] == pytest.approx(tuple(want), rel=1e-9, abs=1e-12)
+            continue
         assert tuple(got) == TABLES2[scene]["roots"]
 
 
@@ -360,3 +372,71 @@ def test_an_overflowing_matrix_is_refused_in_one_line(tmp_path):
     status, out, err = _run(path, "pendulum-on-sliding-block", False, True)
     assert status == 2 and err == f"Error: line 2: {message}\n"
     assert out.count("\n") == 2  # the header and the good row
+
+
+def test_block_disk_springs_against_mpmath():
+    """E4.14: M = [[M + m, -m r], [-m r, 3 m r^2 / 2]], K = diag(k, k r^2) (the energies by
+    hand); the frequencies from mpmath's eigenvalues of M^-1 K at 50 digits; the
+    equilibrium x = F/k, phi = 0."""
+    rng = random.Random(14)
+    n = 60
+    cols = {name: np.array([10 ** rng.uniform(-2, 2) for _ in range(n)])
+            for name in ("M", "m", "r", "k")}
+    cols["F"] = np.array([rng.uniform(-50, 50) for _ in range(n)])
+    plan = PairPlan(TABLES2["block-disk-springs"])
+    x, phi = plan.root_rows(cols, n)
+    assert (phi == 0.0).all() and np.allclose(x, cols["F"] / cols["k"], rtol=1e-15, atol=0)
+    omega, stable = two_frequencies(*plan.matrices(x, phi, cols))
+    assert stable.all()
+    for i in range(n):
+        with mpmath.workdps(50):
+            Mb, m, r, k = (mpmath.mpf(float(cols[c][i])) for c in ("M", "m", "r", "k"))
+            A = mpmath.matrix([[Mb + m, -m * r], [-m * r, 3 * m * r * r / 2]])
+            B = mpmath.matrix([[k, 0], [0, k * r * r]])
+            lams = sorted(float(mpmath.re(v)) for v in mpmath.eig(A ** -1 * B, left=False,
+                                                                    right=False))
+        assert omega[i].tolist() == pytest.approx([math.sqrt(v) for v in lams], rel=1e-12)
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_block_disk_springs_rows_are_the_one_offs_byte_for_byte(tmp_path, as_json):
+    """Each row its own equilibrium x = F/k (text and JSON extra), extremes included; a row
+    with r = 0 and one without phi keep the one-off's messages."""
+    rng = random.Random(41)
+    lines = ["M [kg],m [kg],r [m],k [N/m],F [N],x [m],phi [rad],x_dot [m/s],phi_dot [rad/s]"]
+    for i in range(40):
+        values = [rng.uniform(0.01, 100.0) for _ in range(4)] + [rng.uniform(-100, 100)]
+        if i % 4 == 1:
+            values[i % 5] = _value(rng)
+        if i % 7 == 3:
+            values[4] = rng.choice([0.0, -1e-300, 1e300, -1e-13])
+        lines.append(",".join(map(repr, values)) + "," + ",".join(
+            repr(rng.uniform(-2, 2)) for _ in range(4)))
+    lines += ["2,1,0,100,1,0,0.1,0,0",              # r = 0: refused by the one-off
+              "2,1,0.1,100,1,0,,0,0",               # no phi: the one-off asks for it
+              "2 lb,1 kg,4 in,1 lbf/in,2 lbf,1 cm,30deg,0,2 rpm"]   # units
+    path = tmp_path / "bds.csv"
+    path.write_text("\n".join(lines) + "\n")
+    calls: list = []
+    fast = _run(path, "block-disk-springs", as_json, True, calls)
+    assert fast == _run(path, "block-disk-springs", as_json, False)
+    assert len(calls) <= 10, len(calls)
+    errors = fast[2].splitlines()
+    mine = [e for e in errors if e.startswith(("Error: line 42:", "Error: line 43:"))]
+    assert len(mine) == 2 and "r=" in mine[0], errors
+    assert mine[1] == "Error: line 43: x_ddot at the state needs phi= too", mine[1]
+    assert fast[1].count("\n") >= 35
+
+
+def test_block_disk_springs_equilibrium_moves_with_the_force(tmp_path):
+    """The equilibria column: x = F/k each row, as the one-off formats it (%.6g)."""
+    path = tmp_path / "f.csv"
+    path.write_text("M,m,r,k,F\n2,1,0.1,100,5\n2,1,0.1,100,-3\n2,1,0.1,100,0\n")
+    calls: list = []
+    status, out, _err = _run(path, "block-disk-springs", False, True, calls)
+    assert status == 0 and len(calls) == 0
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert [r["equilibria"] for r in rows] == ["x=0.05, phi=0 (stable)",
+                                               "x=-0.03, phi=0 (stable)",
+                                               "x=0, phi=0 (stable)"]
+    assert rows[0]["mass_matrix"] == "[[3.0 kg, -0.1 kg*m], [-0.1 kg*m, 0.015000000000000003 kg*m^2]]"

@@ -130,10 +130,11 @@ for each two-coordinate scene whose equilibria are numbers, the numpy functions 
 linearised mass and stiffness matrices ``M(q1, q2, *p)``, ``K(q1, q2, *p)`` (their four
 entries row by row), of their determinants (simplified by sympy) and of the two
 accelerations ``a(q1, q2, q1', q2', t, *p)`` (the parameters ``p`` in the order of ``names``)
-as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate), the
+as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate; where the
+values move the one equilibrium, ``roots`` ``None`` and its closed forms ``R(*p)``), the
 equations and the units of the results (``matrix_units``: a matrix whose entries have units
-of their own). ``eom --scene --batch`` and the one-off evaluate
-these (no sympy on the batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
+of their own). ``eom --scene --batch`` and the one-off evaluate these (no sympy on the
+batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
 ``python tools/gen_eom_columns.py`` (tests/test_eom_tables2.py checks them against sympy).
 """
 from __future__ import annotations
@@ -179,7 +180,7 @@ def _pair_scene(name: str):
     key = name.replace("-", "_")
     acc_args = list(inspect.signature(d["a"]).parameters)
     rename = {acc_args[2]: d["coords"][0] + "_dot", acc_args[3]: d["coords"][1] + "_dot"}
-    parts = ["M", "K", "detM", "detK", "a"]
+    parts = ["M", "K", "detM", "detK", "a"] + (["R"] if d["R"] is not None else [])
     sources = [function_source(d[part], f"_{key}_{part}", rename) for part in parts]
 
     def words(value):
@@ -197,7 +198,7 @@ def _pair_scene(name: str):
              f"        'coords': {d['coords']!r}, 'angles': {d['angles']!r},\n"
              f"        'names': {tuple(d['names'])!r},\n"
              f"        {functions}\n"
-             f"        'roots': {tuple(tuple(r) for r in d['roots'])!r},\n"
+             f"        'roots': {None if d['roots'] is None else tuple(map(tuple, d['roots']))!r},\n"
              f"        'texts': {d['texts']!r},\n"
              f"        'warnings': {d['warnings']!r},\n"
              f"        'dims': {{{dims}\n        }},\n"

@@ -302,9 +302,12 @@ def _pair_plan(inputs):
 
     plan, row = PairPlan(entry), _one_row(inputs.values)
     with np.errstate(all="ignore"):
-        for root in entry["roots"]:
-            at = [np.array([0.0 if v is None else float(v)]) for v in root]
-            if not finite_rows(*plan.matrices(*at, row))[0]:
+        roots = [[0.0 if v is None else float(v) for v in r] for r in entry["roots"]] \
+            if entry["roots"] is not None else [[float(q[0]) for q in plan.root_rows(row, 1)]]
+        for root in roots:
+            if not all(map(math.isfinite, root)):
+                return None
+            if not finite_rows(*plan.matrices(*(np.array([v]) for v in root), row))[0]:
                 return None
     return plan
 
@@ -361,7 +364,9 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
             plan = None
         roots = constant_roots(system, angles[0]) if plan is not None else None
         closed = _table_roots(inputs) if plan is not None and roots is None else None
-        if pair is not None:  # the generated table's roots, as batch takes them: no search
+        if pair is not None and pair.roots is None:  # the table's closed forms, as batch
+            found = [[float(q[0]) for q in pair.root_rows(_one_row(inputs.values), 1)]]
+        elif pair is not None:  # the generated table's roots, as batch takes them: no search
             found = [[0.0 if v is None else v for v in r] for r in pair.roots]
         elif roots is not None:  # sympy's roots, as batch takes them: no search
             found = [[r] for r in roots]

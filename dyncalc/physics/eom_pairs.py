@@ -36,14 +36,15 @@ class PairPlan:
     :mod:`dyncalc.scenes.eom_tables2`): ``names`` (the parameters, in the order the functions
     take them after the coordinates), ``M(q1, q2, *p)`` and ``K(q1, q2, *p)`` (the four
     entries, row by row), ``detM`` and ``detK`` (the same arguments), ``a(q1, q2, q1',
-    q2', t, *p)`` (the two accelerations) and ``roots`` (the equilibria, ``None`` for a free
-    coordinate)."""
+    q2', t, *p)`` (the two accelerations), ``roots`` (the equilibria, ``None`` for a free
+    coordinate) or, where the values move the one equilibrium, ``root_forms`` (``R(*p)``)."""
 
     __slots__ = ("names", "mass", "stiffness", "det_mass", "det_stiffness", "acceleration",
-                 "roots")
+                 "roots", "root_forms")
 
     def __init__(self, entry: dict):
         self.names, self.roots = list(entry["names"]), entry["roots"]
+        self.root_forms = entry.get("R")
         self.mass, self.stiffness = entry["M"], entry["K"]
         self.det_mass, self.det_stiffness = entry["detM"], entry["detK"]
         self.acceleration = entry["a"]
@@ -61,6 +62,12 @@ class PairPlan:
         return (M.reshape(n + (2, 2)), K.reshape(n + (2, 2)),
                 _array(self.det_mass(q1, q2, *args), n),
                 _array(self.det_stiffness(q1, q2, *args), n))
+
+    def root_rows(self, params: dict, n: int) -> list:
+        """The one equilibrium of each row where the values move it (``roots`` is ``None``):
+        two arrays of ``n``, ``|q| < 1e-12`` made 0 (as the equilibria search writes it)."""
+        return [np.where(np.abs(q) < 1e-12, 0.0, q) for q in
+                (_array(v, (n,)) for v in self.root_forms(*self._args(params)))]
 
     def accelerations(self, q1, q2, qd1, qd2, t, params: dict):
         """The two accelerations at the state (arrays)."""
