@@ -62,6 +62,8 @@ LIMITS = {
     "eom bead-on-rotating-ring": [str(LIMIT / "eom_bead.py")],
     # round 7: two coordinates from a generated table (issue 17's brief, eom2c)
     "eom coupled-blocks": [str(LIMIT / "eom_coupled.py")],
+    # round 8: a unit on each matrix entry, from the same table (issue 17's brief, eom2d)
+    "eom pendulum-on-sliding-block": [str(LIMIT / "eom_sliding.py")],
     # round 7: inverse rows on columns (issue 17's brief, rigidinv)
     "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
     # round 8: a bracketed inverse on columns (issue 17's brief, rigidbracket)

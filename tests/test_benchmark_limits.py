@@ -36,6 +36,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "modes damped two-mass chain",
                       "forced-response total response", "forced-response undamped",
                       "eom pendulum", "eom bead-on-rotating-ring", "eom coupled-blocks",
+                      "eom pendulum-on-sliding-block",
                       "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft", "coriolis Earth inverse vr",
                       "rigid-body inverse",

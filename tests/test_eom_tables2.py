@@ -2,7 +2,8 @@
 tools/gen_eom_columns.py): the committed file is what sympy derives today, its functions equal
 ``sympy.lambdify``'s to the bit, its equilibria are the numeric search's, the frequencies of
 dyncalc/physics/eom_pairs.py agree with mpmath's eigenvalues, and ``eom --scene coupled-blocks
---batch`` / ``wheel-on-moving-beam`` on columns is the one-off row by row, byte for byte, with
+--batch`` / ``wheel-on-moving-beam`` / ``pendulum-on-sliding-block`` (a unit on each matrix
+entry) on columns is the one-off row by row, byte for byte, with
 rows the table cannot take left to the one-off (their messages unchanged) and no sympy."""
 from __future__ import annotations
 
@@ -45,7 +46,9 @@ def test_committed_table_is_what_sympy_derives(gen):
 
 
 def test_the_table_holds_the_two_coordinate_scenes_it_can():
-    assert SCENES == ["coupled-blocks", "wheel-on-moving-beam"]
+    assert SCENES == ["block-disk-springs", "coupled-blocks", "pendulum-on-sliding-block",
+                      "wheel-on-moving-beam"]
+    assert TABLES2["block-disk-springs"]["roots"] is None  # x = F/k: the closed form R
     assert TABLES2["wheel-on-moving-beam"]["roots"] == ((0.0, None),)  # y free
 
 
@@ -66,7 +69,7 @@ def test_generated_functions_equal_lambdify_to_the_bit(scene):
     rng = random.Random(scene)
     d, entry = derive_pair(scene), TABLES2[scene]
     assert tuple(d["names"]) == entry["names"] and d["texts"] == entry["texts"]
-    assert tuple(tuple(r) for r in d["roots"]) == entry["roots"]
+    assert (None if d["roots"] is None else tuple(map(tuple, d["roots"]))) == entry["roots"]
     n = 200
     q = [_columns(rng, n) for _ in range(4)]
     p = [_columns(rng, n) for _ in entry["names"]]
@@ -78,6 +81,9 @@ def test_generated_functions_equal_lambdify_to_the_bit(scene):
             assert all(_same(a, b, (n,)) for a, b in pairs), part
         for a, b in zip(d["a"](*q, t, *p), entry["a"](*q, t, *p)):
             assert _same(a, b, (n,))
+        assert (d["R"] is None) == (entry.get("R") is None)
+        if d["R"] is not None:
+            assert all(_same(a, b, (n,)) for a, b in zip(d["R"](*p), entry["R"](*p)))
 
 
 @pytest.mark.parametrize("scene", SCENES)
@@ -91,8 +97,16 @@ def test_table_roots_are_the_numeric_searchs(scene):
     free = set(lagrange.free_coordinates(system))
     for _ in range(3):
         values = {s.param(n): rng.uniform(0.2, 5.0) for n in TABLES2[scene]["names"]}
-        found = lagrange.numeric_equilibria(system, values, [False, False], [1.0, 1.0])
+        found = lagrange.numeric_equilibria(system, values, list(TABLES2[scene]["angles"]),
+                                            [1.0, 1.0])
         got = [tuple(None if i in free else v for i, v in enumerate(p)) for p in found]
+        if TABLES2[scene]["roots"] is None:  # the closed forms: the search's, to its tolerance
+            plan = PairPlan(TABLES2[scene])
+            row = {str(k): np.array([v]) for k, v in values.items()}
+            want = [float(v[0]) for v in plan.root_rows(row, 1)]
+            assert len(got) == 1
+            assert got[0] == pytest.approx(tuple(want), rel=1e-9, abs=1e-12)
+            continue
         assert tuple(got) == TABLES2[scene]["roots"]
 
 
@@ -248,3 +262,181 @@ def test_coupled_blocks_batch_does_not_import_sympy(tmp_path):
     assert float(row["omega_1 [rad/s]"]) == pytest.approx(10.0, rel=1e-15)  # sqrt(k/m)
     assert float(row["omega_2 [rad/s]"]) == pytest.approx(math.sqrt(200.0), rel=1e-15)
     assert row["stiffness_matrix [N/m]"] == "150.0,-50.0;-50.0,150.0"
+
+
+def test_pendulum_on_sliding_block_against_the_textbook():
+    """Gross et al. E4.19: the bob swings about phi = 0 at omega^2 = g (m1 + m2) / (m1 l),
+    the block's x is free (omega_1 = 0); phi = pi is unstable."""
+    rng = random.Random(19)
+    n = 100
+    m1, m2, l, g = (np.array([10 ** rng.uniform(-3, 3) for _ in range(n)]) for _ in range(4))
+    plan = PairPlan(TABLES2["pendulum-on-sliding-block"])
+    values = {"m1": m1, "m2": m2, "l": l, "g": g}
+    M, K, dm, dk = plan.matrices(np.zeros(n), np.zeros(n), values)
+    omega, stable = two_frequencies(M, K, dm, dk)
+    assert stable.all() and (omega[:, 0] == 0.0).all()
+    assert np.allclose(omega[:, 1], np.sqrt(g * (m1 + m2) / (m1 * l)), rtol=1e-13, atol=0)
+    assert not two_frequencies(*plan.matrices(np.zeros(n), np.full(n, math.pi), values))[1].any()
+
+
+def _sliding_file(tmp_path, count=40):
+    rng = random.Random(29)
+    lines = ["m1 [kg],m2 [kg],l [m],g [m/s^2],x [m],phi [rad],x_dot [m/s],phi_dot [rad/s]"]
+    for i in range(count):  # one parameter of each row extreme (1e-300 .. 1e300), some none
+        values = [rng.uniform(0.01, 100.0) for _ in range(4)]
+        values[i % 5 if i % 5 < 4 else 0] = _value(rng) if i % 5 < 4 else values[0]
+        lines.append(",".join(map(repr, values)) + "," + ",".join(
+            repr(rng.uniform(-3, 3)) for _ in range(4)))
+    lines += ["2,1,0,9.81,0,0.1,0,0",              # l = 0: refused by the one-off
+              "2,1,0.5,9.81,0,0.1,0,",             # no phi_dot: the one-off asks for it
+              "2 lb,1 kg,20 in,9.81,1 cm,30deg,0,2 rpm"]   # units: read by the batch
+    path = tmp_path / "sliding.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_pendulum_on_sliding_block_rows_are_the_one_offs_byte_for_byte(tmp_path, as_json):
+    path = _sliding_file(tmp_path)
+    calls: list = []
+    fast = _run(path, "pendulum-on-sliding-block", as_json, True, calls)
+    assert len(calls) <= 8, len(calls)  # the refused rows, overflows: the rest on columns
+    assert fast == _run(path, "pendulum-on-sliding-block", as_json, False)
+    assert fast[0] == 2
+    errors = fast[2].splitlines()
+    mine = [e for e in errors if e.startswith(("Error: line 42:", "Error: line 43:"))]
+    assert len(mine) == 2 and "l=" in mine[0], errors
+    assert mine[1] == "Error: line 43: x_ddot at the state needs phi_dot= too", mine[1]
+    refused = sum(e.startswith("Error") for e in errors)
+    assert fast[1].count("\n") == 43 - refused + (0 if as_json else 1)
+    assert fast[1].count("\n") >= 25
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_pendulum_on_sliding_block_unit_on_its_mixed_matrix(tmp_path, as_json):
+    """``--unit mass_matrix=g`` on a matrix with a unit on each entry: the one-off labels
+    it so, the columns the same (byte for byte)."""
+    path = tmp_path / "s.csv"
+    path.write_text("m1,m2,l\n2kg,1kg,0.5m\n3kg,1kg,0.25m\n")
+    runs = []
+    for fast in (True, False):
+        out, err = io.StringIO(), io.StringIO()
+        status = run_batch(EomRows(scene="pendulum-on-sliding-block"), str(path),
+                           as_json=as_json, units={"mass_matrix": "g"}, on_error="skip",
+                           out=out, err=err, fast=fast)
+        runs.append((status, out.getvalue(), err.getvalue()))
+    assert runs[0] == runs[1] and runs[0][0] == 0
+
+
+def test_pendulum_on_sliding_block_on_columns_without_sympy(tmp_path):
+    """No one-off and no sympy; the mixed matrix cell as the one-off writes it, the
+    frequency the textbook's sqrt(g (m1 + m2) / (m1 l))."""
+    path = tmp_path / "s.csv"
+    path.write_text("m1,m2,l,g\n2,1,0.5,9.81\n" + "".join(
+        f"{1 + i / 7!r},{2 + i / 3!r},{0.5 + i / 11!r},9.81\n" for i in range(300)))
+    calls: list = []
+    status, out, _err = _run(path, "pendulum-on-sliding-block", False, True, calls)
+    assert status == 0 and out.count("\n") == 302 and len(calls) == 0
+    code = ("import sys\nfrom dyncalc.cli import cli\n"
+            "try:\n    cli(['eom', '--scene', 'pendulum-on-sliding-block', '--batch', "
+            "sys.argv[1]])\n"
+            "except SystemExit as e:\n    assert not e.code, e.code\n"
+            "print('sympy' in sys.modules, file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.strip().splitlines()[-1] == "False"
+    row = next(csv.DictReader(io.StringIO(done.stdout)))
+    assert row["mass_matrix"] == "[[3.0 kg, 0.5 kg*m], [0.5 kg*m, 0.25 kg*m^2]]"
+    assert row["stiffness_matrix"] == "[[0.0 N/m, 0.0 N/rad], [0.0 N/rad, 4.905 N*m/rad]]"
+    assert float(row["omega_1 [rad/s]"]) == 0.0
+    assert float(row["omega_2 [rad/s]"]) == pytest.approx(math.sqrt(9.81 * 3 / 1.0),
+                                                          rel=1e-15)
+
+
+def test_an_overflowing_matrix_is_refused_in_one_line(tmp_path):
+    """l = 1e300 m: l^2 m2 overflows; neither the table (finite_rows) nor the symbolic path
+    can give frequencies, so the one-off refuses (exit 2), and the batch row the same."""
+    from click.testing import CliRunner
+
+    from dyncalc.cli import cli
+
+    done = CliRunner().invoke(cli, ["eom", "--scene", "pendulum-on-sliding-block", "m1=62kg",
+                                    "m2=88kg", "l=1e300m"])
+    assert done.exit_code == 2
+    message = ("the linearised mass or stiffness matrix overflows at these values (an entry "
+               "beyond 1.8e308 in SI units)")
+    assert done.output == f"Error: {message}\n"
+    path = tmp_path / "o.csv"
+    path.write_text("m1,m2,l\n62,88,1e300\n2,1,0.5\n")
+    status, out, err = _run(path, "pendulum-on-sliding-block", False, True)
+    assert status == 2 and err == f"Error: line 2: {message}\n"
+    assert out.count("\n") == 2  # the header and the good row
+
+
+def test_block_disk_springs_against_mpmath():
+    """E4.14: M = [[M + m, -m r], [-m r, 3 m r^2 / 2]], K = diag(k, k r^2) (the energies by
+    hand); the frequencies from mpmath's eigenvalues of M^-1 K at 50 digits; the
+    equilibrium x = F/k, phi = 0."""
+    rng = random.Random(14)
+    n = 60
+    cols = {name: np.array([10 ** rng.uniform(-2, 2) for _ in range(n)])
+            for name in ("M", "m", "r", "k")}
+    cols["F"] = np.array([rng.uniform(-50, 50) for _ in range(n)])
+    plan = PairPlan(TABLES2["block-disk-springs"])
+    x, phi = plan.root_rows(cols, n)
+    assert (phi == 0.0).all() and np.allclose(x, cols["F"] / cols["k"], rtol=1e-15, atol=0)
+    omega, stable = two_frequencies(*plan.matrices(x, phi, cols))
+    assert stable.all()
+    for i in range(n):
+        with mpmath.workdps(50):
+            Mb, m, r, k = (mpmath.mpf(float(cols[c][i])) for c in ("M", "m", "r", "k"))
+            A = mpmath.matrix([[Mb + m, -m * r], [-m * r, 3 * m * r * r / 2]])
+            B = mpmath.matrix([[k, 0], [0, k * r * r]])
+            lams = sorted(float(mpmath.re(v)) for v in mpmath.eig(A ** -1 * B, left=False,
+                                                                    right=False))
+        assert omega[i].tolist() == pytest.approx([math.sqrt(v) for v in lams], rel=1e-12)
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_block_disk_springs_rows_are_the_one_offs_byte_for_byte(tmp_path, as_json):
+    """Each row its own equilibrium x = F/k (text and JSON extra), extremes included; a row
+    with r = 0 and one without phi keep the one-off's messages."""
+    rng = random.Random(41)
+    lines = ["M [kg],m [kg],r [m],k [N/m],F [N],x [m],phi [rad],x_dot [m/s],phi_dot [rad/s]"]
+    for i in range(40):
+        values = [rng.uniform(0.01, 100.0) for _ in range(4)] + [rng.uniform(-100, 100)]
+        if i % 4 == 1:
+            values[i % 5] = _value(rng)
+        if i % 7 == 3:
+            values[4] = rng.choice([0.0, -1e-300, 1e300, -1e-13])
+        lines.append(",".join(map(repr, values)) + "," + ",".join(
+            repr(rng.uniform(-2, 2)) for _ in range(4)))
+    lines += ["2,1,0,100,1,0,0.1,0,0",              # r = 0: refused by the one-off
+              "2,1,0.1,100,1,0,,0,0",               # no phi: the one-off asks for it
+              "2 lb,1 kg,4 in,1 lbf/in,2 lbf,1 cm,30deg,0,2 rpm"]   # units
+    path = tmp_path / "bds.csv"
+    path.write_text("\n".join(lines) + "\n")
+    calls: list = []
+    fast = _run(path, "block-disk-springs", as_json, True, calls)
+    assert fast == _run(path, "block-disk-springs", as_json, False)
+    assert len(calls) <= 10, len(calls)
+    errors = fast[2].splitlines()
+    mine = [e for e in errors if e.startswith(("Error: line 42:", "Error: line 43:"))]
+    assert len(mine) == 2 and "r=" in mine[0], errors
+    assert mine[1] == "Error: line 43: x_ddot at the state needs phi= too", mine[1]
+    assert fast[1].count("\n") >= 35
+
+
+def test_block_disk_springs_equilibrium_moves_with_the_force(tmp_path):
+    """The equilibria column: x = F/k each row, as the one-off formats it (%.6g)."""
+    path = tmp_path / "f.csv"
+    path.write_text("M,m,r,k,F\n2,1,0.1,100,5\n2,1,0.1,100,-3\n2,1,0.1,100,0\n")
+    calls: list = []
+    status, out, _err = _run(path, "block-disk-springs", False, True, calls)
+    assert status == 0 and len(calls) == 0
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert [r["equilibria"] for r in rows] == ["x=0.05, phi=0 (stable)",
+                                               "x=-0.03, phi=0 (stable)",
+                                               "x=0, phi=0 (stable)"]
+    assert rows[0]["mass_matrix"] == "[[3.0 kg, -0.1 kg*m], [-0.1 kg*m, 0.015000000000000003 kg*m^2]]"

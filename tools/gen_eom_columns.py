@@ -130,9 +130,11 @@ for each two-coordinate scene whose equilibria are numbers, the numpy functions 
 linearised mass and stiffness matrices ``M(q1, q2, *p)``, ``K(q1, q2, *p)`` (their four
 entries row by row), of their determinants (simplified by sympy) and of the two
 accelerations ``a(q1, q2, q1', q2', t, *p)`` (the parameters ``p`` in the order of ``names``)
-as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate), the
-equations and the units of the results. ``eom --scene --batch`` and the one-off evaluate
-these (no sympy on the batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
+as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate; where the
+values move the one equilibrium, ``roots`` ``None`` and its closed forms ``R(*p)``), the
+equations and the units of the results (``matrix_units``: a matrix whose entries have units
+of their own). ``eom --scene --batch`` and the one-off evaluate these (no sympy on the
+batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
 ``python tools/gen_eom_columns.py`` (tests/test_eom_tables2.py checks them against sympy).
 """
 from __future__ import annotations
@@ -144,9 +146,11 @@ __all__ = ["TABLES2"]
 '''
 
 
-def _dims(name, words, wanted):
-    """The units of the one-off's ``wanted`` results at the first values it takes, or
-    ``None`` (a value refused at both tries, a result without one unit)."""
+def _dims(name, words, wanted, mixed=()):
+    """``(units, matrix units)``: the units of the one-off's ``wanted`` results at the first
+    values it takes and, for the matrices of ``mixed`` whose entries have units of their own,
+    those units (``None`` in the first); or ``None`` (a value refused at both tries, a
+    result without one unit)."""
     from dyncalc.commands.eom import eom
 
     for value in (lambda i: 1.0 + i, lambda i: 1.0 / (1 + i)):  # (units do not depend on it)
@@ -154,10 +158,13 @@ def _dims(name, words, wanted):
             result = eom({}, words(value), scene=name)
         except ValueError:  # (InputError, PhysicsError: a value the scene refuses)
             continue
-        if any(result.results.get(w) is None or result.results[w].dim is None
-               for w in wanted):
+        got = [result.results.get(w) for w in wanted]
+        units = {w: tuple(map(tuple, e.units)) for w, e in zip(wanted, got)
+                 if w in mixed and e is not None and e.dim is None and e.units is not None}
+        if any(e is None or (e.dim is None and w not in units) for w, e in zip(wanted, got)):
             return None
-        return "".join(f"\n            {w!r}: {result.results[w].dim!r}," for w in wanted)
+        return ("".join(f"\n            {w!r}: {None if w in units else e.dim!r},"
+                        for w, e in zip(wanted, got)), units)
     return None
 
 
@@ -173,7 +180,7 @@ def _pair_scene(name: str):
     key = name.replace("-", "_")
     acc_args = list(inspect.signature(d["a"]).parameters)
     rename = {acc_args[2]: d["coords"][0] + "_dot", acc_args[3]: d["coords"][1] + "_dot"}
-    parts = ["M", "K", "detM", "detK", "a"]
+    parts = ["M", "K", "detM", "detK", "a"] + (["R"] if d["R"] is not None else [])
     sources = [function_source(d[part], f"_{key}_{part}", rename) for part in parts]
 
     def words(value):
@@ -182,19 +189,21 @@ def _pair_scene(name: str):
                 if p.default is None] + state + ["t=0.0"]
     wanted = ["mass_matrix", "stiffness_matrix", "omega_1", "omega_2", "f_1", "f_2",
               *(f"{c}_ddot" for c in d["coords"])]
-    dims = _dims(name, words, wanted)
-    if dims is None:
+    made = _dims(name, words, wanted, ("mass_matrix", "stiffness_matrix"))
+    if made is None:
         return None
+    dims, mixed = made
     functions = "".join(f"'{part}': _{key}_{part}, " for part in parts).rstrip()
     entry = (f"    {name!r}: {{\n"
              f"        'coords': {d['coords']!r}, 'angles': {d['angles']!r},\n"
              f"        'names': {tuple(d['names'])!r},\n"
              f"        {functions}\n"
-             f"        'roots': {tuple(tuple(r) for r in d['roots'])!r},\n"
+             f"        'roots': {None if d['roots'] is None else tuple(map(tuple, d['roots']))!r},\n"
              f"        'texts': {d['texts']!r},\n"
              f"        'warnings': {d['warnings']!r},\n"
              f"        'dims': {{{dims}\n        }},\n"
-             f"    }},")
+             + (f"        'matrix_units': {mixed!r},\n" if mixed else "") +
+             "    },")
     return "\n\n\n".join(sources), entry
 
 

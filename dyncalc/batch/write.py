@@ -89,7 +89,8 @@ class _Writer:
     def check_unit(self, name: str, dim) -> None:
         """``--unit NAME=UNIT`` refused, as the one-off refuses it, when the unit cannot show
         the result (the whole run stops: the option is wrong, not a row)."""
-        if name in self.units and name not in self.checked_units and dim is not None:
+        if name in self.units and name not in self.checked_units and dim is not None \
+                and getattr(dim, "entry_units", None) is None:
             from ..units import convert
 
             convert(1.0, dim, self.units[name], label=f"--unit {name}", name=name)
@@ -223,6 +224,12 @@ class _Writer:
                     text.update(zip(odd, _csv_lines([[w] for w in odd])))
                 shown[name] = ([list(map(text.__getitem__, words))], "")
                 continue
+            mixed = getattr(dim, "entry_units", None)  # a matrix, a unit on each entry
+            if mixed is not None:
+                shown[name] = (_mixed_parts(array, mixed) if not self.as_json and name not in
+                               self.units else _number_parts(array, self.as_json),
+                               self.units.get(name, ""))
+                continue
             if name in self.units:
                 self.check_unit(name, dim)
             target = self.units.get(name, dim.si) if self.as_json else self.col_units[name]
@@ -329,6 +336,20 @@ def _number_parts(array, as_json: bool) -> list:
         parts += [between] if j else []
         parts.append(_component(array[:, j]))
     return parts + [closing]
+
+
+def _mixed_parts(array, units) -> list:
+    """The CSV parts of ``(n, r, c)`` matrices whose entries have units of their own, as
+    :func:`dyncalc.result.entries.matrix_with_units` writes one: ``"[[3.0 kg, 0.5 kg*m],
+    ...]"``."""
+    parts: list = ['"[']
+    for i, row in enumerate(units):
+        parts.append(", [" if i else "[")
+        for j, unit in enumerate(row):
+            parts += [", "] if j else []
+            parts += [_component(array[:, i, j]), f" {unit}".rstrip()]
+        parts.append("]")
+    return parts + [']"']
 
 
 def _component(column):

@@ -119,6 +119,17 @@ class _Named:
         self.dim = dim
 
 
+class MatrixUnits:
+    """The unit of a result column of matrices whose entries have units of their own
+    (``entry_units``, row by row; the batch writer shows each cell as the one-off does)."""
+
+    __slots__ = ("entry_units",)
+    si = ""
+
+    def __init__(self, entry_units):
+        self.entry_units = entry_units
+
+
 def light_probe(spec, given_names, out):
     """A stand-in for the probe of a block of ``eom --scene --batch`` when the scene is in
     the table (no one-off, so no sympy): the inputs are the scene's parameters in its order
@@ -128,8 +139,11 @@ def light_probe(spec, given_names, out):
 
     scene = spec.settings.get("scene")
     d = derivation(scene) if scene is not None else None
-    dims = pair_entry(scene)["dims"] if d is None and pair_entry(scene) is not None else (
-        None if d is None else d.dims)
+    pair = pair_entry(scene) if d is None else None
+    dims = pair["dims"] if pair is not None else (None if d is None else d.dims)
+    if pair is not None and pair.get("matrix_units"):
+        dims = {**dims, **{name: MatrixUnits(units)
+                           for name, units in pair["matrix_units"].items()}}
     if dims is None or spec.settings.get("about") is not None:
         return None
     from ..result import entry_from_parsed

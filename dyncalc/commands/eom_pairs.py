@@ -16,7 +16,7 @@ import math
 
 from ..lazy import numpy as np
 
-__all__ = ["pair_entry", "derive_pair", "pair_roots", "pair_columns"]
+__all__ = ["pair_entry", "derive_pair", "pair_roots", "pair_root_forms", "pair_columns"]
 
 
 def pair_entry(scene: str | None) -> dict | None:
@@ -74,6 +74,29 @@ def pair_roots(system, angles) -> list[list] | None:
     return [points[k] for k in order]
 
 
+def pair_root_forms(system, angles, params) -> list | None:
+    """The one equilibrium of a two-coordinate derivation as closed forms in ``params`` (a
+    force moves it: ``x = F/k``), or ``None``: several or none, a free coordinate, an angle
+    that depends on the values (its wrapping), or anything else ``pair_roots`` takes."""
+    import sympy
+
+    from ..physics import lagrange_equations as lagrange
+
+    s = system.symbols
+    equations = [e for e in system.static if e != 0]
+    if lagrange.free_coordinates(system) or not equations \
+            or not lagrange.solvable(equations, list(s.q)):
+        return None
+    found = lagrange.symbolic_equilibria(system)
+    if not found or len(found) != 1:
+        return None
+    forms = [sympy.sympify(found[0].get(q, 0)) for q in s.q]
+    if any(f.free_symbols - set(params) or (a and f.free_symbols)
+           for f, a in zip(forms, angles)):
+        return None
+    return forms
+
+
 def derive_pair(scene: str):
     """The two-coordinate scene derived with sympy, every parameter a symbol: a dict of the
     lambdified functions (``M``, ``K``, ``detM``, ``detK``, ``a``), ``names``, ``coords``,
@@ -89,8 +112,7 @@ def derive_pair(scene: str):
     from .eom_results import derive_system
 
     inputs = read({}, (), scene=scene)
-    if len(inputs.coords) != 2 or any(k.startswith("Q:") for k in inputs.trees) \
-            or inputs.domain:
+    if len(inputs.coords) != 2 or inputs.domain:
         return None
     s, _exprs, system = derive_system(inputs)
     if system.forced or any(a.has(s.t) for a in system.accelerations):
@@ -104,7 +126,8 @@ def derive_pair(scene: str):
         return None
     angles = [c in inputs.angles for c in inputs.coords]
     roots = pair_roots(system, angles)
-    if roots is None:
+    forms = None if roots is not None else pair_root_forms(system, angles, params)
+    if roots is None and forms is None:
         return None
     at = [*s.q, *params]
 
@@ -117,6 +140,7 @@ def derive_pair(scene: str):
         "detK": sympy.lambdify(at, tidy(K.det()), "numpy"),
         "a": sympy.lambdify([*s.q, *s.qd, s.t, *params], list(system.accelerations), "numpy"),
         "roots": roots,
+        "R": None if forms is None else sympy.lambdify(params, forms, "numpy"),
         "texts": tuple(f"{c}'' = {text_of(a)}" for c, a in zip(inputs.coords,
                                                                 system.accelerations)),
         "warnings": ("omega_i are the undamped natural frequencies (D is left out of them)",)
@@ -129,7 +153,7 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     (``values``: every parameter's SI column; ``exact`` updated in place), or ``None``: the
     first row has no stable equilibrium or the state is incomplete (the one-off answers)."""
     from ..physics.columns import Columns
-    from ..physics.eom_pairs import PairPlan, two_frequencies
+    from ..physics.eom_pairs import PairPlan, finite_rows, two_frequencies
     from .eom_results import _equilibria_text
 
     plan, coords = PairPlan(entry), entry["coords"]
@@ -137,31 +161,37 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     rates = [c + "_dot" for c in coords]
     if state and any(k not in arrays for k in (*coords, *rates)):
         return None  # the one-off asks for the rest of the state
+    moved = entry["roots"] is None  # (the one equilibrium of each row, its closed forms)
     with np.errstate(all="ignore"):
         stable, at = [], []
-        for root in entry["roots"]:
-            q = [np.full(n, 0.0 if v is None else v) for v in root]
+        rows = [plan.root_rows(values, n)] if moved else [
+            [np.full(n, 0.0 if v is None else v) for v in root] for root in entry["roots"]]
+        for q in rows:
+            exact &= np.isfinite(q[0]) & np.isfinite(q[1])
             M, K, dm, dk = plan.matrices(*q, values)
             stable.append(two_frequencies(M, K, dm, dk)[1])
-            exact &= np.isfinite(M).all(axis=(1, 2)) & np.isfinite(K).all(axis=(1, 2)) \
-                & (dm > 0) & np.isfinite(dk)
+            exact &= finite_rows(M, K, dm, dk)  # (elsewhere the one-off goes symbolic)
             at.append((M, K, dm, dk))
-        first = int(np.argmax(exact)) if exact.any() else 0
+        settled = exact & np.logical_or.reduce(stable)  # (a row with a stable equilibrium)
+        first = int(np.argmax(settled)) if settled.any() else 0
         pattern = [bool(s[first]) for s in stable]
         for s, want in zip(stable, pattern):
             exact &= s == want
         if not any(pattern):
             return None  # the one-off linearises about an unstable one: warnings, no omega
         k = pattern.index(True)
-        chosen = entry["roots"][k]
         M, K, dm, dk = at[k]
         omega, _stable = two_frequencies(M, K, dm, dk)
         exact &= np.isfinite(omega).all(axis=1)
-        text = _equilibria_text(list(coords), [list(r) for r in entry["roots"]], pattern,
-                                True, {})
         out = {f"eom_{i}": np.full(n, t, dtype=object)
                for i, t in enumerate(entry["texts"], start=1)}
-        out["equilibria"] = np.full(n, text, dtype=object)
+        if moved:
+            out["equilibria"], extras = _moved_texts(coords, rows[0], entry)
+        else:
+            chosen = entry["roots"][k]
+            text = _equilibria_text(list(coords), [list(r) for r in entry["roots"]], pattern,
+                                    True, {})
+            out["equilibria"] = np.full(n, text, dtype=object)
         out["mass_matrix"], out["stiffness_matrix"] = M, K
         out["omega_1"], out["omega_2"] = omega[:, 0], omega[:, 1]
         out["f_1"], out["f_2"] = omega[:, 0] / (2 * math.pi), omega[:, 1] / (2 * math.pi)
@@ -173,10 +203,40 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
                 exact &= np.isfinite(acc)
             for column in columns:
                 exact &= np.isfinite(column)
-    extra = {"equilibria": [{**dict(zip(coords, r)), "stable": s}
-                            for r, s in zip(entry["roots"], pattern)],
-             "about": dict(zip(coords, chosen))}
+    if not moved:
+        extra = {"equilibria": [{**dict(zip(coords, r)), "stable": s}
+                                for r, s in zip(entry["roots"], pattern)],
+                 "about": dict(zip(coords, chosen))}
+        extra.update(_units_extra(entry))
+        extras = lambda _keep, line=json.dumps(extra): [line]  # noqa: E731
     warnings = entry["warnings"]
     return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
                    warnings=warnings, warned=np.ones(n, dtype=bool) if warnings else None,
-                   extras=lambda _keep, line=json.dumps(extra): [line])
+                   extras=extras)
+
+
+def _units_extra(entry) -> dict:
+    """The one-off's ``extra.matrix_units`` (after ``about``), or nothing."""
+    if not entry.get("matrix_units"):
+        return {}
+    return {"matrix_units": {name: [list(row) for row in units]
+                             for name, units in entry["matrix_units"].items()}}
+
+
+def _moved_texts(coords, q, entry):
+    """``(texts, extras)`` of the one stable equilibrium each row has (``q``: its two
+    columns): the equilibria text one format call a row, and the JSON ``extra`` (made for
+    JSON only, for the rows kept)."""
+    names = list(coords)
+    template = ", ".join(f"{c}={{:.6g}}" for c in names) + " (stable)"
+    texts = np.empty(len(q[0]), dtype=object)
+    texts[:] = list(map(template.format, q[0].tolist(), q[1].tolist()))
+    tail = json.dumps(_units_extra(entry))[1:-1]
+    tail = "}" if not tail else ", " + tail + "}"
+
+    def extras(keep):
+        a, b = ([repr(v) for v in col[keep].tolist()] for col in q)
+        first, second = json.dumps(names[0]), json.dumps(names[1])
+        return [f'{{"equilibria": [{{{first}: ', a, f", {second}: ", b,
+                f', "stable": true}}], "about": {{{first}: ', a, f", {second}: ", b, "}" + tail]
+    return texts, extras

@@ -288,16 +288,28 @@ def _plan(system, inputs):
 
 def _pair_plan(inputs):
     """The generated functions of a two-coordinate scene (dyncalc.scenes.eom_tables2), the
-    batch's too, so both agree bit for bit; ``None``: not in the table or a parameter
-    without a value."""
+    batch's too, so both agree bit for bit; ``None``: not in the table, a parameter
+    without a value, or numbers the table cannot give at some equilibrium (an overflow:
+    the symbolic path answers, as the batch leaves such rows to this one-off)."""
     from ..scenes.eom_tables2 import TABLES2
 
     entry = TABLES2.get(inputs.scene) if inputs.scene is not None else None
     if entry is None or not set(entry["names"]) <= set(inputs.values):
         return None
-    from ..physics.eom_pairs import PairPlan
+    import numpy as np
 
-    return PairPlan(entry)
+    from ..physics.eom_pairs import PairPlan, finite_rows
+
+    plan, row = PairPlan(entry), _one_row(inputs.values)
+    with np.errstate(all="ignore"):
+        roots = [[0.0 if v is None else float(v) for v in r] for r in entry["roots"]] \
+            if entry["roots"] is not None else [[float(q[0]) for q in plan.root_rows(row, 1)]]
+        for root in roots:
+            if not all(map(math.isfinite, root)):
+                return None
+            if not finite_rows(*plan.matrices(*(np.array([v]) for v in root), row))[0]:
+                return None
+    return plan
 
 
 def constant_roots(system, angle: bool):
@@ -352,7 +364,9 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
             plan = None
         roots = constant_roots(system, angles[0]) if plan is not None else None
         closed = _table_roots(inputs) if plan is not None and roots is None else None
-        if pair is not None:  # the generated table's roots, as batch takes them: no search
+        if pair is not None and pair.roots is None:  # the table's closed forms, as batch
+            found = [[float(q[0]) for q in pair.root_rows(_one_row(inputs.values), 1)]]
+        elif pair is not None:  # the generated table's roots, as batch takes them: no search
             found = [[0.0 if v is None else v for v in r] for r in pair.roots]
         elif roots is not None:  # sympy's roots, as batch takes them: no search
             found = [[r] for r in roots]
@@ -563,6 +577,8 @@ def _accelerations(results, inputs, system, s, values, cdims, state, plan=None):
                 number = complex(float(plan.accelerations(
                     *rows, np.array([float(state.get("t", 0.0))]),
                     _one_row(inputs.values))[i][0]))
+            if not math.isfinite(number.real):  # an overflow: the batch leaves it here
+                number = complex(value.evalf())
         elif plan is not None:  # the batch's numbers (dyncalc.physics.eom_columns)
             import numpy as np
 

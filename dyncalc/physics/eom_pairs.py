@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from ..lazy import numpy as np
 
-__all__ = ["PairPlan", "two_frequencies"]
+__all__ = ["PairPlan", "two_frequencies", "finite_rows"]
 
 
 class PairPlan:
@@ -36,14 +36,15 @@ class PairPlan:
     :mod:`dyncalc.scenes.eom_tables2`): ``names`` (the parameters, in the order the functions
     take them after the coordinates), ``M(q1, q2, *p)`` and ``K(q1, q2, *p)`` (the four
     entries, row by row), ``detM`` and ``detK`` (the same arguments), ``a(q1, q2, q1',
-    q2', t, *p)`` (the two accelerations) and ``roots`` (the equilibria, ``None`` for a free
-    coordinate)."""
+    q2', t, *p)`` (the two accelerations), ``roots`` (the equilibria, ``None`` for a free
+    coordinate) or, where the values move the one equilibrium, ``root_forms`` (``R(*p)``)."""
 
     __slots__ = ("names", "mass", "stiffness", "det_mass", "det_stiffness", "acceleration",
-                 "roots")
+                 "roots", "root_forms")
 
     def __init__(self, entry: dict):
         self.names, self.roots = list(entry["names"]), entry["roots"]
+        self.root_forms = entry.get("R")
         self.mass, self.stiffness = entry["M"], entry["K"]
         self.det_mass, self.det_stiffness = entry["detM"], entry["detK"]
         self.acceleration = entry["a"]
@@ -61,6 +62,12 @@ class PairPlan:
         return (M.reshape(n + (2, 2)), K.reshape(n + (2, 2)),
                 _array(self.det_mass(q1, q2, *args), n),
                 _array(self.det_stiffness(q1, q2, *args), n))
+
+    def root_rows(self, params: dict, n: int) -> list:
+        """The one equilibrium of each row where the values move it (``roots`` is ``None``):
+        two arrays of ``n``, ``|q| < 1e-12`` made 0 (as the equilibria search writes it)."""
+        return [np.where(np.abs(q) < 1e-12, 0.0, q) for q in
+                (_array(v, (n,)) for v in self.root_forms(*self._args(params)))]
 
     def accelerations(self, q1, q2, qd1, qd2, t, params: dict):
         """The two accelerations at the state (arrays)."""
@@ -83,6 +90,29 @@ def two_frequencies(M, K, det_m, det_k):
     >>> two_frequencies(M, K, np.array([2.0]), np.array([35000.0]))[0]
     array([[10.        , 13.22875656]])
     """
+    lo, hi = _reduced(M, K, det_m, det_k)
+    with np.errstate(all="ignore"):
+        tol = 1e-10 * np.maximum(np.abs(lo), np.abs(hi))
+        stable = (lo >= -tol) & (hi >= -tol)
+        lam = np.stack([lo, hi], axis=-1)
+        omega = np.where(lam > tol[:, None], np.sqrt(np.where(lam > tol[:, None], lam, 0.0)),
+                         0.0)
+    return omega, stable
+
+
+def finite_rows(M, K, det_m, det_k):
+    """``(n,)`` True where the reduction is finite throughout (``M``, ``K``, ``det K``, both
+    eigenvalues; ``0 < det M < inf``): the rows :func:`two_frequencies` answers; elsewhere
+    (an overflow, a singular ``M``) the one-off takes the symbolic path."""
+    lo, hi = _reduced(M, K, det_m, det_k)
+    with np.errstate(all="ignore"):
+        return (np.isfinite(M).all(axis=(1, 2)) & np.isfinite(K).all(axis=(1, 2))
+                & (det_m > 0) & np.isfinite(det_m) & np.isfinite(det_k)
+                & np.isfinite(lo) & np.isfinite(hi))
+
+
+def _reduced(M, K, det_m, det_k):
+    """``(lo, hi)``: the two eigenvalues of the symmetric reduction (the module's formulas)."""
     with np.errstate(all="ignore"):
         m00, m01 = M[:, 0, 0], M[:, 0, 1]
         k00, k01, k11 = K[:, 0, 0], K[:, 0, 1], K[:, 1, 1]
@@ -94,10 +124,4 @@ def two_frequencies(M, K, det_m, det_k):
         up = mean >= 0
         big = np.where(up, mean + radius, mean - radius)  # (no cancellation)
         other = np.where(big != 0, product / big, 0.0)
-        lo, hi = np.where(up, other, big), np.where(up, big, other)
-        tol = 1e-10 * np.maximum(np.abs(lo), np.abs(hi))
-        stable = (lo >= -tol) & (hi >= -tol)
-        lam = np.stack([lo, hi], axis=-1)
-        omega = np.where(lam > tol[:, None], np.sqrt(np.where(lam > tol[:, None], lam, 0.0)),
-                         0.0)
-    return omega, stable
+        return np.where(up, other, big), np.where(up, big, other)

@@ -252,6 +252,9 @@ def frequencies(M, K) -> tuple[list[float], bool]:
 
     Mn = np.array(M.tolist(), dtype=float)
     Kn = np.array(K.tolist(), dtype=float)
+    if not (np.isfinite(Mn).all() and np.isfinite(Kn).all()):
+        raise PhysicsError("the linearised mass or stiffness matrix overflows at these values "
+                           "(an entry beyond 1.8e308 in SI units)")
     lam = eigvals(Kn, Mn)
     lam = np.sort(lam.real)
     scale = float(np.max(np.abs(lam))) if lam.size else 0.0

@@ -3,13 +3,16 @@ for each two-coordinate scene whose equilibria are numbers, the numpy functions 
 linearised mass and stiffness matrices ``M(q1, q2, *p)``, ``K(q1, q2, *p)`` (their four
 entries row by row), of their determinants (simplified by sympy) and of the two
 accelerations ``a(q1, q2, q1', q2', t, *p)`` (the parameters ``p`` in the order of ``names``)
-as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate), the
-equations and the units of the results. ``eom --scene --batch`` and the one-off evaluate
-these (no sympy on the batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
+as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate; where the
+values move the one equilibrium, ``roots`` ``None`` and its closed forms ``R(*p)``), the
+equations and the units of the results (``matrix_units``: a matrix whose entries have units
+of their own). ``eom --scene --batch`` and the one-off evaluate these (no sympy on the
+batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
 ``python tools/gen_eom_columns.py`` (tests/test_eom_tables2.py checks them against sympy).
 """
 from __future__ import annotations
 
+from ..lazy import numpy as np
 from ..units import Dim
 
 __all__ = ["TABLES2"]
@@ -55,6 +58,50 @@ def _coupled_blocks_a(x1, x2, x1_dot, x2_dot, t, k1, k2, k3, m1, m2):
     return [(-k1*x1 - k3*(x1 - x2))/m1, (-k2*x2 + k3*(x1 - x2))/m2]
 
 
+def _block_disk_springs_M(x, phi, F, M, k, m, r):
+    return [M + m, -m*r, -m*r, (3/2)*m*r**2]
+
+
+def _block_disk_springs_K(x, phi, F, M, k, m, r):
+    return [k, 0, 0, k*r**2]
+
+
+def _block_disk_springs_detM(x, phi, F, M, k, m, r):
+    return (1/2)*m*r**2*(3*M + m)
+
+
+def _block_disk_springs_detK(x, phi, F, M, k, m, r):
+    return k**2*r**2
+
+
+def _block_disk_springs_a(x, phi, x_dot, phi_dot, t, F, M, k, m, r):
+    return [(3*F - 2*k*phi*r - 3*k*x)/(3*M + m), 2*(k*phi*r*(M + m) - m*(F - k*x))/(m*r*(-3*M - m))]
+
+
+def _block_disk_springs_R(F, M, k, m, r):
+    return [F/k, 0]
+
+
+def _pendulum_on_sliding_block_M(x, phi, g, l, m1, m2):
+    return [m1 + m2, l*m2*np.cos(phi), l*m2*np.cos(phi), l**2*m2]
+
+
+def _pendulum_on_sliding_block_K(x, phi, g, l, m1, m2):
+    return [0, 0, 0, g*l*m2*np.cos(phi)]
+
+
+def _pendulum_on_sliding_block_detM(x, phi, g, l, m1, m2):
+    return l**2*m2*(m1 + m2*np.sin(phi)**2)
+
+
+def _pendulum_on_sliding_block_detK(x, phi, g, l, m1, m2):
+    return 0
+
+
+def _pendulum_on_sliding_block_a(x, phi, x_dot, phi_dot, t, g, l, m1, m2):
+    return [m2*(phi_dot**2*l + g*np.cos(phi))*np.sin(phi)/(m1 + m2*np.sin(phi)**2), -(phi_dot**2*l*m2*np.cos(phi) + g*(m1 + m2))*np.sin(phi)/(l*(m1 + m2*np.sin(phi)**2))]
+
+
 #: Two-coordinate scene name -> what the batch computes it with.
 TABLES2: dict[str, dict] = {
     'wheel-on-moving-beam': {
@@ -92,5 +139,43 @@ TABLES2: dict[str, dict] = {
             'x1_ddot': Dim(name='acceleration', display='[length]/[time]^2', check='[length]/[time]**2', si='m/s^2', kind='plain', angles=(0,)),
             'x2_ddot': Dim(name='acceleration', display='[length]/[time]^2', check='[length]/[time]**2', si='m/s^2', kind='plain', angles=(0,)),
         },
+    },
+    'block-disk-springs': {
+        'coords': ('x', 'phi'), 'angles': (False, True),
+        'names': ('F', 'M', 'k', 'm', 'r'),
+        'M': _block_disk_springs_M, 'K': _block_disk_springs_K, 'detM': _block_disk_springs_detM, 'detK': _block_disk_springs_detK, 'a': _block_disk_springs_a, 'R': _block_disk_springs_R,
+        'roots': None,
+        'texts': ("x'' = (3*F - 2*k*phi*r - 3*k*x)/(3*M + m)", "phi'' = 2*(k*phi*r*(M + m) - m*(F - k*x))/(m*r*(-3*M - m))"),
+        'warnings': (),
+        'dims': {
+            'mass_matrix': None,
+            'stiffness_matrix': None,
+            'omega_1': Dim(name='angular rate', display='[angle]/[time]', check='1/[time]', si='rad/s', kind='angular-rate', angles=(1,)),
+            'omega_2': Dim(name='angular rate', display='[angle]/[time]', check='1/[time]', si='rad/s', kind='angular-rate', angles=(1,)),
+            'f_1': Dim(name='frequency', display='[cycles]/[time]', check='1/[time]', si='Hz', kind='cycle-rate', angles=(0,)),
+            'f_2': Dim(name='frequency', display='[cycles]/[time]', check='1/[time]', si='Hz', kind='cycle-rate', angles=(0,)),
+            'x_ddot': Dim(name='acceleration', display='[length]/[time]^2', check='[length]/[time]**2', si='m/s^2', kind='plain', angles=(0,)),
+            'phi_ddot': Dim(name='angular acceleration', display='[angle]/[time]^2', check='1/[time]**2', si='rad/s^2', kind='angular-rate', angles=(1,)),
+        },
+        'matrix_units': {'mass_matrix': (('kg', 'kg*m'), ('kg*m', 'kg*m^2')), 'stiffness_matrix': (('N/m', 'N/rad'), ('N/rad', 'N*m/rad'))},
+    },
+    'pendulum-on-sliding-block': {
+        'coords': ('x', 'phi'), 'angles': (False, True),
+        'names': ('g', 'l', 'm1', 'm2'),
+        'M': _pendulum_on_sliding_block_M, 'K': _pendulum_on_sliding_block_K, 'detM': _pendulum_on_sliding_block_detM, 'detK': _pendulum_on_sliding_block_detK, 'a': _pendulum_on_sliding_block_a,
+        'roots': ((None, 0.0), (None, 3.141592653589793)),
+        'texts': ("x'' = m2*(g*cos(phi) + l*phi'^2)*sin(phi)/(m1 + m2*sin(phi)^2)", "phi'' = -(g*(m1 + m2) + l*m2*phi'^2*cos(phi))*sin(phi)/(l*(m1 + m2*sin(phi)^2))"),
+        'warnings': (),
+        'dims': {
+            'mass_matrix': None,
+            'stiffness_matrix': None,
+            'omega_1': Dim(name='angular rate', display='[angle]/[time]', check='1/[time]', si='rad/s', kind='angular-rate', angles=(1,)),
+            'omega_2': Dim(name='angular rate', display='[angle]/[time]', check='1/[time]', si='rad/s', kind='angular-rate', angles=(1,)),
+            'f_1': Dim(name='frequency', display='[cycles]/[time]', check='1/[time]', si='Hz', kind='cycle-rate', angles=(0,)),
+            'f_2': Dim(name='frequency', display='[cycles]/[time]', check='1/[time]', si='Hz', kind='cycle-rate', angles=(0,)),
+            'x_ddot': Dim(name='acceleration', display='[length]/[time]^2', check='[length]/[time]**2', si='m/s^2', kind='plain', angles=(0,)),
+            'phi_ddot': Dim(name='angular acceleration', display='[angle]/[time]^2', check='1/[time]**2', si='rad/s^2', kind='angular-rate', angles=(1,)),
+        },
+        'matrix_units': {'mass_matrix': (('kg', 'kg*m'), ('kg*m', 'kg*m^2')), 'stiffness_matrix': (('N/m', 'N/rad'), ('N/rad', 'N*m/rad'))},
     },
 }
