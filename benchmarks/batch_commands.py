@@ -132,6 +132,10 @@ CASES = [
     ("modes two-mass chain", ["modes"], "M,K", lambda r: _chain(r)),
     ("modes damped two-mass chain", ["modes"], "M,K,C", lambda r: _damped_chain(r)),
     ("modes non-proportional", ["modes"], "M,K,C", lambda r: _nonproportional_chain(r)),
+    ("modes coupled-blocks", ["modes", "--scene", "coupled-blocks"],
+     "m1 [kg],m2 [kg],k1 [N/m],k2 [N/m],k3 [N/m]",
+     lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
+                ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4), (1e2, 1e4))]),
     ("rigid-body drum-two-blocks", ["rigid-body", "--scene", "drum-two-blocks"],
      "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2]",
      lambda r: [f"{r.uniform(0.5, 50):.6g}", f"{r.uniform(0.5, 50):.6g}",

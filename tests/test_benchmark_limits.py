@@ -34,6 +34,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "inertia one disk a row", "inertia composite", "inertia placed composite",
                       "modes two-mass chain",
                       "modes damped two-mass chain", "modes non-proportional",
+                      "modes coupled-blocks",
                       "forced-response total response", "forced-response undamped",
                       "eom pendulum", "eom bead-on-rotating-ring", "eom coupled-blocks",
                       "rigid-body drum-two-blocks",
