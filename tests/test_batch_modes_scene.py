@@ -196,3 +196,21 @@ def test_a_scene_without_a_column_path_stays_row_by_row(tmp_path):
     assert status == 2 and err == ("Error: line 2: modes --scene block-disk-springs needs r= "
                                    "(the disk's radius): it cancels from the frequencies but "
                                    "not from the mode shapes\n")
+
+
+def test_with_a_scene_every_column_is_a_scene_parameter(tmp_path):
+    """block-disk-springs' M is the block's mass (it was read as --M and every row refused);
+    a matrix column K, or a result name, is no column of a scene's rows."""
+    path = tmp_path / "block.csv"
+    path.write_text("M [kg],m [kg],r [m],k [N/m]\n2,1,0.1,100\n")
+    status, out, err = _run(path, "block-disk-springs", False, False)
+    assert (status, err) == (0, "")
+    omega_1 = float(out.splitlines()[1].split(",")[4])
+    # E4.14: omega_1^2 = k ((2M + 5m) - sqrt(4M^2 - 4Mm + 17m^2)) / (2m (3M + m))
+    assert math.isclose(omega_1, math.sqrt(100 * (9 - math.sqrt(25)) / 14), rel_tol=1e-14)
+    for column in ("K", "omega_1"):
+        path.write_text(f"m1 [kg],m2 [kg],k1 [N/m],k2 [N/m],k3 [N/m],{column}\n1,2,3,4,5,6\n")
+        status, out, err = _run(path, "coupled-blocks", False, True)
+        assert (status, out) == (2, "")
+        assert err == (f"Error: line 1: unknown column '{column}'; modes --scene coupled-blocks "
+                       "reads m1, m2, k1, k2, k3\n")
