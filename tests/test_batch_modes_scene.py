@@ -14,6 +14,7 @@ import random
 import pytest
 
 from dyncalc.batch import run_batch
+from dyncalc.errors import InputError
 from dyncalc.batch.header import read_header
 from dyncalc.batch.rows import ModesRows
 
@@ -210,7 +211,7 @@ def test_with_a_scene_every_column_is_a_scene_parameter(tmp_path):
     assert math.isclose(omega_1, math.sqrt(100 * (9 - math.sqrt(25)) / 14), rel_tol=1e-14)
     for column in ("K", "omega_1"):
         path.write_text(f"m1 [kg],m2 [kg],k1 [N/m],k2 [N/m],k3 [N/m],{column}\n1,2,3,4,5,6\n")
-        status, out, err = _run(path, "coupled-blocks", False, True)
-        assert (status, out) == (2, "")
-        assert err == (f"Error: line 1: unknown column '{column}'; modes --scene coupled-blocks "
-                       "reads m1, m2, k1, k2, k3\n")
+        with pytest.raises(InputError) as caught:
+            _run(path, "coupled-blocks", False, True)
+        assert str(caught.value) == (f"line 1: unknown column '{column}'; modes --scene "
+                                     "coupled-blocks reads m1, m2, k1, k2, k3")
