@@ -48,6 +48,17 @@ def _damped_chain(r) -> list[str]:
             f'"[[{c11!r},{c12!r}],[{c12!r},{c22!r}]]"']
 
 
+def _nonproportional_chain(r) -> list[str]:
+    """:func:`_chain` with a dashpot from each mass to the ground, ``C = diag(c1, c2)``: not
+    proportional (the modes are complex), every mode underdamped (zeta about 0.01 to 0.05)."""
+    m1, m2, k1, k2 = (float(f"{r.uniform(lo, hi):.6g}") for lo, hi in
+                      ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4)))
+    c1, c2 = (float(f"{2.0 * r.uniform(0.01, 0.05) * (k * m) ** 0.5:.6g}")
+              for k, m in ((k1 + k2, m1), (k2, m2)))
+    return [f'"[[{m1!r},0],[0,{m2!r}]]"', f'"[[{k1 + k2!r},{-k2!r}],[{-k2!r},{k2!r}]]"',
+            f'"[[{c1!r},0],[0,{c2!r}]]"']
+
+
 def _annulus(r) -> list[str]:
     """A disk and a concentric hole (``-disk``), lighter and smaller: a valid composite."""
     m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
@@ -126,6 +137,11 @@ CASES = [
     ("inertia placed composite", ["inertia"], "b1,b2", lambda r: _bolt_hole(r)),
     ("modes two-mass chain", ["modes"], "M,K", lambda r: _chain(r)),
     ("modes damped two-mass chain", ["modes"], "M,K,C", lambda r: _damped_chain(r)),
+    ("modes non-proportional", ["modes"], "M,K,C", lambda r: _nonproportional_chain(r)),
+    ("modes coupled-blocks", ["modes", "--scene", "coupled-blocks"],
+     "m1 [kg],m2 [kg],k1 [N/m],k2 [N/m],k3 [N/m]",
+     lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
+                ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4), (1e2, 1e4))]),
     ("rigid-body drum-two-blocks", ["rigid-body", "--scene", "drum-two-blocks"],
      "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2]",
      lambda r: [f"{r.uniform(0.5, 50):.6g}", f"{r.uniform(0.5, 50):.6g}",

@@ -53,6 +53,9 @@ LIMITS = {
     "forced-response undamped": [str(LIMIT / "forced_undamped.py")],
     "modes two-mass chain": [str(LIMIT / "modes.py")],
     "modes damped two-mass chain": [str(LIMIT / "modes.py"), "damped"],
+    # round 8: damping that is not proportional, and scenes (issue 17, modesscene)
+    "modes non-proportional": [str(LIMIT / "modes_complex.py")],
+    "modes coupled-blocks": [str(LIMIT / "modes_scene.py")],
     # round 6: rigid-body scenes on column kernels (issue 17's brief, rigidbatch)
     "rigid-body drum-two-blocks": [str(LIMIT / "rigid_body.py"), "drum"],
     "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],

@@ -279,6 +279,11 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
         return None
     if getattr(out, "optional", False):
         return _split_by_results(spec, given, rows, cells, want_json, reads, good, out)
+    if getattr(out, "groups", None) is not None:  # results of other dimensions: apart
+        codes = np.asarray(out.groups)
+        return [block for code in np.unique(codes[good]).tolist()
+                if (block := _finish(spec, given, rows, cells, want_json, reads,
+                                     good & (codes == code), out, code)) is not None]
     return _finish(spec, given, rows, cells, want_json, reads, good, out)
 
 
@@ -324,9 +329,11 @@ def _patterns(present, index):
     return out
 
 
-def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock | None:
+def _finish(spec, given, rows, cells, want_json, reads, good, out,
+            group=None) -> FastBlock | None:
     """The block of the ``good`` rows of ``out``, where the probe agrees (the rows that warn,
-    ``out.warned``, or those that do not, whichever the first good row is)."""
+    ``out.warned``, or those that do not, whichever the first good row is); ``group``: the
+    rows' code of ``out.groups`` (each code probed on its own)."""
     warnings = ()
     if out.warned is not None and out.warned[good].any():
         first = bool(out.warned[int(np.argmax(good))])
@@ -339,7 +346,8 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out) -> FastBlock 
     # the others probe every block. A kind: the columns, the units typed, the results.
     probed = getattr(spec, "probed", None)
     key = (tuple(col.key for col in given), out.model, out.method, first_extra, warnings,
-           tuple(out.values), tuple(_unit_at(reads[col.key][0], first) for col in given))
+           tuple(out.values), tuple(_unit_at(reads[col.key][0], first) for col in given),
+           group)
     probe = probed.get(key) if probed is not None else None
     light = getattr(spec, "light_probe", None)  # eom: the generated table stands in for it
     if probe is None and light is not None and all(reads[col.key][0][4] == "number"
@@ -417,11 +425,20 @@ def _probe(spec, given, cells, row: int, out, values: dict, warnings: tuple = ()
             or (set(result.extra) - {"error_estimate"} if extra is None
                 else json.dumps(result.extra) != extra)):
         return None
+    rtol = getattr(spec, "probe_rtol", None)  # modes: within the documented tolerance
     for name, entry in result.results.items():
         mine = values[name]
-        if entry.uncertainty is not None or not _same(entry.si, mine):
+        if entry.uncertainty is not None or not (
+                _same(entry.si, mine) if rtol is None else _close(entry.si, mine, rtol)):
             return None
     return result
+
+
+def _close(theirs, mine, rtol: float) -> bool:
+    """Equal within ``rtol`` relative (a number or a vector, of the same shape)."""
+    a = np.asarray(theirs, dtype=float)
+    b = np.asarray(mine, dtype=float)
+    return a.shape == b.shape and bool(np.allclose(a, b, rtol=rtol, atol=0.0))
 
 
 def _same(theirs, mine) -> bool:

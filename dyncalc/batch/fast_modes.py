@@ -4,7 +4,8 @@ a unit, in the header, ``M [g]``, or after the matrix, ``"[[2, 0], [0, 1]] kg"``
 times the SI value of one unit, as the one-off reads them), with or without a ``C`` cell of
 the same kind (proportional damping: ``zeta_i``, ``omega_d_i``; damping that is not
 proportional from the state-space eigenvalues, a block of its own with the one-off's note;
-near-critical, overdamped or barely damped rows are the one-off's), grouped by
+the rows the stack leaves, near-critical, overdamped or barely damped, uncoupled, take the
+one-off's physics a row at a time: :mod:`dyncalc.batch.fast_modes_rows`), grouped by
 *template* (the cells with their numbers taken out: the same size, spelling and unit), their
 numbers read in one pass a column, solved on a stack
 (:func:`dyncalc.physics.modes_columns.stacked_modes`).
@@ -263,21 +264,34 @@ def _numbers(cells: list[str], n: int):
 
 def _blocks(spec, by_key, rows, cells, matrices, want_json, units, kind) -> list:
     """The blocks of the rows the kernel takes: undamped or proportionally damped, then (of
-    the rest, with C) damping that is not proportional (state-space eigenvalues)."""
+    the rest, with C) damping that is not proportional (state-space eigenvalues), then the
+    rest through the one-off's physics a row at a time, a block per model and notes."""
     from ..physics.modes_columns import stacked_modes
 
     normalize = spec.settings.get("normalize") or "max"
     out = stacked_modes(*matrices[:2], normalize, *matrices[2:])
     blocks = [_block(spec, by_key, rows, cells, matrices, want_json, units, kind, out)]
-    rest = np.flatnonzero(~np.asarray(out.exact, dtype=bool))
-    if len(matrices) == 3 and len(rest):
-        picked = rest.tolist()
-        cells = [[c[i] for i in picked] for c in cells]
-        matrices = [X[rest] for X in matrices]
+    left = np.flatnonzero(~np.asarray(out.exact, dtype=bool))
+    if len(matrices) == 3 and len(left):
+        rows, cells, matrices = _subset(rows, cells, matrices, left)
         out = stacked_modes(*matrices[:2], normalize, matrices[2], damping="complex")
-        blocks.append(_block(spec, by_key, rows[rest], cells, matrices, want_json, units, kind,
+        blocks.append(_block(spec, by_key, rows, cells, matrices, want_json, units, kind,
                              out))
+        left = np.flatnonzero(~np.asarray(out.exact, dtype=bool))
+    if len(left):  # the rest: the one-off's physics a row at a time, grouped by its notes
+        from .fast_modes_rows import rowwise_modes
+
+        rows, cells, matrices = _subset(rows, cells, matrices, left)
+        blocks += [_block(spec, by_key, rows, cells, matrices, want_json, units, kind, out)
+                   for out in rowwise_modes(*matrices[:2], matrices[2] if len(matrices) == 3
+                                            else None, normalize)]
     return [block for block in blocks if block is not None]
+
+
+def _subset(rows, cells, matrices, picked):
+    """These rows (``picked``: positions in ``rows``) of a block's rows, cells and matrices."""
+    at = picked.tolist()
+    return rows[picked], [[c[i] for i in at] for c in cells], [X[picked] for X in matrices]
 
 
 def _block(spec, by_key, rows, cells, matrices, want_json, units, kind, out):
@@ -291,7 +305,8 @@ def _block(spec, by_key, rows, cells, matrices, want_json, units, kind, out):
     keep = np.flatnonzero(good)
     first = int(keep[0])
     probed = getattr(spec, "probed", None)
-    kind = (kind, tuple(units), normalize, want_json, out.model, out.method, tuple(out.values))
+    kind = (kind, tuple(units), normalize, want_json, out.model, out.method, tuple(out.values),
+            out.warnings)
     known = probed.get(kind) if probed is not None else None
     if known is None:
         known = _probe(spec, by_key,

@@ -376,6 +376,25 @@ def ModesRows(*, scene: str | None = None, normalize: str | None = None,
         spec.fast = modes_fast
         spec.probed = {}  # one probe (a one-off) per kind of rows a run, not one per chunk
         spec.csv_rows = 8192  # up to 27 numbers a row read, 16 written: flat memory
+        return spec
+    # every column is a scene word (block-disk-springs' M is the block's mass, not --M); no
+    # result to solve from (modes has no inverse problems)
+    spec.columns, spec.scene_words = [], list(words)
+    spec.key = lambda name: name if name in spec.scene_words else None
+    spec.known = lambda: f"modes --scene {scene} reads {', '.join(spec.scene_words)}"
+    from ..commands.modes_scene_columns import SCENES, scene_columns
+
+    if get_scene(scene).name in SCENES:  # the scene's matrices on columns, then the stack
+        from ..commands.record import Parameter
+        from .fast_commands import _command_fast
+        from .fast_modes import PROBE_RTOL
+
+        params = {p.name: Parameter(p.name, p.dim, p.description)
+                  for p in get_scene(scene).params}
+        spec.parameter = params.get
+        spec.adapter, spec.fast = scene_columns, _command_fast
+        spec.probe_rtol = PROBE_RTOL  # the stack rounds otherwise than sygvd (1e-12)
+        spec.probed = {}  # one probe (a one-off) per kind of block a run
     return spec
 
 

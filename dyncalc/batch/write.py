@@ -234,9 +234,15 @@ class _Writer:
                 self.check_unit(name, dim)
             target = self.units.get(name, dim.si) if self.as_json else self.col_units[name]
             if target != dim.si:  # the arrays are SI
-                with np.errstate(over="ignore", under="ignore"):
-                    array = np.asarray(convert(array, dim, target, label=f"--unit {name}",
-                                               name=name), dtype=float)
+                try:
+                    with np.errstate(over="ignore", under="ignore"):
+                        array = np.asarray(convert(array, dim, target, label=f"--unit {name}",
+                                                   name=name), dtype=float)
+                except InputError:
+                    if self.as_json:
+                        raise
+                    # (a modal mass in kg under a kg*m^2 column: the one-off's row message)
+                    return _Failure(self._not_shown(name, target, dim))
             shown[name] = (_number_parts(array, self.as_json), target)
         if self.as_json:
             parts: list = []
@@ -254,6 +260,11 @@ class _Writer:
             if name in self.uncertain:  # no uncertainty on this path: an empty u(NAME)
                 parts.append(",")
         return parts
+
+    @staticmethod
+    def _not_shown(name: str, unit: str, dim) -> str:
+        return (f"its {name} cannot be shown in the column's unit {unit} (it is a "
+                f"{dim.name if dim else 'word'}); give such rows a file of their own")
 
     def _not_a_column(self, name: str) -> str:
         return (f"its result {name} is not a column of the output (the columns come from the "
@@ -291,10 +302,7 @@ class _Writer:
                     sigma = entry.uncertainty_in(self.col_units[name])
                     row.append("" if sigma is None else encode.full_number(sigma))
             except InputError:
-                raise _Failure(f"its {name} cannot be shown in the column's unit "
-                               f"{self.col_units[name]} (it is a "
-                               f"{entry.dim.name if entry.dim else 'word'}); give such rows a "
-                               "file of their own") from None
+                raise _Failure(self._not_shown(name, self.col_units[name], entry.dim)) from None
         return _csv_lines([row])[0]
 
 

@@ -41,21 +41,24 @@ class Columns(Record):
     directions), a function of the rows kept (an index array) giving the parts of their JSON
     ``extra`` objects (texts every line shares and lists of one text a row, as
     :func:`dyncalc.batch.assemble.lines` takes them); ``None``: no ``extra``.
+    ``groups``: an integer a row where rows differ in their results' dimensions (a mode's
+    modal mass in kg or kg*m^2): the batch keeps rows of one code together, each code
+    probed on its own; ``None``: one group.
     """
 
     _FIELDS = ("values", "exact", "model", "method", "error_estimate", "optional",
-               "warnings", "warned", "extras")
+               "warnings", "warned", "extras", "groups")
     __slots__ = _FIELDS
     __hash__ = None
 
     def __init__(self, values: dict[str, Any], exact: Any, model: str = "linear",
                  method: str = "closed-form", error_estimate: float | None = None,
                  optional: bool = False, warnings: tuple[str, ...] = (), warned: Any = None,
-                 extras: Any = None):
+                 extras: Any = None, groups: Any = None):
         self.values, self.exact, self.model, self.method, self.error_estimate = (
             values, exact, model, method, error_estimate)
         self.optional, self.warnings, self.warned = optional, tuple(warnings), warned
-        self.extras = extras
+        self.extras, self.groups = extras, groups
 
 
 class TypedColumn(Record):
