@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import functools
 import json
+import operator
 import re
 
 import numpy as np
@@ -26,6 +27,8 @@ _CELL_RE = re.compile(rf"[ \t]*([+-]?(?>{_LITERAL}))[ \t]*({_SIMPLE_UNIT})?[ \t]
 #: Every line of a column joined by line breaks, split in one pass into the number and the
 #: rest (which must then be a simple unit, checked once per distinct unit).
 _CELL_LINE_RE = re.compile(rf"^[ \t]*([+-]?(?>{_LITERAL}))[ \t]*(.*)$", re.M)
+#: Number literals, one a line, each whole (what ``_CELL_LINE_RE`` reads as a cell's number).
+_LITERALS_RE = re.compile(rf"{_LITERAL_CELL}(?:\n{_LITERAL_CELL})*")
 _PLAIN_COLUMN_CHARS_RE = re.compile(r"[0-9.eE+\- \t\n]*")
 #: A number with a leading zero (``007``), which the one-off reader refuses; an exponent's
 #: zero (``1e-05``) is not one.
@@ -168,8 +171,12 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
     if plain is None:
         plain = _plain_floats(cells)
     groups: dict[str, tuple[list[int] | None, np.ndarray, list[str]]] = {}
+    one_unit = _one_unit(cells) if plain is None else None
     if plain is not None:
         groups[header_unit] = (None, plain, cells)
+    elif one_unit is not None:  # what the one pass below gives such a column, sooner
+        literals, unit, values = one_unit
+        groups[unit] = (None, values, literals)
     else:
         joined = "\n".join(cells)
         pairs = _CELL_LINE_RE.findall(joined) if n else []
@@ -205,6 +212,34 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
                 lits = [literals[i] for i in rows]
                 groups[unit] = (rows, np.array(list(map(float, lits)), dtype=float), lits)
     return _converted(out, groups, param, strict, cache)
+
+
+def _one_unit(cells) -> tuple[list[str], str, np.ndarray] | None:
+    """``(literals, unit, values)`` of a column whose every cell is a plain number followed by
+    the first cell's text after its number (the same blanks and simple unit: ``2.5 m``,
+    ``-1e3 m``), split by slicing off that text instead of a regex pass a cell; ``None``
+    otherwise. It is what :data:`_CELL_LINE_RE` gives such a column: every literal is checked
+    to be a whole number literal in one pass, and a text after the number that starts with an
+    exponent's letter (``e5m``) is left to the regex, which could read ``2e5m`` otherwise.
+
+    Example: ``["2 m", "0.5 m"]`` gives ``(["2", "0.5"], "m", array([2. , 0.5]))``."""
+    first = _CELL_RE.fullmatch(cells[0]) if len(cells) else None
+    if first is None or not first.group(2) or not cells[0].startswith(first.group(1)):
+        return None
+    suffix = cells[0][len(first.group(1)):]
+    if suffix[0] in "eE" or suffix != suffix.rstrip(" \t") \
+            or not all(map(operator.methodcaller("endswith", suffix), cells)):
+        return None
+    cut = len(suffix)
+    literals = [cell[:-cut] for cell in cells]
+    joined = "\n".join(literals)
+    if " " in joined or "\t" in joined or not _LITERALS_RE.fullmatch(joined):
+        return None
+    unit = first.group(2).strip(" \t")
+    values = _plain_floats(literals)
+    if values is None or not _SIMPLE_UNIT_RE.fullmatch(unit):
+        return None
+    return literals, unit, values
 
 
 def read_literals(literals: list[str], unit: str, param, strict: bool, cache: dict,
