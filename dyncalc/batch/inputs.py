@@ -3,10 +3,19 @@
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 
-from .header import with_header_unit
+from .header import _PLAIN_RE, with_header_unit
+
+_PLAIN = _PLAIN_RE.pattern
+
+#: A character ``json.dumps`` writes escaped (``"``, ``\\``, and all but printable ASCII):
+#: a text without one is written as ``"`` + text + ``"``.
+_ESCAPED_RE = re.compile(r'["\\\\]|[^ -~]')
+#: Cells that are each a plain number (``with_header_unit`` appends the header's unit).
+_PLAIN_LINES_RE = re.compile(rf"{_PLAIN}(?:\n{_PLAIN})*")
 
 
 def input_parts(inputs, keep: np.ndarray, words: dict) -> list:
@@ -50,7 +59,17 @@ def _number_parts(name, read, column, header_unit, plain_column, keep, n) -> lis
             typed = [c.strip() for c in typed]
         text = ['"', typed, suffix + '"']
     else:
-        text = [[json.dumps(with_header_unit(c.strip(), header_unit)) for c in typed]]
+        texts = [c.strip() for c in typed]
+        lines = "\n".join(texts)
+        if header_unit and lines.count("\n") == len(texts) - 1 \
+                and _PLAIN_LINES_RE.fullmatch(lines):
+            texts, tail = texts, " " + header_unit  # with_header_unit of a plain number
+        elif header_unit:
+            texts, tail = [with_header_unit(c, header_unit) for c in texts], ""
+        else:
+            texts, tail = texts, ""
+        text = ['"', texts, tail + '"'] if not _ESCAPED_RE.search("".join(texts) + tail) \
+            else [[json.dumps(c + tail) for c in texts]]
     if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
         unit, assumed = unit_json[0]
         return [prefix, np.asarray(shown, dtype=np.float64), ', "unit": ' + unit + ', "text": ',
