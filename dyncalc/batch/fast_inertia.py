@@ -17,7 +17,7 @@ import numpy as np
 
 from .columns import _LITERAL_CELL, _read_column
 from .fast import FastBlock, json_head
-from .inertia_probe import _dim, _Param, _probe, _probe_inputs
+from .inertia_probe import _dim, _Param, _probed
 
 __all__ = ["inertia_fast"]
 
@@ -231,7 +231,7 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
                  for column, (kind, keys, slots, sign), _l in parts))
     if key not in cache:
         found = _probed(spec, parts, rows, body_cells, bodies, axis, want_json, out, first,
-                        reads)
+                        lambda i: _entries(reads, np.array([i]), 1)[0])
         if found is None:
             return None
         cache[key] = found
@@ -242,27 +242,6 @@ def _block(spec, parts, rows, body_cells, bodies, axis: str, want_json, cache):
         head = json_head("inertia", None, out.model, method)
         inputs = _entries(reads, keep, None) + ([tail] if tail else [])
     return FastBlock(rows[keep], values, result_dims, head, inputs)
-
-
-def _probed(spec, parts, rows, body_cells, bodies, axis, want_json, out, first, reads):
-    """``(method, result dimensions, JSON axis entry)`` of a block from the one-off's result
-    of its row ``first`` (:func:`~.inertia_probe._probe`), or ``None`` where that result is
-    not the kernel's to the bit or its input entries not those :func:`_entries` assembles."""
-    row = int(rows[first])
-    texts = {column.key: body_cells[bodies.index(column)][row] for column, _s, _l in parts}
-    labels = {column.key: column.name for column, _s, _l in parts}
-    if axis.strip():
-        texts["axis"], labels["axis"] = axis.strip(), "axis"
-    probe = _probe(spec, texts, labels, out, first)
-    if probe is None:
-        return None
-    tail = ""
-    if want_json:  # the axis entry, the same on every row: the probe's
-        mine, theirs = _entries(reads, np.array([first]), 1)[0], _probe_inputs(probe)
-        tail = theirs[len(mine):]
-        if not theirs.startswith(mine) or (tail and not tail.startswith(', "axis": ')):
-            return None
-    return probe.method, {name: e.dim for name, e in probe.results.items()}, tail
 
 
 def _world_axis(axis: str) -> bool:

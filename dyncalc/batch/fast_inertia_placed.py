@@ -105,7 +105,7 @@ def placed_block(spec, parts, rows, body_cells, bodies, axis: str, want_json, ca
     from ..errors import InputError
     from ..physics.inertia import mass_from_density
     from ..physics.inertia_placed_columns import placed_composite
-    from .inertia_probe import _dim, _Param, _probe, _probe_inputs
+    from .inertia_probe import _dim, _Param, _probed
 
     about = None
     if axis.strip():
@@ -153,28 +153,17 @@ def placed_block(spec, parts, rows, body_cells, bodies, axis: str, want_json, ca
         return None
     keep = np.flatnonzero(good)
     first = int(keep[0])
-    row = int(rows[first])
-    texts = {column.key: body_cells[bodies.index(column)][row] for column, _s, _l in parts}
-    labels = {column.key: column.name for column, _s, _l in parts}
-    if axis.strip():
-        texts["axis"], labels["axis"] = axis.strip(), "axis"
-    probe = _probe(spec, texts, labels, out, first)
-    if probe is None:
-        return None
-    tail = ""
-    if want_json:
-        from . import assemble
+    from . import assemble
 
-        mine = assemble.lines(_entries(reads, np.array([first])), 1)[0]
-        theirs = _probe_inputs(probe)
-        tail = theirs[len(mine):]
-        if not theirs.startswith(mine) or (tail and not tail.startswith(', "axis": ')):
-            return None
+    found = _probed(spec, parts, rows, body_cells, bodies, axis, want_json, out, first,
+                    lambda i: assemble.lines(_entries(reads, np.array([i])), 1)[0])
+    if found is None:
+        return None
+    method, result_dims, tail = found
     values = {name: array[keep] for name, array in out.values.items()}
-    result_dims = {name: entry.dim for name, entry in probe.results.items()}
     head = inputs = None
     if want_json:
-        head = json_head("inertia", None, out.model, probe.method)
+        head = json_head("inertia", None, out.model, method)
         inputs = _entries(reads, keep) + ([tail] if tail else [])
     return FastBlock(rows[keep], values, result_dims, head, inputs)
 

@@ -7,7 +7,7 @@ import json
 
 from ..errors import InputError
 
-__all__ = ["_Param", "_dim", "_probe", "_probe_inputs"]
+__all__ = ["_Param", "_dim", "_probe", "_probe_inputs", "_probed"]
 
 
 class _Param:
@@ -51,3 +51,25 @@ def _probe_inputs(result) -> str:
     from ..result.encode import _json_inputs
 
     return json.dumps(_json_inputs(result.inputs))[1:-1]
+
+
+def _probed(spec, parts, rows, body_cells, bodies, axis, want_json, out, first, inputs_of):
+    """``(method, result dimensions, JSON axis entry)`` of a block from the one-off's result
+    of its row ``first`` (:func:`~.inertia_probe._probe`), or ``None`` where that result is
+    not the kernel's to the bit or its input entries not those the path assembles
+    (``inputs_of(i)``: the JSON text of row ``i``'s input entries, as the path writes them)."""
+    row = int(rows[first])
+    texts = {column.key: body_cells[bodies.index(column)][row] for column, _s, _l in parts}
+    labels = {column.key: column.name for column, _s, _l in parts}
+    if axis.strip():
+        texts["axis"], labels["axis"] = axis.strip(), "axis"
+    probe = _probe(spec, texts, labels, out, first)
+    if probe is None:
+        return None
+    tail = ""
+    if want_json:  # the axis entry, the same on every row: the probe's
+        mine, theirs = inputs_of(first), _probe_inputs(probe)
+        tail = theirs[len(mine):]
+        if not theirs.startswith(mine) or (tail and not tail.startswith(', "axis": ')):
+            return None
+    return probe.method, {name: e.dim for name, e in probe.results.items()}, tail
