@@ -65,16 +65,22 @@ def _inverse_blocks(spec, columns, table, want_json: bool, cache: dict) -> list[
     if len(targets) != 1:
         return []
     target = targets[0]
+    return asked_blocks(columns, _PARAMS, cells, n, lambda given, unknown, rows: _solved(
+        spec, given, unknown, target, rows, cells, want_json, cache))
+
+
+def asked_blocks(columns, unknowns, cells: dict, n: int, solve) -> list[FastBlock]:
+    """The blocks of the rows that ask for one of the columns keyed in ``unknowns`` (``?`` in
+    it) and give every other column: ``solve(given, unknown, rows)`` an unknown at a time."""
     blocks = []
-    for unknown in (col for col in columns if col.key in _PARAMS):
+    for unknown in (col for col in columns if col.key in unknowns):
         given = [col for col in columns if col is not unknown]
         mask = np.fromiter((c == "?" for c in cells[unknown.key]), dtype=bool, count=n)
         for col in given:
             mask &= np.fromiter((c not in ("", "?") for c in cells[col.key]), dtype=bool,
                                 count=n)
         if mask.any():
-            blocks += _solved(spec, given, unknown, target, np.flatnonzero(mask), cells,
-                              want_json, cache)
+            blocks += solve(given, unknown, np.flatnonzero(mask))
     return blocks
 
 

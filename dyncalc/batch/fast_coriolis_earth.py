@@ -18,7 +18,7 @@ import numpy as np
 
 from .fast import FastBlock, _input_texts, json_head
 from .fast_commands import _inputs, _read_rows, _stripped, _typed_units
-from .fast_coriolis import _probe, _TargetParam, coriolis_fast
+from .fast_coriolis import _probe, _TargetParam, asked_blocks, coriolis_fast
 
 #: The columns an Earth inverse row may give, by the scene parameter each gives.
 _PARAMS = {"latitude": "latitude", "vr": "vr", "speed": "vr", "heading": "heading",
@@ -74,17 +74,8 @@ def earth_inverse_blocks(spec, columns, table, want_json: bool, cache: dict) -> 
         return []
     cells = {col.key: _stripped(table[col.index]) for col in columns}
     n = len(cells[keys[0]])
-    blocks = []
-    for unknown in (col for col in columns if col.key in _SOLVED):
-        given = [col for col in columns if col is not unknown]
-        mask = np.fromiter((c == "?" for c in cells[unknown.key]), dtype=bool, count=n)
-        for col in given:
-            mask &= np.fromiter((c not in ("", "?") for c in cells[col.key]), dtype=bool,
-                                count=n)
-        if mask.any():
-            blocks += _solved(spec, given, unknown, targets[0], np.flatnonzero(mask), cells,
-                              want_json, cache)
-    return blocks
+    return asked_blocks(columns, _SOLVED, cells, n, lambda given, unknown, rows: _solved(
+        spec, given, unknown, targets[0], rows, cells, want_json, cache))
 
 
 def _solved(spec, given, unknown, target, rows, cells, want_json, cache) -> list[FastBlock]:
