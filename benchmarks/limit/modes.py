@@ -8,20 +8,11 @@ The same math as dyncalc's stacked path: ``M = L L^T``, eigh of ``L^-1 K L^-T``,
 shapes ``V`` and ``omega_d_i = omega_i sqrt((1 - zeta_i)(1 + zeta_i))``."""
 import sys
 import json
-import math
 
 import numpy as np
-import polars as pl
 
-from _limit import arguments, csv_line, json_lines, json_result, read, text
-
-
-def matrices(df, column):
-    cells = df[column].str.replace_all(r"[\[\] ]", "")
-    parts = cells.str.split_exact(",", 3).struct.unnest()
-    return np.column_stack([parts[c].cast(pl.Float64).to_numpy()
-                            for c in parts.columns]).reshape(-1, 2, 2)
-
+from _limit import arguments, json_lines, json_result, read, text
+from _modes import matrices, pair, undamped, undamped_values, write_csv
 
 damped = sys.argv[1] == "damped"  # modes.py [damped] FILE [--json]
 if damped:
@@ -34,31 +25,9 @@ K = (K + K.transpose(0, 2, 1)) / 2.0
 if damped:
     C = matrices(df, "C")
     C = (C + C.transpose(0, 2, 1)) / 2.0
-L = np.linalg.cholesky(M)
-A = np.linalg.solve(L, np.linalg.solve(L, K).transpose(0, 2, 1))
-lam, W = np.linalg.eigh((A + A.transpose(0, 2, 1)) / 2.0)
-V = np.linalg.solve(L.transpose(0, 2, 1), W)
+_L, _A, V, omega, shapes, modal_mass, modal_stiffness = undamped(M, K)
 rows, n = len(M), 2
-reference = np.argmax(np.abs(V), axis=1)
-r, cols = np.arange(rows)[:, None], np.arange(n)[None, :]
-shapes = V / V[r, reference, cols][:, None, :]
-largest = np.abs(shapes[r, reference, cols])
-shapes = np.where(np.abs(shapes) < 2.0 ** -46 * largest[:, None, :], 0.0, shapes) + 0.0
-shapes[r, reference, cols] = 1.0
-omega = np.sqrt(lam)
-modal_mass = np.sum(shapes * (M @ shapes), axis=1)
-modal_stiffness = np.sum(shapes * (K @ shapes), axis=1)
-values, units = {}, {}
-for i in range(n):
-    values[f"omega_{i + 1}"], units[f"omega_{i + 1}"] = text(omega[:, i]), "rad/s"
-for i in range(n):
-    values[f"f_{i + 1}"], units[f"f_{i + 1}"] = text(omega[:, i] / (2.0 * math.pi)), "Hz"
-for i in range(n):
-    values[f"mode_{i + 1}"] = (shapes[:, 0, i], shapes[:, 1, i])
-    units[f"mode_{i + 1}"] = ""
-    values[f"modal_mass_{i + 1}"], units[f"modal_mass_{i + 1}"] = text(modal_mass[:, i]), "kg"
-    values[f"modal_stiffness_{i + 1}"] = text(modal_stiffness[:, i])
-    units[f"modal_stiffness_{i + 1}"] = "N/m"
+values, units = undamped_values(omega, shapes, modal_mass, modal_stiffness)
 if damped:
     zeta = np.diagonal(V.transpose(0, 2, 1) @ C @ V, axis1=1, axis2=2) / (2.0 * omega)
     omega_d = omega * np.sqrt((1.0 - zeta) * (1.0 + zeta))
@@ -66,13 +35,6 @@ if damped:
         values[f"zeta_{i + 1}"], units[f"zeta_{i + 1}"] = text(zeta[:, i]), ""
     for i in range(n):
         values[f"omega_d_{i + 1}"], units[f"omega_d_{i + 1}"] = text(omega_d[:, i]), "rad/s"
-
-
-def pair(a, b):
-    """Two float columns as ``[a, b]`` (JSON)."""
-    return pl.concat_str([pl.lit("["), pl.lit(text(a)), pl.lit(", "), pl.lit(text(b)),
-                          pl.lit("]")])
-
 
 if as_json:
     head = ('"schema": "dyncalc/2", "command": "modes", "scene": null, '
@@ -93,6 +55,4 @@ if as_json:
                         "normalize": "max"})
     json_lines(rows, head, inputs, results, extra)
 else:
-    shown = {name: pl.concat_str([pl.lit(text(value[0])), pl.lit(","), pl.lit(text(value[1]))])
-             if isinstance(value, tuple) else value for name, value in values.items()}
-    csv_line(df, shown, {name: f"{name} [{u}]" if u else name for name, u in units.items()})
+    write_csv(df, values, units)

@@ -8,45 +8,26 @@ eigh of ``A = L^-1 K L^-T``, shapes ``V = L^-T w`` scaled to a largest component
 reduced state-space matrix ``[[0, I], [-A, -L^-1 C L^-T]]``, its eigenvalues with ``Im s >
 0`` by ascending ``|s|``, each matched to the free undamped mode of nearest omega:
 ``zeta = -Re s / |s|``, ``omega_d = Im s``."""
-import math
 import sys
 
 import numpy as np
 import polars as pl
 
-from _limit import arguments, csv_line, json_result, read, text, write
+from _limit import arguments, json_result, read, text, write
+from _modes import matrices, pair, undamped, undamped_values, write_csv
 
 NOTE = ("the damping is not proportional (Phi^T C Phi is not diagonal: C M^-1 K != K M^-1 C), "
         "so the modes are complex; zeta_i and omega_d_i come from the eigenvalues s = -zeta "
         "omega +- i omega_d of the state-space form, and mode_i are the undamped mode shapes")
 
 
-def matrices(df, column):
-    cells = df[column].str.replace_all(r"[\[\] ]", "")
-    parts = cells.str.split_exact(",", 3).struct.unnest()
-    return np.column_stack([parts[c].cast(pl.Float64).to_numpy()
-                            for c in parts.columns]).reshape(-1, 2, 2)
-
-
 path, as_json = arguments()
 df = read(path)
 M, K, C = (matrices(df, name) for name in ("M", "K", "C"))
 M, K, C = ((X + X.transpose(0, 2, 1)) / 2.0 for X in (M, K, C))
-L = np.linalg.cholesky(M)
-A = np.linalg.solve(L, np.linalg.solve(L, K).transpose(0, 2, 1))
-A = (A + A.transpose(0, 2, 1)) / 2.0
-lam, W = np.linalg.eigh(A)
-V = np.linalg.solve(L.transpose(0, 2, 1), W)
+L, A, V, omega, shapes, modal_mass, modal_stiffness = undamped(M, K)
 rows, n = len(M), 2
-reference = np.argmax(np.abs(V), axis=1)
-r, cols = np.arange(rows)[:, None], np.arange(n)[None, :]
-shapes = V / V[r, reference, cols][:, None, :]
-largest = np.abs(shapes[r, reference, cols])
-shapes = np.where(np.abs(shapes) < 2.0 ** -46 * largest[:, None, :], 0.0, shapes) + 0.0
-shapes[r, reference, cols] = 1.0
-omega = np.sqrt(lam)
-modal_mass = np.sum(shapes * (M @ shapes), axis=1)
-modal_stiffness = np.sum(shapes * (K @ shapes), axis=1)
+r = np.arange(rows)[:, None]
 Cr = np.linalg.solve(L, np.linalg.solve(L, C).transpose(0, 2, 1))
 state = np.zeros((rows, 2 * n, 2 * n))
 state[:, :n, n:] = np.eye(n)
@@ -65,27 +46,11 @@ for j in range(n):  # the nearest free undamped mode, a mode at a time
     free[k, nearest] = False
     zeta[k, nearest] = -picked[:, j].real / np.abs(picked[:, j])
     omega_d[k, nearest] = picked[:, j].imag
-values, units = {}, {}
-for i in range(n):
-    values[f"omega_{i + 1}"], units[f"omega_{i + 1}"] = text(omega[:, i]), "rad/s"
-for i in range(n):
-    values[f"f_{i + 1}"], units[f"f_{i + 1}"] = text(omega[:, i] / (2.0 * math.pi)), "Hz"
-for i in range(n):
-    values[f"mode_{i + 1}"] = (shapes[:, 0, i], shapes[:, 1, i])
-    units[f"mode_{i + 1}"] = ""
-    values[f"modal_mass_{i + 1}"], units[f"modal_mass_{i + 1}"] = text(modal_mass[:, i]), "kg"
-    values[f"modal_stiffness_{i + 1}"] = text(modal_stiffness[:, i])
-    units[f"modal_stiffness_{i + 1}"] = "N/m"
+values, units = undamped_values(omega, shapes, modal_mass, modal_stiffness)
 for i in range(n):
     values[f"zeta_{i + 1}"], units[f"zeta_{i + 1}"] = text(zeta[:, i]), ""
 for i in range(n):
     values[f"omega_d_{i + 1}"], units[f"omega_d_{i + 1}"] = text(omega_d[:, i]), "rad/s"
-
-
-def pair(a, b):
-    """Two float columns as ``[a, b]`` (JSON)."""
-    return pl.concat_str([pl.lit("["), pl.lit(text(a)), pl.lit(", "), pl.lit(text(b)),
-                          pl.lit("]")])
 
 
 if as_json:
@@ -107,9 +72,7 @@ if as_json:
     write(['{"line": ', line, ", " + head + ', "inputs": {', *inputs, '}, "results": {',
            *results, '}, "warnings": ["' + NOTE + '"], "extra": ' + extra + "}"])
 else:
-    shown = {name: pl.concat_str([pl.lit(text(value[0])), pl.lit(","), pl.lit(text(value[1]))])
-             if isinstance(value, tuple) else value for name, value in values.items()}
-    csv_line(df, shown, {name: f"{name} [{u}]" if u else name for name, u in units.items()})
+    write_csv(df, values, units)
     sys.stdout.flush()
     lines = pl.select(pl.concat_str([pl.lit("warning: line "),
                                      pl.Series(np.arange(2, rows + 2)).cast(pl.String),
