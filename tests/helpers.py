@@ -64,3 +64,38 @@ def on_a_terminal(argv: list[str], env: dict[str, str]) -> tuple[int, bytes, byt
         chunks.append(chunk)
     os.close(master)
     return proc.wait(timeout=60), b"".join(chunks), proc.stderr.read()
+
+
+def batch_run(args, stdin):
+    """``dyncalc ARGS`` in-process with ``stdin`` as its standard input (a batch read from
+    ``-``)."""
+    return CliRunner().invoke(cli, list(args), input=stdin)
+
+
+def fast_same_as_generic(monkeypatch, args, stdin):
+    """The batch run of ``args`` on the vectorised path, asserting the same exit status,
+    stdout and stderr as the generic (one-off a row) path (``DYNCALC_BATCH_GENERIC=1``)."""
+    from dyncalc.batch import GENERIC_ENV
+
+    fast = batch_run(args, stdin)
+    monkeypatch.setenv(GENERIC_ENV, "1")
+    generic = batch_run(args, stdin)
+    monkeypatch.delenv(GENERIC_ENV)
+    assert (fast.exit_code, fast.stdout, fast.stderr) == (
+        generic.exit_code, generic.stdout, generic.stderr)
+    return fast
+
+
+def count_block_rows(monkeypatch, module, name: str = "_solved") -> list:
+    """The number of rows of each block ``module.name`` returns (it is wrapped): how many
+    rows a vectorised path took."""
+    counts = []
+    original = getattr(module, name)
+
+    def counting(*args):
+        blocks = original(*args)
+        counts.extend(len(block.rows) for block in blocks)
+        return blocks
+
+    monkeypatch.setattr(module, name, counting)
+    return counts

@@ -10,42 +10,17 @@ import math
 
 import numpy as np
 import pytest
-from click.testing import CliRunner
 
-from dyncalc.batch import GENERIC_ENV
-from dyncalc.cli import cli
 from dyncalc.constants import EARTH_RATE
+from helpers import batch_run, count_block_rows, fast_same_as_generic
 
 SEED = 1124
-
-
-def _run(args, stdin):
-    return CliRunner().invoke(cli, args, input=stdin)
 
 
 def _solved_rows(monkeypatch) -> list:
     from dyncalc.batch import fast_coriolis_earth
 
-    solved = []
-    original = fast_coriolis_earth._solved
-
-    def counting(*args):
-        blocks = original(*args)
-        solved.extend(len(block.rows) for block in blocks)
-        return blocks
-
-    monkeypatch.setattr(fast_coriolis_earth, "_solved", counting)
-    return solved
-
-
-def _fast_and_generic(monkeypatch, args, text):
-    fast = _run(args, text)
-    monkeypatch.setenv(GENERIC_ENV, "1")
-    generic = _run(args, text)
-    monkeypatch.delenv(GENERIC_ENV)
-    assert (fast.exit_code, fast.stdout, fast.stderr) == (
-        generic.exit_code, generic.stdout, generic.stderr)
-    return fast
+    return count_block_rows(monkeypatch, fast_coriolis_earth)
 
 
 def _cell(rng, name: str) -> str:
@@ -106,7 +81,7 @@ def test_earth_inverse_rows_on_columns_are_the_one_off(monkeypatch, header, unkn
         rows.append(",".join(cells))
     solved = _solved_rows(monkeypatch)
     args = ["coriolis", "--batch", "-", "--on-error", "skip"] + (["--json"] if as_json else [])
-    fast = _fast_and_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
+    fast = fast_same_as_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
     assert sum(solved) >= share * 100
     assert fast.exit_code == 2 and "Error: line" in fast.stderr
 
@@ -115,15 +90,15 @@ def test_earth_inverse_numbers():
     """|a_c,h| = 2 Omega_E v |sin phi|: v = 1e-4 / (2 Omega_E sin 45 deg) at 45 deg, and the
     latitude asin(1e-4 / (2 Omega_E 10 m/s)) at 10 m/s, in radians (bracketed: the one-off's grid and
     Brent's method, to the last bits of asin)."""
-    out = _run(["coriolis", "--batch", "-", "--json"],
-               "a_c_horizontal_mag [m/s^2],latitude [deg],vr\n1e-4,45,?\n"
-               "a_c_horizontal_mag [m/s^2],latitude,vr [m/s]\n")
+    out = batch_run(["coriolis", "--batch", "-", "--json"],
+                    "a_c_horizontal_mag [m/s^2],latitude [deg],vr\n1e-4,45,?\n"
+                    "a_c_horizontal_mag [m/s^2],latitude,vr [m/s]\n")
     line = json.loads(out.stdout.splitlines()[0])
     assert line["results"]["vr"]["value"] == pytest.approx(
         1e-4 / (2 * EARTH_RATE * math.sqrt(0.5)), rel=1e-14)
     assert line["extra"]["inverse"]["method"] == "closed-form"
-    out = _run(["coriolis", "--batch", "-", "--json"],
-               "a_c_horizontal_mag [m/s^2],vr [m/s],latitude\n0.0001,10,?\n")
+    out = batch_run(["coriolis", "--batch", "-", "--json"],
+                    "a_c_horizontal_mag [m/s^2],vr [m/s],latitude\n0.0001,10,?\n")
     line = json.loads(out.stdout)
     assert line["results"]["latitude"] == {
         "value": pytest.approx(math.asin(1e-4 / (2 * EARTH_RATE * 10)), rel=1e-12),

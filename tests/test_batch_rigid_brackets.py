@@ -9,16 +9,9 @@ import json
 
 import numpy as np
 import pytest
-from click.testing import CliRunner
-
-from dyncalc.batch import GENERIC_ENV
-from dyncalc.cli import cli
+from helpers import batch_run, fast_same_as_generic
 
 SEED = 20261125
-
-
-def _run(args, stdin):
-    return CliRunner().invoke(cli, args, input=stdin)
 
 
 def _bracketed_rows(monkeypatch) -> list:
@@ -35,16 +28,6 @@ def _bracketed_rows(monkeypatch) -> list:
 
     monkeypatch.setattr(inverse_monotone, "monotone_columns", counting)
     return solved
-
-
-def _fast_and_generic(monkeypatch, args, text):
-    fast = _run(args, text)
-    monkeypatch.setenv(GENERIC_ENV, "1")
-    generic = _run(args, text)
-    monkeypatch.delenv(GENERIC_ENV)
-    assert (fast.exit_code, fast.stdout, fast.stderr) == (
-        generic.exit_code, generic.stdout, generic.stderr)
-    return fast
 
 
 G = 9.80665
@@ -110,7 +93,7 @@ def test_bracketed_rows_on_columns_are_the_one_off(monkeypatch, scene, header, u
     solved = _bracketed_rows(monkeypatch)
     args = ["rigid-body", "--scene", scene, "--batch", "-", "--on-error", "skip"] + (
         ["--json"] if as_json else [])
-    fast = _fast_and_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
+    fast = fast_same_as_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
     assert sum(solved) >= share * 60
     assert fast.exit_code == 2 and "Error: line" in fast.stderr
 
@@ -118,9 +101,9 @@ def test_bracketed_rows_on_columns_are_the_one_off(monkeypatch, scene, header, u
 def test_bracketed_numbers_and_method():
     """drum-two-blocks: J_A = (m2 r2 - m1 r1) g / alpha - m1 r1^2 - m2 r2^2 (the formula turned
     around: a second derivation); beam-spun-up: M0 = alpha m l^2 / 3, of either sign."""
-    out = _run(["rigid-body", "--scene", "drum-two-blocks", "--batch", "-", "--json"],
-               "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2],alpha [rad/s^2]\n"
-               "20,15,0.2,0.4,?,3\n20,15,0.2,0.4,,2\n")
+    out = batch_run(["rigid-body", "--scene", "drum-two-blocks", "--batch", "-", "--json"],
+                    "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2],alpha [rad/s^2]\n"
+                    "20,15,0.2,0.4,?,3\n20,15,0.2,0.4,,2\n")
     assert out.exit_code == 0, out.stderr
     lines = [json.loads(line) for line in out.stdout.splitlines()]
     for line, alpha in zip(lines, (3.0, 2.0)):
@@ -129,8 +112,8 @@ def test_bracketed_numbers_and_method():
         assert line["extra"]["inverse"] == {
             "unknown": "J_A", "method": "bracketed-root",
             "detail": "a sign change on a grid of J_A, refined by Brent's method"}
-    out = _run(["rigid-body", "--scene", "beam-spun-up", "--batch", "-"],
-               "m [kg],l [m],M0 [N*m],alpha [rad/s^2]\n6,2,?,1.5\n6,2,?,-0.75\n")
+    out = batch_run(["rigid-body", "--scene", "beam-spun-up", "--batch", "-"],
+                    "m [kg],l [m],M0 [N*m],alpha [rad/s^2]\n6,2,?,1.5\n6,2,?,-0.75\n")
     assert out.exit_code == 0, out.stderr
     found = [float(line.split(",")[4]) for line in out.stdout.splitlines()[1:]]
     assert found == [pytest.approx(12.0, rel=1e-15), pytest.approx(-6.0, rel=1e-15)]
@@ -142,8 +125,8 @@ def test_rows_the_columns_cannot_prove_take_the_one_off(monkeypatch):
     good row after each is solved on columns."""
     solved = _bracketed_rows(monkeypatch)
     text = ("m1,m2,r1,r2,J_A,alpha\n20,15,0.2,0.4,?,-2\n20,15,0.2,0.4,?,3\n")
-    fast = _fast_and_generic(monkeypatch, ["rigid-body", "--scene", "drum-two-blocks",
-                                           "--batch", "-", "--on-error", "skip"], text)
+    fast = fast_same_as_generic(monkeypatch, ["rigid-body", "--scene", "drum-two-blocks",
+                                "--batch", "-", "--on-error", "skip"], text)
     assert sum(solved) == 1
     assert fast.exit_code == 2
     assert fast.stderr == (
@@ -152,7 +135,7 @@ def test_rows_the_columns_cannot_prove_take_the_one_off(monkeypatch):
         "6.12916 rad/s^2\n")
     solved.clear()
     text = "m,l,M0,t,omega\n6,2,?,0,1\n6,2,?,2,3\n"
-    fast = _fast_and_generic(monkeypatch, ["rigid-body", "--scene", "beam-spun-up", "--batch",
-                                           "-", "--on-error", "skip"], text)
+    fast = fast_same_as_generic(monkeypatch, ["rigid-body", "--scene", "beam-spun-up", "--batch",
+                                "-", "--on-error", "skip"], text)
     assert sum(solved) == 1 and fast.exit_code == 2
     assert fast.stderr.startswith("Error: line 2: ")

@@ -9,41 +9,15 @@ import json
 
 import numpy as np
 import pytest
-from click.testing import CliRunner
-
-from dyncalc.batch import GENERIC_ENV
-from dyncalc.cli import cli
+from helpers import batch_run, count_block_rows, fast_same_as_generic
 
 SEED = 20261124
-
-
-def _run(args, stdin):
-    return CliRunner().invoke(cli, args, input=stdin)
 
 
 def _solved_rows(monkeypatch) -> list:
     from dyncalc.batch import fast_rigid
 
-    solved = []
-    original = fast_rigid._solved
-
-    def counting(*args):
-        blocks = original(*args)
-        solved.extend(len(block.rows) for block in blocks)
-        return blocks
-
-    monkeypatch.setattr(fast_rigid, "_solved", counting)
-    return solved
-
-
-def _fast_and_generic(monkeypatch, args, text):
-    fast = _run(args, text)
-    monkeypatch.setenv(GENERIC_ENV, "1")
-    generic = _run(args, text)
-    monkeypatch.delenv(GENERIC_ENV)
-    assert (fast.exit_code, fast.stdout, fast.stderr) == (
-        generic.exit_code, generic.stdout, generic.stderr)
-    return fast
+    return count_block_rows(monkeypatch, fast_rigid)
 
 
 #: scene, header, unknown, the least share of the random rows solved on columns
@@ -80,7 +54,7 @@ def test_inverse_rows_on_columns_are_the_one_off(monkeypatch, scene, header, unk
     solved = _solved_rows(monkeypatch)
     args = ["rigid-body", "--scene", scene, "--batch", "-", "--on-error", "skip"] + (
         ["--json"] if as_json else [])
-    fast = _fast_and_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
+    fast = fast_same_as_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
     assert sum(solved) >= share * 120
     assert fast.exit_code == 2 and "Error: line" in fast.stderr
 
@@ -89,8 +63,8 @@ def test_inverse_numbers_and_method():
     """beam-spun-up: alpha = M0 / (m l^2 / 3), so m = 3 M0 / (alpha l^2): 3 * 12 / (1.5 * 4)
     = 6 kg; drum-two-blocks' alpha is proportional to g; J_A enters a sum: the one-off's
     bracketed search (row by row), the same root, alpha = (m2 r2 - m1 r1) g / (J_A + ...)."""
-    out = _run(["rigid-body", "--scene", "beam-spun-up", "--batch", "-", "--json"],
-               "m [kg],l [m],M0 [N*m],alpha [rad/s^2]\n?,2,12,1.5\n,0.5,3,4\n")
+    out = batch_run(["rigid-body", "--scene", "beam-spun-up", "--batch", "-", "--json"],
+                    "m [kg],l [m],M0 [N*m],alpha [rad/s^2]\n?,2,12,1.5\n,0.5,3,4\n")
     lines = [json.loads(line) for line in out.stdout.splitlines()]
     assert out.exit_code == 0
     assert lines[0]["results"]["m"]["value"] == pytest.approx(6.0, rel=1e-15)
@@ -98,9 +72,9 @@ def test_inverse_numbers_and_method():
     assert lines[0]["extra"]["inverse"] == {
         "unknown": "m", "method": "closed-form",
         "detail": "alpha is proportional to m^(-1): inverted exactly"}
-    out = _run(["rigid-body", "--scene", "drum-two-blocks", "--batch", "-", "--json"],
-               "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2],alpha [rad/s^2]\n"
-               "20,15,0.2,0.4,?,3\n")
+    out = batch_run(["rigid-body", "--scene", "drum-two-blocks", "--batch", "-", "--json"],
+                    "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2],alpha [rad/s^2]\n"
+                    "20,15,0.2,0.4,?,3\n")
     line = json.loads(out.stdout)
     J_A = (15 * 0.4 - 20 * 0.2) * 9.80665 / 3 - 20 * 0.04 - 15 * 0.16
     assert line["results"]["J_A"]["value"] == pytest.approx(J_A, rel=1e-12)
@@ -113,7 +87,7 @@ def test_bracketed_rows_take_the_one_off(monkeypatch):
     (J_A) are, tests/test_batch_rigid_brackets.py."""
     solved = _solved_rows(monkeypatch)
     text = "m1,m2,r1,r2,J_A,alpha\n?,15,0.2,0.4,2,3\n?,15,0.2,0.4,2,2\n"
-    fast = _fast_and_generic(monkeypatch, ["rigid-body", "--scene", "drum-two-blocks",
-                                           "--batch", "-"], text)
+    fast = fast_same_as_generic(monkeypatch, ["rigid-body", "--scene", "drum-two-blocks",
+                                "--batch", "-"], text)
     assert fast.exit_code == 0 and sum(solved) == 0
     assert fast.stdout.count("\n") == 3
