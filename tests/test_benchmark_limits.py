@@ -7,6 +7,8 @@ CSV and JSON lines are compared byte for byte with the limit script's.
 """
 from __future__ import annotations
 
+import math
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -60,7 +62,41 @@ def test_the_limit_script_writes_dyncalcs_bytes(tmp_path, case, as_json):
         (ours.stderr != "")
     expected = ours.stdout_bytes
     assert len(expected.splitlines()) == ROWS + (0 if as_json else 1)
-    assert done.stdout == expected
+    if "non-proportional" in label:
+        _same_but_eig_ulps(done.stdout, expected)
+    else:
+        assert done.stdout == expected
+
+
+_NUMBER = re.compile(rb"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def _same_but_eig_ulps(theirs: bytes, ours: bytes) -> None:
+    """Byte for byte, but for numbers within 2 ulp in at most 1 % of the lines. The complex
+    modes come from LAPACK's ``geev`` through ``numpy.linalg.eigvals``, called on the same
+    matrices by dyncalc and the limit script; one CI machine once gave two of 400 rows a
+    ``zeta`` one ulp apart between the two calls (never seen here), so the last bit of these
+    columns is not held to the byte."""
+    mine, yours = theirs.splitlines(), ours.splitlines()
+    assert len(mine) == len(yours)
+    differing = [(a, b) for a, b in zip(mine, yours) if a != b]
+    assert len(differing) <= len(mine) // 100, differing[:3]
+    for a, b in differing:
+        assert _NUMBER.sub(b"#", a) == _NUMBER.sub(b"#", b), (a, b)
+        for x, y in zip(_NUMBER.findall(a), _NUMBER.findall(b)):
+            x, y = float(x), float(y)
+            assert abs(x - y) <= 2 * math.ulp(max(abs(x), abs(y))), (a, b)
+
+
+def test_the_eig_comparison_can_fail():
+    line = b'1.0,"0.5,1.0",0.014169602107986996\n'
+    _same_but_eig_ulps(line * 100, line * 99 + line.replace(b"996", b"994"))
+    with pytest.raises(AssertionError):
+        _same_but_eig_ulps(line * 100, line * 98 + line.replace(b"996", b"994") * 2)
+    with pytest.raises(AssertionError):
+        _same_but_eig_ulps(line * 100, line * 99 + line.replace(b"996", b"9"))
+    with pytest.raises(AssertionError):
+        _same_but_eig_ulps(line * 100, line * 99 + line.replace(b"0.5,", b"0.5;"))
 
 
 def test_a_limit_script_that_differs_is_caught(tmp_path):

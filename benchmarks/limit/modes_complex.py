@@ -7,7 +7,7 @@ The same math as dyncalc's stacked path (dyncalc/physics/modes_columns.py): ``M 
 eigh of ``A = L^-1 K L^-T``, shapes ``V = L^-T w`` scaled to a largest component of +1; the
 reduced state-space matrix ``[[0, I], [-A, -L^-1 C L^-T]]``, its eigenvalues with ``Im s >
 0`` by ascending ``|s|``, each matched to the free undamped mode of nearest omega:
-``zeta = -Re s / |s|``, ``omega_d = Im s``."""
+``zeta = -Re s / |s|``, ``omega_d = Im s``, ``|s|`` in dyncalc's scaled form."""
 import sys
 
 import numpy as np
@@ -34,7 +34,18 @@ state[:, :n, n:] = np.eye(n)
 state[:, n:, :n] = -A
 state[:, n:, n:] = -(Cr + Cr.transpose(0, 2, 1)) / 2.0
 s = np.linalg.eigvals(state)
-upper = np.where(s.imag > 0.0, np.abs(s), np.inf)
+
+
+def modulus(z):
+    """|z| as b sqrt(1 + (a/b)^2), a <= b the sizes of Re z and Im z (dyncalc's form)."""
+    a, b = np.abs(z.real), np.abs(z.imag)
+    big, small = np.maximum(a, b), np.minimum(a, b)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q = np.where(big > 0.0, small / big, 0.0)
+    return big * np.sqrt(1.0 + q * q)
+
+
+upper = np.where(s.imag > 0.0, modulus(s), np.inf)
 order = np.argsort(upper, axis=1)[:, :n]
 picked, sizes = s[r, order], upper[r, order]
 zeta, omega_d = np.zeros((rows, n)), np.zeros((rows, n))
@@ -44,7 +55,7 @@ for j in range(n):  # the nearest free undamped mode, a mode at a time
     nearest = np.argmin(np.where(free, np.abs(omega - sizes[:, j:j + 1]), np.inf),
                         axis=1)
     free[k, nearest] = False
-    zeta[k, nearest] = -picked[:, j].real / np.abs(picked[:, j])
+    zeta[k, nearest] = -picked[:, j].real / modulus(picked[:, j])
     omega_d[k, nearest] = picked[:, j].imag
 values, units = undamped_values(omega, shapes, modal_mass, modal_stiffness)
 for i in range(n):

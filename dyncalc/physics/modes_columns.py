@@ -36,7 +36,25 @@ from .columns import Columns
 from .modes import (_COMPONENT_FLOOR, NON_PROPORTIONAL_NOTE, PROPORTIONAL_RTOL,
                     SYMMETRY_RTOL, ZERO_RTOL)
 
-__all__ = ["stacked_modes", "MARGIN", "APART", "DAMPING_SPREAD", "UNDERDAMPED", "COMPLEX_ZETA"]
+__all__ = ["stacked_modes", "modulus", "MARGIN", "APART", "DAMPING_SPREAD", "UNDERDAMPED",
+           "COMPLEX_ZETA"]
+
+
+def modulus(z):
+    """``|z|`` of complex ``z`` (any shape) as ``b sqrt(1 + (a/b)^2)``, ``b`` the larger and
+    ``a`` the smaller of ``|Re z|`` and ``|Im z|``: within two ulp, never overflowing where
+    ``|z|`` is finite, and the same bits on every machine and at every place in an array
+    (``numpy.abs`` of a complex array has SIMD paths that round differently from its scalar
+    path, so the same value could come out one ulp apart in two runs of different lengths).
+
+    >>> modulus(np.array([3 + 4j, -1e300j, 0j])).tolist()
+    [5.0, 1e+300, 0.0]
+    """
+    a, b = np.abs(z.real), np.abs(z.imag)
+    big, small = np.maximum(a, b), np.minimum(a, b)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q = np.where(big > 0.0, small / big, 0.0)
+    return big * np.sqrt(1.0 + q * q)
 
 #: Smallest eigenvalue of M and of ``K phi = lambda M phi``, as a share of the largest, below
 #: which a row goes to the one-off (its thresholds are 1e-10: a margin of 100).
@@ -186,7 +204,7 @@ def _complex_damping(M, K, C, L, A, V, omega):
     state[:, n:, n:] = -(Cr + Cr.transpose(0, 2, 1)) / 2.0
     state = np.where(exact[:, None, None], state, 0.0)
     s = np.linalg.eigvals(state)
-    size = np.abs(s)
+    size = modulus(s)
     top = size.max(axis=1)
     exact &= np.isfinite(s).all(axis=1) & (np.abs(s.imag) > APART * top[:, None]).all(axis=1)
     upper = np.where(s.imag > 0.0, size, np.inf)
@@ -207,7 +225,7 @@ def _complex_damping(M, K, C, L, A, V, omega):
         k = np.arange(rows)
         free[k, nearest] = False
         z = picked[:, j]
-        zeta[k, nearest] = -z.real / np.abs(z)
+        zeta[k, nearest] = -z.real / modulus(z)
         omega_d[k, nearest] = z.imag
     exact &= (zeta >= COMPLEX_ZETA).all(axis=1) & np.isfinite(omega_d).all(axis=1)
     return zeta, omega_d, exact
