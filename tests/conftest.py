@@ -1,6 +1,7 @@
 """Test settings shared by the suite: hypothesis draws the same examples on every run (no
 example database), so a green run on one machine is green on another and a failure is
-reproduced by running the test again; a test's mpmath precision is its own."""
+reproduced by running the test again; a test's mpmath precision is its own
+(its module's ``MPMATH_DPS``, at least 40 digits)."""
 import pytest
 from hypothesis import settings
 
@@ -8,12 +9,20 @@ settings.register_profile("dyncalc", derandomize=True, database=None)
 settings.load_profile("dyncalc")
 
 
+#: mpmath's working precision at the start of every test, unless its module asks for more
+#: (``MPMATH_DPS = 50``): a test's reference digits never depend on which modules were
+#: collected or run before it (a module-level ``mpmath.mp.dps = ...`` is global, and the last
+#: module imported used to decide it for all).
+MPMATH_DPS = 40
+
+
 @pytest.fixture(autouse=True)
-def _mpmath_precision_kept():
-    """A test that sets mpmath's working precision (``mp.dps``, global) keeps it to itself:
-    without this, a test run before another changed the other's reference digits."""
+def _mpmath_precision_kept(request):
+    """Each test starts at its module's mpmath precision (``MPMATH_DPS``, 40 digits unless the
+    module says more); a test that sets ``mp.dps`` itself keeps it to itself."""
     import mpmath
 
     dps = mpmath.mp.dps
+    mpmath.mp.dps = max(MPMATH_DPS, getattr(request.module, "MPMATH_DPS", MPMATH_DPS))
     yield
     mpmath.mp.dps = dps

@@ -3,7 +3,7 @@ relative motion"): ``v_transport = v0 + Omega x r``, ``v = v_transport + v_r``,
 ``a_transport = a0 + alpha x r + Omega x (Omega x r)``, ``a = a_transport + a_c + a_r``.
 
 Every reference is found independently: the absolute position of the point written out in
-the fixed frame and differentiated with mpmath (30 digits), then turned into the moving
+the fixed frame and differentiated with mpmath (40 digits), then turned into the moving
 frame's components; the 1e12-scale cancellation against mpmath's exact arithmetic.
 """
 import json
@@ -16,7 +16,6 @@ from click.testing import CliRunner
 from dyncalc.cli import cli
 from dyncalc.physics.relative_motion import relative_motion, transport_velocity
 
-mpmath.mp.dps = 30
 
 
 def run(*args):

@@ -27,7 +27,7 @@ from dyncalc.physics.decay_fit import fit_decrement, t_critical
 from dyncalc.units import Q_
 from helpers import error_line, invoke, json_of
 
-mpmath.mp.dps = 50
+MPMATH_DPS = 50  # mpmath's digits in this module's tests (tests/conftest.py)
 TWO_PI = 2 * math.pi
 G = 9.80665
 

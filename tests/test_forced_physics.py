@@ -174,7 +174,7 @@ def test_base_lower_half_power_frequency_lost_when_the_peak_is_low():
 
 # --- accuracy against mpmath --------------------------------------------------------------
 
-mpmath.mp.dps = 50
+MPMATH_DPS = 50  # mpmath's digits in this module's tests (tests/conftest.py)
 
 
 def ulps(got, exact):

@@ -9,7 +9,6 @@ from hypothesis import strategies as st
 
 from dyncalc.physics.numerics import (Wide, agm, root_monomial, sqrt_ratio, two_product)
 
-mpmath.mp.dps = 40
 TINY, HUGE = mpmath.mpf("2.2250738585072014e-308"), mpmath.mpf("1.7976931348623157e308")
 
 

@@ -23,7 +23,6 @@ from dyncalc.units import (
     parse_quantity, parse_unit, parse_vector, registry, to_si,
 )
 
-mpmath.mp.dps = 40
 
 # Exact definitions (NIST SP 811): 1 lbf = 4.4482216152605 N, 1 in = 0.0254 m.
 LBF = Fraction("4.4482216152605")
