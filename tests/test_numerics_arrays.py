@@ -143,6 +143,33 @@ def test_fsum_rows_is_math_fsum(k):
     assert np.array_equal(_bits(s), _bits([math.fsum(row) for row in t.tolist()]))
 
 
+@pytest.mark.parametrize("k", [2, 3, 5])
+def test_fsum_rows_near_ties_subnormals_and_huge_terms(k):
+    """The cheap road (TwoSum in order, one rounding) is taken only where it is certain: rows
+    built to sit on or next to a half-way point, with subnormal or huge terms, or summing to
+    zero, give fsum's bits; a plain rounding of the same rows would not."""
+    rng = np.random.default_rng(11 + k)
+    n = 6000
+    base = rng.uniform(1.0, 2.0, n) * 2.0 ** rng.integers(-1060, 1000, n)
+    ulp = np.array([math.ulp(x) for x in base.tolist()])
+    t = np.zeros((n, k))
+    t[:, 0] = base
+    t[:, 1] = ulp * rng.choice([0.5, -0.5, 0.25, 1.5], n)           # a half-way point or near
+    for j in range(2, k):
+        t[:, j] = ulp * 2.0 ** -rng.integers(1, 80, n) * rng.choice([-1.0, 1.0], n)
+    t[: n // 10] = -t[: n // 10, ::-1]                                 # the order reversed
+    t[n // 10: n // 5, :] = 5e-324 * rng.integers(-3, 4, (n // 5 - n // 10, k))   # subnormal
+    t[n // 5: n // 4, 0] = 1e300 * rng.choice([-1.0, 1.0], n // 4 - n // 5)       # huge
+    t[n // 4: n // 3, -1] = -np.sum(t[n // 4: n // 3, :-1], axis=1)              # near zero
+    s, ok = fsum_rows(t)
+    expected = [math.fsum(row) for row in t.tolist()]
+    assert ok.all()
+    assert np.array_equal(_bits(s), _bits(expected))
+    if k > 2:  # (two terms: one addition is already the correctly rounded sum)
+        plain = t.sum(axis=1)
+        assert not np.array_equal(_bits(plain + 0.0), _bits(expected))
+
+
 def test_fsum_rows_flags_an_intermediate_overflow():
     s, ok = fsum_rows(np.array([[1.7e308, 1.7e308, -1.7e308], [1.0, np.inf, 0.0]]))
     assert ok.tolist() == [False, False]

@@ -324,6 +324,10 @@ def ldexp_array(m, e):
         return np.ldexp(m, e)
 
 
+#: Terms below this in size cannot overflow in a row of up to 2^20 of them, whatever the order.
+_FSUM_SAFE = 2.0 ** 1000
+
+
 def fsum_rows(terms):
     """``math.fsum`` of each row of ``terms`` (shape ``(n, k)``) -> ``(sums, ok)``.
 
@@ -333,11 +337,58 @@ def fsum_rows(terms):
     correctly rounded exact sum, bit for bit fsum's. ``ok`` is False on rows with a
     non-finite term or an intermediate overflow (where fsum returns inf/nan or raises).
 
+    Most rows take a cheaper road to the same bits: the terms are added in order with
+    Knuth's TwoSum and their rounding errors summed with TwoSum too, the bits that sum loses
+    kept as ``lost``; the total plus the errors, rounded once, is ``r``. Where nothing was
+    lost, ``r`` is the exact sum rounded once, half-way cases to even: fsum's result. Else
+    the exact sum is within ``|residual| + lost`` of ``r`` (``residual`` the exact error of
+    that last addition), and where that is below half the smaller spacing of floats at
+    ``r``, ``r`` is still the correctly rounded sum. The other rows (near a half-way point
+    with bits lost, huge or non-finite terms) take the twin described above.
+
     >>> s, ok = fsum_rows(np.array([[0.1, 0.2, 0.3], [1e100, 1.0, -1e100]]))
     >>> s.tolist(), ok.tolist()
     ([0.6, 1.0], [True, True])
     """
     t = np.asarray(terms, dtype=float)
+    n, k = t.shape
+    if k == 0 or n == 0:
+        return _fsum_rows_twin(t)
+    with np.errstate(over="ignore", invalid="ignore"):
+        total = t[:, 0].copy()
+        errors = np.zeros(n)
+        lost = np.zeros(n)
+        largest = np.abs(total)
+        for j in range(1, k):
+            x = t[:, j]
+            np.maximum(largest, np.abs(x), out=largest)
+            hi = total + x
+            back = hi - total
+            error = (total - (hi - back)) + (x - back)
+            total = hi
+            hi = errors + error
+            back = hi - errors
+            lost += np.abs((errors - (hi - back)) + (error - back))
+            errors = hi
+        r = total + errors
+        back = r - total
+        residual = (total - (r - back)) + (errors - back)
+        size = np.abs(r)
+        below = (size.view(np.int64) - 1).view(np.float64)  # the float under size (NaN at 0)
+        bound = np.abs(residual) + lost * (1.0 + 2.0 ** -40)
+        sure = ((lost == 0.0) | (bound < 0.5 * (size - below))) & np.isfinite(r) \
+            & (largest < _FSUM_SAFE)
+    if sure.all():
+        return r + 0.0, np.ones(n, dtype=bool)
+    ok = np.ones(n, dtype=bool)
+    rest = np.flatnonzero(~sure)
+    r[rest], ok[rest] = _fsum_rows_twin(t[rest])
+    return r + 0.0, ok
+
+
+def _fsum_rows_twin(t):
+    """:func:`fsum_rows` by CPython's own steps (partials, then the rounding with its
+    half-way correction), for any rows."""
     n, k = t.shape
     ok = np.all(np.isfinite(t), axis=1)
     parts = np.zeros((n, k))
