@@ -111,3 +111,26 @@ def test_a_slider_in_a_turning_slot_against_its_closed_form(monkeypatch):
         Q = record["extra"]["rotation_matrix"]
         assert Q[0][0] == pytest.approx(math.cos(w * t), abs=1e-15)
         assert Q[1][0] == pytest.approx(math.sin(w * t), abs=1e-15)
+
+
+def test_a_column_of_plain_times_is_read_at_once_as_cell_by_cell():
+    """The column read in one pass (``_plain_times``) gives the rows and the bits that the
+    cell-by-cell reading gives, on literals of every form; a column it does not take (a
+    unit, a leading zero, a blank inside, words) is left to the cell-by-cell reading."""
+    from dyncalc.batch.header import Column
+
+    col = Column(0, "t", "t", "", "t")
+    rng = np.random.default_rng(5)
+    forms = ["{:.6g}", "{!r}", "+{:.3f}", "{:.2e}", "{:.0f}.", ".{:.0f}"]
+    for _ in range(200):
+        cells = [forms[rng.integers(len(forms))].format(abs(x) if i % 3 else x)
+                 .replace("-.", "-0.").replace(".-", ".")
+                 for i, x in enumerate(rng.uniform(-1e3, 1e3, 30).tolist())]
+        read = fast_coriolis_time._plain_times(cells)
+        rows, times = fast_coriolis_time._times(cells, col)
+        if read is None:
+            continue
+        assert rows.tolist() == list(range(len(cells)))
+        assert np.array_equal(read.view(np.int64), times.view(np.int64)), cells
+    for odd in (["1", "2 s"], ["1", "007"], ["1", "2 3"], ["1", "abc"], ["1", ""]):
+        assert fast_coriolis_time._plain_times(odd) is None, odd

@@ -22,7 +22,7 @@ import re
 import numpy as np
 
 from ..errors import InputError
-from .columns import _LITERAL_CELL
+from .columns import _LITERAL_CELL, _LITERALS_RE, _plain_floats
 from .fast import FastBlock, json_head
 from .fast_commands import _same, _stripped
 from .floats import parse_floats
@@ -42,20 +42,13 @@ def coriolis_time_fast(spec, columns, table, want_json: bool, cache: dict) -> li
         return []
     col = columns[0]
     cells = _stripped(table[col.index])
-    found = [_TIME_RE.fullmatch(c) for c in cells]
-    # one form a block: plain numbers, or (a --t list, no header unit) numbers in seconds
-    seconds = found[0] is not None and found[0].group(2) is not None
-    plain = np.fromiter((m is not None and (m.group(2) is not None) == seconds
-                         and not (seconds and col.unit) for m in found), dtype=bool,
-                        count=len(cells))
-    if not plain.any():
-        return []
-    rows = np.flatnonzero(plain)
-    try:
-        times = np.asarray(parse_floats([found[i].group(1) for i in rows.tolist()]),
-                           dtype=float)
-    except ValueError:
-        return []
+    times = _plain_times(cells)
+    if times is not None:  # (the usual column: plain numbers, read at once)
+        rows = np.arange(len(cells))
+    else:
+        rows, times = _times(cells, col)
+        if rows is None:
+            return []
     setup = _setup(spec, col, cells[int(rows[0])], cache)
     if setup is None:
         return []
@@ -89,6 +82,35 @@ def coriolis_time_fast(spec, columns, table, want_json: bool, cache: dict) -> li
         head = json_head("coriolis", probe.scene, probe.model, probe.method)
     dims = {name: entry.dim for name, entry in probe.results.items()}
     return [FastBlock(rows[keep], values, dims, head, inputs, extra)]
+
+
+def _plain_times(cells):
+    """The times of a column whose every cell is a whole plain number, read in one pass;
+    ``None`` otherwise."""
+    joined = "\n".join(cells)
+    if not _LITERALS_RE.fullmatch(joined):
+        return None
+    return _plain_floats(cells)
+
+
+def _times(cells, col):
+    """``(rows, times)``: the rows of one form (plain numbers, or numbers in seconds as a
+    ``--t`` list gives them) and their times, a cell at a time; ``(None, None)`` if none."""
+    found = [_TIME_RE.fullmatch(c) for c in cells]
+    # one form a block: plain numbers, or (a --t list, no header unit) numbers in seconds
+    seconds = found[0] is not None and found[0].group(2) is not None
+    plain = np.fromiter((m is not None and (m.group(2) is not None) == seconds
+                         and not (seconds and col.unit) for m in found), dtype=bool,
+                        count=len(cells))
+    if not plain.any():
+        return None, None
+    rows = np.flatnonzero(plain)
+    try:
+        times = np.asarray(parse_floats([found[i].group(1) for i in rows.tolist()]),
+                           dtype=float)
+    except ValueError:
+        return None, None
+    return rows, times
 
 
 def _setup(spec, col, cell: str, cache: dict):

@@ -48,6 +48,9 @@ __all__ = ["TimeMotion", "FrameState", "motion_in_time"]
 ROTATIONS = ("none", "closed form", "quadrature", "numerical")
 
 
+#: What evaluating a compiled expression raises where it is not defined.
+_UNDEFINED = (ZeroDivisionError, ValueError, OverflowError, TypeError)
+
 class FrameState:
     """Every vector at one time ``t`` (SI, numpy arrays of 3): ``r``, ``v_r``, ``a_r``,
     ``Omega``, ``alpha`` in rotating-frame components; ``R0``, ``v0``, ``a0`` in fixed-frame
@@ -109,6 +112,16 @@ class TimeMotion:
             f = self._together[key] = sympy.lambdify(
                 [self.t], [e for name in key for e in self.exprs[name]], modules=["math"])
         times = np.asarray(times, dtype=float)
+        try:  # every time at once (the same calls, one list); a time that raises: one by one
+            out = np.array([f(s) for s in times.tolist()])
+            if out.dtype.kind not in "fi" or out.shape != (len(times), 3 * len(key)):
+                raise TypeError
+        except _UNDEFINED:
+            pass
+        else:
+            out = out.astype(float) + 0.0
+            ok = np.isfinite(out).all(axis=1)
+            return {name: out[:, 3 * j:3 * j + 3] for j, name in enumerate(key)}, ok
         out = np.full((len(times), 3 * len(key)), np.nan)
         ok = np.zeros(len(times), dtype=bool)
         for i, s in enumerate(times.tolist()):
@@ -131,9 +144,16 @@ class TimeMotion:
             return np.broadcast_to(np.eye(3), (n, 3, 3)), np.zeros(n), np.ones(n, dtype=bool)
         if self.rotation != "closed form":
             return None
-        theta, sin, cos = np.full(n, np.nan), np.full(n, np.nan), np.full(n, np.nan)
-        ok = np.zeros(n, dtype=bool)
-        for i, s in enumerate(times.tolist()):
+        try:  # every time at once (the same calls); a time that raises: one by one below
+            angles = [self._theta(s) for s in times.tolist()]
+            theta = np.array(angles, dtype=float)
+            sin = np.array(list(map(math.sin, angles)), dtype=float)
+            cos = np.array(list(map(math.cos, angles)), dtype=float)
+            ok = np.ones(n, dtype=bool)
+        except _UNDEFINED:
+            theta, sin, cos = np.full(n, np.nan), np.full(n, np.nan), np.full(n, np.nan)
+            ok = np.zeros(n, dtype=bool)
+        for i, s in enumerate(times.tolist() if not ok.all() else ()):
             try:
                 value = self._theta(s)
                 theta[i], sin[i], cos[i] = value, math.sin(value), math.cos(value)
