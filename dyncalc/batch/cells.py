@@ -106,11 +106,44 @@ def _without_quotes(lines: list[str], text: str) -> list[str] | None:
     return plain if len(plain) == len(lines) else None
 
 
+def _simple_quotes(text: str) -> list[str] | None:
+    """The texts inside the quotes of ``text`` (lines joined by ``\\n``, a ``\\r`` perhaps ending
+    each) where every quote opens or closes a whole cell on its line, as
+    ``source._SIMPLE_QUOTES_RE`` takes them (no quote, line break or ``\\r`` inside a quoted
+    cell, no NUL anywhere, a ``\\r`` only before a line break or at the end); ``None``
+    otherwise. Found by splitting and counting in C: each quoted cell is a NUL in the text
+    outside the quotes, which must stand between cell or line boundaries.
+
+    >>> _simple_quotes('"1,2",3\\n4,"5"'), _simple_quotes('1"2",3')
+    (['1,2', '5'], None)
+    """
+    if "\0" in text:
+        return None
+    if "\r" in text:
+        end = text.endswith("\r")
+        if text.count("\r") != text.count("\r\n") + end:
+            return None
+        text = text.replace("\r\n", "\n")[:-1 if end else None]
+    pieces = text.split('"')  # the odd ones are inside quotes
+    if not len(pieces) % 2:
+        return None
+    inside = pieces[1::2]
+    outside = "\0".join(pieces[0::2])  # (a NUL a quoted cell: none was there)
+    m = len(inside)
+    if "\n" in "".join(inside) \
+            or outside.count(",\0") + outside.count("\n\0") + outside.startswith("\0") != m \
+            or outside.count("\0,") + outside.count("\0\n") + outside.endswith("\0") != m:
+        return None
+    return inside
+
+
 def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
     """The cells of ``text`` (``n`` lines joined by ``\\n``, no NUL, no ``\\r``) column by
     column where every cell of every line is quoted, each line has as many, and each holds a
     comma and no quote or line break (so the csv module reads the cells without their quotes,
     and ``csv.writer`` writes the lines as they are); ``None`` otherwise."""
+    if not (text.startswith('"') and text.endswith('"')):  # (before a split of it all)
+        return None
     pieces = text.split('"')  # the odd ones are inside quotes
     if len(pieces) % 2 == 0 or pieces[0] or pieces[-1]:
         return None
