@@ -157,7 +157,6 @@ def _skeletons(column: list[str]) -> list[str] | None:
     return _PIECE_RE.sub("", joined).split("\n")
 
 
-_DELIMITER_RE = re.compile(r"[(),=\n]")
 
 
 def _uniform_split(column: list[str]):
@@ -178,15 +177,19 @@ def _uniform_split(column: list[str]):
     fixed = [first[ends[i]:ends[i + 1]] for i in range(0, len(ends), 2)]
     n, k = len(column), len(spans)
     joined = "\n".join(column)
-    if joined.count("\n") != n - 1 or any(not t for t in fixed[1:-1]):
+    if joined.count("\n") != n - 1 or any(not t for t in fixed[1:-1]) \
+            or not joined.endswith(fixed[-1]):
         return None
-    text = ("\n" + joined + "\n").replace("\n" + fixed[0], "\n")
-    text = text.replace(fixed[-1] + "\n", "\n")
+    # the texts between rows (the last cell's end, a line break, the next cell's start) and
+    # those inside a cell are line breaks: the values one a line (the first row's start is
+    # the first cell's; the lines written back below check every cell)
+    text = joined[len(fixed[0]):len(joined) - len(fixed[-1])]
+    text = text.replace(fixed[-1] + "\n" + fixed[0], "\n")
     for t in fixed[1:-1]:
         text = text.replace(t, "\n")
-    found = text[1:-1].split("\n")
-    if len(found) != n * k or _DELIMITER_RE.search("".join(found)):
+    if any(map(text.__contains__, "(),=")) or text.count("\n") != n * k - 1:
         return None
+    found = text.split("\n")
     parts: list = [None] * (n * (2 * k + 1))
     width = 2 * k + 1
     parts[0::width] = [fixed[0]] * n
