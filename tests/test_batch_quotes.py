@@ -17,10 +17,11 @@ ALPHABET = ['"', ",", "\n", "\r", "\0", "a"]
 
 
 def _agrees(text: str) -> None:
-    inside = _simple_quotes(text)
-    assert (inside is not None) is (_SIMPLE_QUOTES_RE.fullmatch(text) is not None), repr(text)
-    if inside is not None:
-        assert inside == text.split('"')[1::2]
+    pieces = _simple_quotes(text)
+    assert (pieces is not None) is (_SIMPLE_QUOTES_RE.fullmatch(text) is not None), repr(text)
+    if pieces is not None:
+        inside = pieces[1::2]
+        assert pieces == text.replace("\r\n", "\n").rstrip("\r").split('"')
         no_comma = not all("," in cell for cell in inside)
         assert no_comma is (_QUOTED_NO_COMMA_RE.search(text) is not None), repr(text)
 
@@ -50,8 +51,8 @@ def test_quoted_cells_are_the_csv_modules():
     only of quoted cells is split by columns, one with a bare cell is not."""
     lines = ['"parallel(cantilever(l=1.5 m), 200 N/m)",300,2e4', '"a,b",2', '"1,2","3,4"']
     for line in lines:
-        assert _simple_quotes(line) == [c for c in next(csv.reader([line])) if "," in c]
-    assert _simple_quotes('"a,b",2,"c"') == ["a,b", "c"]
+        assert _simple_quotes(line)[1::2] == [c for c in next(csv.reader([line])) if "," in c]
+    assert _simple_quotes('"a,b",2,"c"') == ["", "a,b", ",2,", "c", ""]
     assert _simple_quotes('"a,b"2') is None and _simple_quotes('"a\nb"') is None
     assert _quoted_columns('"1,2","3,4"\n"5,6","7,8"', 2) == [["1,2", "5,6"], ["3,4", "7,8"]]
     assert _quoted_columns('"1,2",3', 1) is None

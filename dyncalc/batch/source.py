@@ -324,8 +324,8 @@ class _Reader:
         if quoted and "\0" not in text:  # every cell quoted (vectors): split at the quotes
             columns = _quoted_columns(text if "\r" not in text
                                       else ended.replace("\r\n", "\n")[:-1], len(parts))
-        inside = _simple_quotes(text) if quoted and columns is None else None
-        if ((quoted and columns is None and inside is None)
+        pieces = _simple_quotes(text) if quoted and columns is None else None
+        if ((quoted and columns is None and pieces is None)
                 or "\r" in text and text.count("\r") != ended.count("\r\n")
                 or max(map(len, parts)) >= MAX_LINE
                 or (_ODD_LINE_BREAK_RE.search(text) if not text.isascii()
@@ -345,10 +345,12 @@ class _Reader:
             if columns is not None:
                 return _Chunk(numbers, lines=lines, suspect=suspect, columns=columns)
             # (a quoted cell without a comma, which csv.writer would not quote: no echo)
-            written = lines if all(map(operator.contains, inside, itertools.repeat(","))) \
+            written = lines if all(map(operator.contains, pieces[1::2], itertools.repeat(","))) \
                 else None
-            plain = None if written is None else _without_quotes(
-                lines, text if "\r" not in text else "\n".join(lines))
+            plain = None
+            if written is not None:  # (the quotes' pieces of the text split once, without \r)
+                plain = _without_quotes(lines, text, pieces) if "\r" not in text else \
+                    _without_quotes(lines, "\n".join(lines))
             if plain is not None:  # split at commas, as a chunk without quotes
                 return _Chunk(numbers, lines=lines, suspect=suspect, plain=plain)
             return _Chunk(numbers, rows=list(csv.reader(lines, strict=True)), suspect=suspect,
