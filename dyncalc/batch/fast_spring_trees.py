@@ -362,14 +362,19 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
             typed = values_at(slot[0])
             slot[0] += 1
             unit = top_col.unit if top_col is not None else ""
-            texts = [t.strip() for t in typed]
+            texts = list(map(str.strip, typed))
             plain = _plain_floats(texts) if top_col is not None else None
             read = _read_column(texts, unit, _Param(name, dim), spec.strict, cache, plain)
             good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
+            units = read.unit_json
+            if m and units.count(units[0]) == m:  # (one unit: a column of one value)
+                units = [units[0]]
             if dim is TORSIONAL_STIFFNESS:  # a bare number is linear to the one-off
-                good &= np.array([not a for _u, a in read.unit_json], dtype=bool)
-            si_first = np.array([u == si_json for u, _a in read.unit_json], dtype=bool) \
+                good &= np.array([not a for _u, a in units], dtype=bool)
+            si_first = np.array([u == si_json for u, _a in units], dtype=bool) \
                 if m else np.ones(0, dtype=bool)
+            if len(si_first) != m:
+                si_first = np.full(m, si_first[0])
             if top_col is not None:
                 inputs.append((name, read, texts, unit, plain is not None, None))
             else:
@@ -384,8 +389,8 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
             if pname in own:
                 typed = values_at(slot[0])
                 slot[0] += 1
-                read = _read_column([t.strip() for t in typed], "", _Param(pname, pdims[pname]),
-                                    spec.strict, cache)
+                read = _read_column(list(map(str.strip, typed)), "",
+                                    _Param(pname, pdims[pname]), spec.strict, cache)
                 good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
                 inputs.append((f"{name}.{pname}", read, typed, "", "as typed", None))
             else:
