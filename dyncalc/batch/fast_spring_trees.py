@@ -408,7 +408,7 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
     stiffness = []
     for col, top in zip(given, tops):
         stiffness.append(build(top, col if top[0] == "leaf" else None))
-    del build  # (a recursive closure is a reference cycle: the chunk's texts freed now)
+    build = None  # (a recursive closure is a reference cycle: the chunk's texts freed now)
     first_si = stiffness[0][1]
     good &= first_si
     kernel = (series_stiffness if spec.how == "series" else parallel_stiffness).columns
