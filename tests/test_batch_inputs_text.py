@@ -4,13 +4,36 @@ from __future__ import annotations
 
 import json
 
-from dyncalc.batch.inputs import _ESCAPED_RE
+from dyncalc.batch.inputs import _ESCAPED_RE, _unescaped
 
 
 def test_the_escape_test_agrees_with_json_dumps_on_every_character():
     for code in range(0x110000):
         text = f"2 {chr(code)}m"
-        assert (json.dumps(text) == f'"{text}"') is (_ESCAPED_RE.search(text) is None), hex(code)
+        plain = json.dumps(text) == f'"{text}"'
+        assert plain is (_ESCAPED_RE.search(text) is None), hex(code)
+        assert _unescaped(text) is plain, hex(code)  # the string methods' test, the same
+
+
+def test_a_column_as_typed_is_written_as_each_cell_alone():
+    """Texts shown as typed (blanks kept): between quotes as they are, or each cell through
+    ``json.dumps`` where one needs escaping."""
+    import numpy as np
+
+    from dyncalc.batch.assemble import lines
+    from dyncalc.batch.inputs import _number_parts
+
+    class Read:
+        def __init__(self, n):
+            self.shown = np.arange(n, dtype=float)
+            self.unit_json = [('"m"', ', "assumed_si": false')] * n
+
+    for cells in ([" 2 m", "0.5 m "], ["2 µm", "3 m"], ['2 "m"', "1\\2"], ["2\tm", ""]):
+        n = len(cells)
+        parts = _number_parts("k", Read(n), cells, "", "as typed", np.ones(n, bool), n)
+        want = [f'"k": {{"value": {float(i)!r}, "unit": "m", "text": {json.dumps(c)}, '
+                f'"assumed_si": false}}' for i, c in enumerate(cells)]
+        assert lines(parts, n) == want
 
 
 

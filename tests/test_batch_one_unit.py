@@ -52,6 +52,9 @@ def test_the_slicing_takes_the_columns_it_is_for():
     literals, unit, values = columns._one_unit(["2 m", "-0.5 m", "1e5 m"])
     assert (literals, unit) == (["2", "-0.5", "1e5"], "m")
     assert values.tolist() == [2.0, -0.5, 1e5]
+    literals, unit, values = columns._one_unit(["-0 m", ".5 m", "+2 m"])  # not JSON numbers
+    assert (literals, unit) == (["-0", ".5", "+2"], "m")
+    assert values.tolist() == [-0.0, 0.5, 2.0] and np.signbit(values[0])
     read = _read(["2 km", "0.5 km"], "", LENGTH, fast=True)
     assert read.ok.tolist() == [True, True] and read.si.tolist() == [2000.0, 500.0]
 
@@ -65,6 +68,9 @@ def test_the_slicing_takes_the_columns_it_is_for():
     ["2 m", "2e m"],       # not a whole number literal
     ["007 m", "1 m"],      # a leading zero, which the one-off refuses
     ["2", "3"],            # no unit: the plain path's
+    ["2 m", "3\n4 m"],      # a line break in a cell
+    ["2 m", "3 m\n m"],     # a line break before the unit's text
+    ["2 m", " m"],         # no number
 ])
 def test_other_columns_are_left_to_the_regex_pass(cells):
     assert columns._one_unit(cells) is None

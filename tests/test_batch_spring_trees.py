@@ -165,3 +165,36 @@ def test_random_rows_of_one_template_equal_the_one_off(tmp_path, how):
         fast = _run(how, path, True, as_json)
         assert fast == _run(how, path, False, as_json)
         assert fast[1].count("\n") > 150  # most rows computed
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_a_column_of_one_template_is_split_as_each_cell_alone(seed):
+    """``_uniform_split``: a column of one template is always taken, with the structure and
+    values :func:`parse_cell` gives each cell; where it takes a column with a cell changed,
+    every cell is the first cell's skeleton (values cut out, one cell at a time) and its
+    values are the ones cut (read, and refused where they are no number, later)."""
+    from dyncalc.batch.fast_spring_trees import _PIECE_RE, _uniform_split
+
+    rng = random.Random(seed)
+    template = rng.choice(["parallel(cantilever(l={} m), {} N/m)", "series({},{})",
+                           "parallel(axial(l={}, EA={} N), series({} N/m, {}))",
+                           "cantilever(l={})"])
+    fields = template.count("{}")
+    column = [template.format(*(_value(rng) for _ in range(fields)))
+              for _ in range(rng.randint(1, 8))]
+    got = _uniform_split(column)
+    assert got is not None and got[0] == parse_cell(column[0])[0]
+    assert [list(t) for t in zip(*got[1])] == [parse_cell(c)[1] for c in column]
+    for _ in range(20):  # one cell changed by a character of the structure or a value's
+        changed = list(column)
+        i = rng.randrange(len(changed))
+        at = rng.randrange(len(changed[i]) + 1)
+        changed[i] = changed[i][:at] + rng.choice("(),= 1m\n") + changed[i][at + 1:]
+        got = _uniform_split(changed)
+        if got is not None and "(" not in changed[0]:  # a column of plain stiffnesses
+            assert got == (("leaf",), [changed]) and not any("(" in c for c in changed)
+        elif got is not None:
+            assert got[0] == parse_cell(changed[0])[0]
+            skeleton = _PIECE_RE.sub("", changed[0])
+            assert [_PIECE_RE.sub("", c) for c in changed] == [skeleton] * len(changed)
+            assert [list(t) for t in zip(*got[1])] == [_PIECE_RE.findall(c) for c in changed]

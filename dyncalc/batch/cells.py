@@ -92,18 +92,52 @@ def _unquoted(column: list[str]) -> list[str]:
     return joined.replace("\0", ",").split("\n") if "\0" in joined else column
 
 
-def _without_quotes(lines: list[str], text: str) -> list[str] | None:
+def _without_quotes(lines: list[str], text: str, pieces: list[str] | None = None
+                    ) -> list[str] | None:
     """``lines`` (``text`` joined by line breaks) in simple quotes (each quote opens or closes
     a whole cell, no quote inside one) without their quotes, each comma inside a quoted cell a
     NUL (which the text has not), so that splitting a line at commas gives what the csv module
     reads; ``None`` where a line is empty (the csv module reads no cell there, not one empty
-    cell)."""
+    cell). ``pieces``: ``text.split('"')`` where the caller has it (it is changed here)."""
     if "" in lines:
         return None
-    pieces = text.split('"')  # the odd ones are inside quotes
+    if pieces is None:
+        pieces = text.split('"')  # the odd ones are inside quotes
     pieces[1::2] = '"'.join(pieces[1::2]).replace(",", "\0").split('"')
     plain = "".join(pieces).split("\n")
     return plain if len(plain) == len(lines) else None
+
+
+def _simple_quotes(text: str) -> list[str] | None:
+    """``text.split('"')`` (the odd pieces inside quotes; each ``\\r`` of a ``\\r\\n`` taken
+    off first) of ``text`` (lines joined by ``\\n``, a ``\\r`` perhaps ending each) where
+    every quote opens or closes a whole cell on its line, as
+    ``source._SIMPLE_QUOTES_RE`` takes them (no quote, line break or ``\\r`` inside a quoted
+    cell, no NUL anywhere, a ``\\r`` only before a line break or at the end); ``None``
+    otherwise. Found by splitting and counting in C: each quoted cell is a NUL in the text
+    outside the quotes, which must stand between cell or line boundaries.
+
+    >>> _simple_quotes('"1,2",3\\n4,"5"'), _simple_quotes('1"2",3')
+    (['', '1,2', ',3\\n4,', '5', ''], None)
+    """
+    if "\0" in text:
+        return None
+    if "\r" in text:
+        end = text.endswith("\r")
+        if text.count("\r") != text.count("\r\n") + end:
+            return None
+        text = text.replace("\r\n", "\n")[:-1 if end else None]
+    pieces = text.split('"')  # the odd ones are inside quotes
+    if not len(pieces) % 2:
+        return None
+    inside = pieces[1::2]
+    outside = "\0".join(pieces[0::2])  # (a NUL a quoted cell: none was there)
+    m = len(inside)
+    if "\n" in "".join(inside) \
+            or outside.count(",\0") + outside.count("\n\0") + outside.startswith("\0") != m \
+            or outside.count("\0,") + outside.count("\0\n") + outside.endswith("\0") != m:
+        return None
+    return pieces
 
 
 def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
@@ -111,6 +145,8 @@ def _quoted_columns(text: str, n: int) -> list[list[str]] | None:
     column where every cell of every line is quoted, each line has as many, and each holds a
     comma and no quote or line break (so the csv module reads the cells without their quotes,
     and ``csv.writer`` writes the lines as they are); ``None`` otherwise."""
+    if not (text.startswith('"') and text.endswith('"')):  # (before a split of it all)
+        return None
     pieces = text.split('"')  # the odd ones are inside quotes
     if len(pieces) % 2 == 0 or pieces[0] or pieces[-1]:
         return None

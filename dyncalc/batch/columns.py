@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import functools
 import json
-import operator
 import re
 
 import numpy as np
@@ -217,26 +216,36 @@ def _read_column(cells, header_unit: str, param, strict: bool, cache: dict,
 def _one_unit(cells) -> tuple[list[str], str, np.ndarray] | None:
     """``(literals, unit, values)`` of a column whose every cell is a plain number followed by
     the first cell's text after its number (the same blanks and simple unit: ``2.5 m``,
-    ``-1e3 m``), split by slicing off that text instead of a regex pass a cell; ``None``
-    otherwise. It is what :data:`_CELL_LINE_RE` gives such a column: every literal is checked
-    to be a whole number literal in one pass, and a text after the number that starts with an
-    exponent's letter (``e5m``) is left to the regex, which could read ``2e5m`` otherwise.
+    ``-1e3 m``), split by replacing that text away in the joined column instead of a regex
+    pass a cell; ``None`` otherwise. It is what :data:`_CELL_LINE_RE` gives such a column:
+    every literal is a whole number literal (read as JSON numbers at once, a subset of them,
+    else checked by :data:`_LITERALS_RE` in one pass), and a text after the number that starts
+    with an exponent's letter (``e5m``) is left to the regex, which could read ``2e5m``
+    otherwise.
 
     Example: ``["2 m", "0.5 m"]`` gives ``(["2", "0.5"], "m", array([2. , 0.5]))``."""
     first = _CELL_RE.fullmatch(cells[0]) if len(cells) else None
     if first is None or not first.group(2) or not cells[0].startswith(first.group(1)):
         return None
     suffix = cells[0][len(first.group(1)):]
-    if suffix[0] in "eE" or suffix != suffix.rstrip(" \t") \
-            or not all(map(operator.methodcaller("endswith", suffix), cells)):
+    if suffix[0] in "eE" or suffix != suffix.rstrip(" \t"):
         return None
-    cut = len(suffix)
-    literals = [cell[:-cut] for cell in cells]
-    joined = "\n".join(literals)
-    if " " in joined or "\t" in joined or not _LITERALS_RE.fullmatch(joined):
+    # (no line break in the suffix: each of the n - 1 line breaks ends one "suffix\n")
+    n, joined = len(cells), "\n".join(cells)
+    if joined.count("\n") != n - 1 or joined.count(suffix + "\n") != n - 1 \
+            or not joined.endswith(suffix):
         return None
+    text = joined.replace(suffix + "\n", "\n")[:-len(suffix)]
+    if " " in text or "\t" in text:
+        return None
+    literals = text.split("\n")
+    values = json_floats(text.replace("\n", ","), n, literals) \
+        if _PLAIN_COLUMN_CHARS_RE.fullmatch(text) else None
+    if values is None:
+        if not _LITERALS_RE.fullmatch(text):
+            return None
+        values = _plain_floats(literals)
     unit = first.group(2).strip(" \t")
-    values = _plain_floats(literals)
     if values is None or not _SIMPLE_UNIT_RE.fullmatch(unit):
         return None
     return literals, unit, values

@@ -25,7 +25,7 @@ import re
 
 import numpy as np
 
-from .columns import _read_column
+from .columns import _plain_floats, _read_column
 from .fast import FastBlock, _input_texts, json_head
 
 __all__ = ["parse_cell", "tree_fast"]
@@ -157,7 +157,6 @@ def _skeletons(column: list[str]) -> list[str] | None:
     return _PIECE_RE.sub("", joined).split("\n")
 
 
-_DELIMITER_RE = re.compile(r"[(),=\n]")
 
 
 def _uniform_split(column: list[str]):
@@ -178,15 +177,19 @@ def _uniform_split(column: list[str]):
     fixed = [first[ends[i]:ends[i + 1]] for i in range(0, len(ends), 2)]
     n, k = len(column), len(spans)
     joined = "\n".join(column)
-    if joined.count("\n") != n - 1 or any(not t for t in fixed[1:-1]):
+    if joined.count("\n") != n - 1 or any(not t for t in fixed[1:-1]) \
+            or not joined.endswith(fixed[-1]):
         return None
-    text = ("\n" + joined + "\n").replace("\n" + fixed[0], "\n")
-    text = text.replace(fixed[-1] + "\n", "\n")
+    # the texts between rows (the last cell's end, a line break, the next cell's start) and
+    # those inside a cell are line breaks: the values one a line (the first row's start is
+    # the first cell's; the lines written back below check every cell)
+    text = joined[len(fixed[0]):len(joined) - len(fixed[-1])]
+    text = text.replace(fixed[-1] + "\n" + fixed[0], "\n")
     for t in fixed[1:-1]:
         text = text.replace(t, "\n")
-    found = text[1:-1].split("\n")
-    if len(found) != n * k or _DELIMITER_RE.search("".join(found)):
+    if any(map(text.__contains__, "(),=")) or text.count("\n") != n * k - 1:
         return None
+    found = text.split("\n")
     parts: list = [None] * (n * (2 * k + 1))
     width = 2 * k + 1
     parts[0::width] = [fixed[0]] * n
@@ -208,16 +211,21 @@ def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) ->
     shared = [col for col in columns if not _ELEMENT_RE.match(col.key)]
     rows = list(rows)
     if elements and all(cells[col.key][i] for col in elements for i in rows[:1]):
-        split = [_uniform_split([cells[col.key][i] for i in rows]) for col in elements]
+        split = [_uniform_split(_take(cells[col.key], rows)) for col in elements]
         if all(split):  # every row one structure: only the shared columns given may differ
-            present = [[bool(cells[col.key][i]) for i in rows] for col in shared]
+            given = [_take(cells[col.key], rows) for col in shared]
             groups: dict[tuple, list[int]] = {}
-            for r, key in enumerate(zip(*present)):
-                groups.setdefault(key, []).append(r)
+            if shared and all(map(all, given)):  # (the common file: every value given)
+                groups[(True,) * len(shared)] = list(range(len(rows)))
+            else:
+                present = [list(map(bool, column)) for column in given]
+                for r, key in enumerate(zip(*present)):
+                    groups.setdefault(key, []).append(r)
             blocks = []
             for key, members in groups.items():
                 at = np.asarray(members, dtype=np.intp)
-                slots = [[[texts[i] for i in members] for texts in got[1]] for got in split]
+                slots = [got[1] if len(members) == len(rows) else
+                         [[texts[i] for i in members] for texts in got[1]] for got in split]
                 block = _block(spec, elements, [c for c, p in zip(shared, key) if p],
                                tuple(got[0] for got in split), np.asarray(rows)[at], cells,
                                want_json, cache, slots)
@@ -227,7 +235,7 @@ def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) ->
     structures: dict[str, object] = {"": None, _LEAF: ("leaf",), _OTHER: False}
     keys = []
     for col in elements:
-        column = [cells[col.key][i] for i in rows]
+        column = _take(cells[col.key], rows)
         skeletons = _skeletons(column)
         if skeletons is None:
             return []
@@ -240,7 +248,7 @@ def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) ->
                 ok = got is not None and _PIECE_RE.findall(cell) == got[1]
                 structures[skeleton] = got[0] if ok else False
         keys.append([structures[k] for k in skeletons])
-    present = [[bool(cells[col.key][i]) for i in rows] for col in shared]
+    present = [list(map(bool, _take(cells[col.key], rows))) for col in shared]
     groups: dict[tuple, list[int]] = {}
     for r, key in enumerate(zip(*keys, *present)):
         groups.setdefault(key, []).append(rows[r])
@@ -254,6 +262,14 @@ def tree_fast(spec, columns, cells: dict, rows, want_json: bool, cache: dict) ->
         if block is not None:
             blocks.append(block)
     return blocks
+
+
+def _take(column: list[str], rows: list[int]) -> list[str]:
+    """The cells of ``column`` at ``rows`` (increasing indices): the column itself where
+    ``rows`` are all of it."""
+    if len(rows) == len(column):
+        return column
+    return [column[i] for i in rows]
 
 
 def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=None):
@@ -297,10 +313,12 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
     shared_reads = {}
     for col in shared:
         pdim = next(k.params[col.key] for k in ELEMENTS.values() if col.key in k.params)
-        column = [cells[col.key][i] for i in row_list]
-        read = _read_column(column, col.unit, _Param(col.key, pdim), spec.strict, cache)
+        column = _take(cells[col.key], row_list)
+        plain = _plain_floats(column)
+        read = _read_column(column, col.unit, _Param(col.key, pdim), spec.strict, cache, plain)
         good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
-        shared_reads[col.key] = (read, column, col.unit)
+        # (plain numbers: their input texts need no check that each is a number literal)
+        shared_reads[col.key] = (read, column, col.unit, plain is not None)
     count = [0]
     # the texts of each value, depth first over the element columns, a column at a time
     slots: list[list[str]] = []
@@ -308,7 +326,7 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
         if split is not None:  # (every element column given: no empty cell)
             slots += split[index]
             continue
-        column = [cells[col.key][i] for i in row_list]
+        column = _take(cells[col.key], row_list)
         if top[0] == "leaf":
             slots.append(column)
             continue
@@ -344,15 +362,21 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
             typed = values_at(slot[0])
             slot[0] += 1
             unit = top_col.unit if top_col is not None else ""
-            read = _read_column([t.strip() for t in typed], unit, _Param(name, dim),
-                                spec.strict, cache)
+            texts = list(map(str.strip, typed))
+            plain = _plain_floats(texts) if top_col is not None else None
+            read = _read_column(texts, unit, _Param(name, dim), spec.strict, cache, plain)
             good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
+            units = read.unit_json
+            if m and units.count(units[0]) == m:  # (one unit: a column of one value)
+                units = [units[0]]
             if dim is TORSIONAL_STIFFNESS:  # a bare number is linear to the one-off
-                good &= np.array([not a for _u, a in read.unit_json], dtype=bool)
-            si_first = np.array([u == si_json for u, _a in read.unit_json], dtype=bool) \
+                good &= np.array([not a for _u, a in units], dtype=bool)
+            si_first = np.array([u == si_json for u, _a in units], dtype=bool) \
                 if m else np.ones(0, dtype=bool)
+            if len(si_first) != m:
+                si_first = np.full(m, si_first[0])
             if top_col is not None:
-                inputs.append((name, read, [t.strip() for t in typed], unit, False, None))
+                inputs.append((name, read, texts, unit, plain is not None, None))
             else:
                 inputs.append((name, read, typed, "", "as typed", None))
             return read.si, si_first
@@ -365,13 +389,13 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
             if pname in own:
                 typed = values_at(slot[0])
                 slot[0] += 1
-                read = _read_column([t.strip() for t in typed], "", _Param(pname, pdims[pname]),
-                                    spec.strict, cache)
+                read = _read_column(list(map(str.strip, typed)), "",
+                                    _Param(pname, pdims[pname]), spec.strict, cache)
                 good &= read.ok & np.isfinite(read.si) & (read.si > 0.0)
                 inputs.append((f"{name}.{pname}", read, typed, "", "as typed", None))
             else:
-                read, column, unit = shared_reads[pname]
-                inputs.append((f"{name}.{pname}", read, column, unit, False, None))
+                read, column, unit, plain = shared_reads[pname]
+                inputs.append((f"{name}.{pname}", read, column, unit, plain, None))
             si[pname] = np.where(good, read.si, 1.0)
         chosen = [g for g in alternatives if g[0][0] in names]
         factors = [(si[p], power) for p, power in (*lead, *(chosen[0] if chosen else ()))]
@@ -384,6 +408,7 @@ def _block(spec, elements, shared, key, rows, cells, want_json, cache, split=Non
     stiffness = []
     for col, top in zip(given, tops):
         stiffness.append(build(top, col if top[0] == "leaf" else None))
+    build = None  # (a recursive closure is a reference cycle: the chunk's texts freed now)
     first_si = stiffness[0][1]
     good &= first_si
     kernel = (series_stiffness if spec.how == "series" else parallel_stiffness).columns

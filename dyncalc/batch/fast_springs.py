@@ -56,7 +56,7 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
 
     if table and columns and any(spec.parameter(col.key) is None for col in columns):
         n = table.n if isinstance(table, Table) else len(table[0])
-        cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+        cells = {col.key: list(map(str.strip, table[col.index])) for col in columns}
         return tree_fast(spec, columns, cells, range(n), want_json, cache)
     if not table or not columns or (isinstance(table, Table) and table.numbers() is not None):
         return _command_fast(spec, columns, table, want_json, cache)
@@ -68,7 +68,7 @@ def spring_fast(spec, columns, table, want_json: bool, cache: dict) -> list[Fast
                              {col.key: table[col.index] for col in columns}, want_json, cache,
                              parsed)
         return [] if block is None else [block]
-    cells = {col.key: [c.strip() for c in table[col.index]] for col in columns}
+    cells = {col.key: list(map(str.strip, table[col.index])) for col in columns}
     if not any("(" in c for col in columns for c in cells[col.key]):
         return _command_fast(spec, columns, table, want_json, cache)
     # a column of element words in every row leaves no row to the plain stiffnesses' path

@@ -14,6 +14,19 @@ _PLAIN = _PLAIN_RE.pattern
 #: A character ``json.dumps`` writes escaped (``"``, ``\\``, and all but printable ASCII):
 #: a text without one is written as ``"`` + text + ``"``.
 _ESCAPED_RE = re.compile(r'["\\\\]|[^ -~]')
+
+
+def _unescaped(text: str) -> bool:
+    """Whether ``json.dumps`` writes ``text`` as it is between quotes: no character of
+    :data:`_ESCAPED_RE` (printable ASCII is what ``isascii`` and ``isprintable`` both take),
+    found by C loops over the text instead of a regular expression.
+
+    >>> _unescaped("2 m"), _unescaped('2"'), _unescaped("2 µm"), _unescaped("2\\tm")
+    (True, False, False, False)
+    """
+    return text.isascii() and text.isprintable() and '"' not in text and "\\" not in text
+
+
 #: Cells that are each a plain number (``with_header_unit`` appends the header's unit).
 _PLAIN_LINES_RE = re.compile(rf"{_PLAIN}(?:\n{_PLAIN})*")
 
@@ -51,7 +64,8 @@ def _number_parts(name, read, column, header_unit, plain_column, keep, n) -> lis
         before, after = (json.dumps(t)[1:-1] for t in plain_column)
         text = ['"' + before, typed, after + '"']
     elif plain_column == "as typed":  # the cells' texts as they are
-        text = [[json.dumps(c) for c in typed]]
+        text = ['"', typed, '"'] if _unescaped("".join(typed)) \
+            else [[json.dumps(c) for c in typed]]
     elif plain_column:  # plain numbers: the text is the cell and the header's unit
         suffix = json.dumps(" " + header_unit)[1:-1] if header_unit else ""
         joined = "".join(typed)
@@ -68,7 +82,7 @@ def _number_parts(name, read, column, header_unit, plain_column, keep, n) -> lis
             texts, tail = [with_header_unit(c, header_unit) for c in texts], ""
         else:
             texts, tail = texts, ""
-        text = ['"', texts, tail + '"'] if not _ESCAPED_RE.search("".join(texts) + tail) \
+        text = ['"', texts, tail + '"'] if _unescaped("".join(texts) + tail) \
             else [[json.dumps(c + tail) for c in texts]]
     if unit_json and unit_json.count(unit_json[0]) == len(unit_json):
         unit, assumed = unit_json[0]

@@ -4,11 +4,12 @@ from __future__ import annotations
 import csv
 import io
 import itertools
+import operator
 import re
 import sys
 
 from ..errors import InputError
-from .cells import Table, _quoted_columns, _unquoted, _without_quotes
+from .cells import Table, _quoted_columns, _simple_quotes, _unquoted, _without_quotes
 from .csvlines import _csv_lines
 
 
@@ -37,7 +38,8 @@ _ODD_LINE_BREAK_RE = re.compile("[\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
 _ODD_LINE_BREAK_ASCII = _NEEDS_CSV_ASCII[1:]
 #: Lines whose every quote opens or closes a whole cell on its line (``"0,0,1"``, no quote or
 #: line break inside, none in an unquoted cell, no NUL): the csv module reads each line as
-#: one record, never fails, and needs no look at the next line.
+#: one record, never fails, and needs no look at the next line. (The definition:
+#: ``cells._simple_quotes`` finds the same without a regex pass, tests/test_batch_quotes.py.)
 _CELL = '(?:"[^"\r\n\0]*"|[^",\r\n\0]*+)'
 _SIMPLE_QUOTES_RE = re.compile(f"{_CELL}(?:,{_CELL})*+\r?(?:\n{_CELL}(?:,{_CELL})*+\r?)*+")
 #: A quoted cell without a comma (which ``csv.writer`` would not quote), in simple quotes.
@@ -322,7 +324,8 @@ class _Reader:
         if quoted and "\0" not in text:  # every cell quoted (vectors): split at the quotes
             columns = _quoted_columns(text if "\r" not in text
                                       else ended.replace("\r\n", "\n")[:-1], len(parts))
-        if ((quoted and columns is None and not _SIMPLE_QUOTES_RE.fullmatch(text))
+        pieces = _simple_quotes(text) if quoted and columns is None else None
+        if ((quoted and columns is None and pieces is None)
                 or "\r" in text and text.count("\r") != ended.count("\r\n")
                 or max(map(len, parts)) >= MAX_LINE
                 or (_ODD_LINE_BREAK_RE.search(text) if not text.isascii()
@@ -341,9 +344,13 @@ class _Reader:
             # lines are the echo
             if columns is not None:
                 return _Chunk(numbers, lines=lines, suspect=suspect, columns=columns)
-            written = None if _QUOTED_NO_COMMA_RE.search(text) else lines
-            plain = None if written is None else _without_quotes(
-                lines, text if "\r" not in text else "\n".join(lines))
+            # (a quoted cell without a comma, which csv.writer would not quote: no echo)
+            written = lines if all(map(operator.contains, pieces[1::2], itertools.repeat(","))) \
+                else None
+            plain = None
+            if written is not None:  # (the quotes' pieces of the text split once, without \r)
+                plain = _without_quotes(lines, text, pieces) if "\r" not in text else \
+                    _without_quotes(lines, "\n".join(lines))
             if plain is not None:  # split at commas, as a chunk without quotes
                 return _Chunk(numbers, lines=lines, suspect=suspect, plain=plain)
             return _Chunk(numbers, rows=list(csv.reader(lines, strict=True)), suspect=suspect,
