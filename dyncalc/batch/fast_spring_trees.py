@@ -157,8 +157,6 @@ def _skeletons(column: list[str]) -> list[str] | None:
     return _PIECE_RE.sub("", joined).split("\n")
 
 
-
-
 def _uniform_split(column: list[str]):
     """``(structure, slots)`` of a column whose every cell is its first cell's skeleton with
     other values (``slots``: each value's texts, a list a value, depth first), split by plain
