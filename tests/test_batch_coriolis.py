@@ -8,14 +8,12 @@ import math
 
 import numpy as np
 import pytest
-from click.testing import CliRunner
 
-from dyncalc.batch import GENERIC_ENV
-from dyncalc.cli import cli
 from dyncalc.commands import coriolis_earth_columns
 from dyncalc.constants import EARTH_RATE
 from dyncalc.physics.earth_columns import compass_sectors, cos_sin_degrees_rows
 from dyncalc.physics.frames import cos_sin_degrees
+from helpers import batch_run, fast_same_as_generic
 
 RNG_SEED = 20261124
 
@@ -61,10 +59,6 @@ def test_compass_sectors_match_the_one_off_also_at_the_boundaries():
     assert compass_sectors(east, north).tolist() == expected
 
 
-def _run(args, stdin):
-    return CliRunner().invoke(cli, args, input=stdin)
-
-
 def _fast_and_generic(monkeypatch, args, text):
     """The output of ``args`` with the file ``text`` on the vectorised path and on the
     generic one, and the number of rows the Earth adapter marked exact."""
@@ -78,13 +72,7 @@ def _fast_and_generic(monkeypatch, args, text):
         return out
 
     monkeypatch.setattr(coriolis_earth_columns, "earth_columns", counting)
-    fast = _run(args, text)
-    monkeypatch.setenv(GENERIC_ENV, "1")
-    generic = _run(args, text)
-    monkeypatch.delenv(GENERIC_ENV)
-    assert (fast.exit_code, fast.stdout, fast.stderr) == (
-        generic.exit_code, generic.stdout, generic.stderr)
-    return fast, sum(exact)
+    return fast_same_as_generic(monkeypatch, args, text), sum(exact)
 
 
 def _random_rows(rng, n: int, form: str) -> list[str]:
@@ -149,7 +137,7 @@ def test_earth_batch_numbers_and_directions():
     west; the Coriolis force pushes east (to the right of the motion). At the pole an
     eastward 10 m/s: a_c = (0, 2 W v, 0), north; the force south."""
     text = "latitude,vr [m/s],mass [kg]\n45deg,\"0,20,0\",2\n90deg,\"10,0,0\",1\n"
-    out = _run(["coriolis", "--batch", "-", "--json"], text)
+    out = batch_run(["coriolis", "--batch", "-", "--json"], text)
     assert out.exit_code == 0, out.stderr
     first, pole = (json.loads(line) for line in out.stdout.splitlines())
     a_c = first["results"]["a_c"]["value"]
@@ -194,7 +182,7 @@ def test_a_batch_over_times_derives_once_and_is_the_one_off(monkeypatch, as_json
     times = [float(x) for x in rng.uniform(-3, 6, 40)] + [0.0, 1e-300]
     flag = ["--json"] if as_json else []
     calls = _counting_derivations(monkeypatch)
-    batch = _run(_TIME_ARGS + ["--batch", "-", *flag],
+    batch = batch_run(_TIME_ARGS + ["--batch", "-", *flag],
                  "t [s]\n" + "".join(f"{t!r}\n" for t in times))
     assert batch.exit_code == 0, batch.stderr
     assert len(calls) == 1
@@ -204,7 +192,7 @@ def test_a_batch_over_times_derives_once_and_is_the_one_off(monkeypatch, as_json
     for t, line in zip(times, lines):
         relative_time._DERIVED.clear()
         if as_json:
-            one = _run(_TIME_ARGS + ["--t", f"{t!r} s", "--json"], "")
+            one = batch_run(_TIME_ARGS + ["--t", f"{t!r} s", "--json"], "")
             assert one.exit_code == 0, one.stderr
             mine = json.loads(line)
             del mine["line"], mine["inputs"]["t"]
@@ -212,13 +200,13 @@ def test_a_batch_over_times_derives_once_and_is_the_one_off(monkeypatch, as_json
             del theirs["inputs"]["t"]
             assert json.dumps(mine) == json.dumps(theirs)
         else:  # the same row alone, derived afresh
-            alone = _run(_TIME_ARGS + ["--batch", "-"], f"t [s]\n{t!r}\n")
+            alone = batch_run(_TIME_ARGS + ["--batch", "-"], f"t [s]\n{t!r}\n")
             assert alone.stdout.splitlines() == [batch.stdout.splitlines()[0], line]
     assert len(calls) == 1 + len(times)
     calls.clear()
     relative_time._DERIVED.clear()
     text = "t [s],b [m/s^2]\n" + "".join(f"{t!r},{0.5 + (i % 3)}\n" for i, t in enumerate(times))
-    assert _run(_TIME_ARGS + ["--batch", "-"], text).exit_code == 0
+    assert batch_run(_TIME_ARGS + ["--batch", "-"], text).exit_code == 0
     assert len(calls) == 3
 
 
@@ -236,8 +224,8 @@ def test_a_batch_over_times_derives_once_and_is_the_one_off(monkeypatch, as_json
 def test_inverse_rows_are_the_one_offs(header, cells, one_off):
     """Before round 6 a result column was refused ("unknown column"); now each such row is
     the one-off's inverse problem, its JSON line the one-off's JSON (line number aside)."""
-    batch = _run(["coriolis", "--batch", "-", "--json"], f"{header}\n{cells}\n")
-    one = _run(["coriolis", *one_off, "--json"], "")
+    batch = batch_run(["coriolis", "--batch", "-", "--json"], f"{header}\n{cells}\n")
+    one = batch_run(["coriolis", *one_off, "--json"], "")
     assert batch.exit_code == 0 and one.exit_code == 0, batch.stderr + one.stderr
     mine, theirs = json.loads(batch.stdout), json.loads(one.stdout)
     del mine["line"]
@@ -248,13 +236,13 @@ def test_inverse_rows_are_the_one_offs(header, cells, one_off):
 def test_inverse_rows_numbers_and_an_unknown_column():
     """a_c = 2 Omega v_r: 12 m/s^2 at 2 rad/s is 3 m/s; on the Earth the horizontal part
     2 Omega_E v |sin phi| = 1e-4 m/s^2 at 10 m/s gives sin phi = 1e-4 / (2 Omega_E 10)."""
-    out = _run(["coriolis", "--batch", "-"], "a_c [m/s^2],omega [rad/s],vr\n12,2,?\n")
+    out = batch_run(["coriolis", "--batch", "-"], "a_c [m/s^2],omega [rad/s],vr\n12,2,?\n")
     assert float(out.stdout.splitlines()[1].split(",")[3]) == pytest.approx(3.0, rel=1e-15)
-    out = _run(["coriolis", "--batch", "-"],
+    out = batch_run(["coriolis", "--batch", "-"],
                "a_c_horizontal_mag [m/s^2],vr [m/s],latitude\n0.0001,10,?\n")
     latitude = float(out.stdout.splitlines()[1].split(",")[3])
     assert latitude == pytest.approx(math.asin(1e-4 / (2 * EARTH_RATE * 10)), rel=1e-12)
-    bad = _run(["coriolis", "--batch", "-"], "a_x,vr\n1,2\n")
+    bad = batch_run(["coriolis", "--batch", "-"], "a_x,vr\n1,2\n")
     assert bad.exit_code == 2
     assert bad.stderr == ("Error: line 1: unknown column 'a_x'; coriolis reads omega, vr, r, "
                           "alpha, v0, a0, ar, mass, latitude, speed, heading, vertical, R0, t\n")

@@ -93,7 +93,7 @@ class TimeMotion:
         """``name`` (``r``, ``v_r``, ``Omega`` ...) at ``t`` seconds, SI."""
         try:
             values = [float(f(t)) for f in self._f[name]]
-        except (ZeroDivisionError, ValueError, OverflowError, TypeError) as exc:
+        except _UNDEFINED as exc:
             raise PhysicsError(f"{name} cannot be evaluated at t = {t:g} s ({exc}): the "
                                "expression is not defined there") from None
         if not all(math.isfinite(v) for v in values):
@@ -127,7 +127,7 @@ class TimeMotion:
         for i, s in enumerate(times.tolist()):
             try:
                 out[i] = [float(v) for v in f(s)]
-            except (ZeroDivisionError, ValueError, OverflowError, TypeError):
+            except _UNDEFINED:
                 continue
             ok[i] = True
         ok &= np.isfinite(out).all(axis=1)
@@ -157,7 +157,7 @@ class TimeMotion:
             try:
                 value = self._theta(s)
                 theta[i], sin[i], cos[i] = value, math.sin(value), math.cos(value)
-            except (ZeroDivisionError, ValueError, OverflowError, TypeError):
+            except _UNDEFINED:
                 continue
             ok[i] = True
         K = _cross_matrix(self.axis)
