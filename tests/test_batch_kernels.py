@@ -347,3 +347,17 @@ def _coverage(spec, header: str, rows: list[str]) -> tuple[set, set]:
         except InputError:
             pass
     return covered, clean
+
+
+def test_a_text_column_is_the_text_in_every_cell():
+    """text_column: an object array of n cells, each the str itself (eom's equations, an
+    inverse's empty labels), as np.full(n, text, dtype=object) gives it, and none for n=0."""
+    import numpy as np
+
+    from dyncalc.physics.columns import text_column
+
+    column = text_column(4, "phi'' = -g*sin(phi)/l")
+    assert column.dtype == object and column.shape == (4,)
+    assert column.tolist() == ["phi'' = -g*sin(phi)/l"] * 4
+    assert (column == np.full(4, "phi'' = -g*sin(phi)/l", dtype=object)).all()
+    assert text_column(0, "x").shape == (0,) and text_column(2, "").tolist() == ["", ""]

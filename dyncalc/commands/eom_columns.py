@@ -13,6 +13,7 @@ import json
 import math
 
 from ..lazy import numpy as np
+from ..physics.columns import text_column
 
 __all__ = ["scene_columns", "derivation", "derive_scene", "scene_parameters", "light_probe",
            "table_plan"]
@@ -238,7 +239,7 @@ def scene_columns(arrays: dict, settings: dict):
         chosen, texts, extras = made
         M, K = d.plan.matrices(chosen, values)
         omega, _stable = one_frequency(M, K)
-        out = {"eom_1": np.full(n, d.texts[0], dtype=object), "equilibria": texts}
+        out = {"eom_1": text_column(n, d.texts[0]), "equilibria": texts}
         shape = (n, 1, 1) if settings.get("json") else (n,)
         out["mass_matrix"], out["stiffness_matrix"] = M.reshape(shape), K.reshape(shape)
         out["omega_1"], out["f_1"] = omega, omega / (2 * math.pi)
@@ -281,7 +282,7 @@ def _constant_equilibria(d, values, n, exact):
     text = _equilibria_text([d.coord], [[r] for r in d.roots], pattern, True, {})
     extra = {"equilibria": [{d.coord: r, "stable": s} for r, s in zip(d.roots, pattern)],
              "about": {d.coord: chosen}}
-    return (np.full(n, chosen), np.full(n, text, dtype=object),
+    return (np.full(n, chosen), text_column(n, text),
             lambda _keep, line=json.dumps(extra): [line])
 
 

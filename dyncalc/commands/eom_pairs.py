@@ -15,6 +15,7 @@ import json
 import math
 
 from ..lazy import numpy as np
+from ..physics.columns import text_column
 
 __all__ = ["pair_entry", "derive_pair", "pair_roots", "pair_root_forms", "pair_columns"]
 
@@ -183,7 +184,7 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
         M, K, dm, dk = at[k]
         omega, _stable = two_frequencies(M, K, dm, dk)
         exact &= np.isfinite(omega).all(axis=1)
-        out = {f"eom_{i}": np.full(n, t, dtype=object)
+        out = {f"eom_{i}": text_column(n, t)
                for i, t in enumerate(entry["texts"], start=1)}
         if moved:
             out["equilibria"], extras = _moved_texts(coords, rows[0], entry)
@@ -191,7 +192,7 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
             chosen = entry["roots"][k]
             text = _equilibria_text(list(coords), [list(r) for r in entry["roots"]], pattern,
                                     True, {})
-            out["equilibria"] = np.full(n, text, dtype=object)
+            out["equilibria"] = text_column(n, text)
         out["mass_matrix"], out["stiffness_matrix"] = M, K
         out["omega_1"], out["omega_2"] = omega[:, 0], omega[:, 1]
         out["f_1"], out["f_2"] = omega[:, 0] / (2 * math.pi), omega[:, 1] / (2 * math.pi)

@@ -21,7 +21,7 @@ from typing import Any
 
 from ..records import Record
 
-__all__ = ["Columns", "TypedColumn", "column_kernel", "kernel_of"]
+__all__ = ["Columns", "TypedColumn", "column_kernel", "kernel_of", "text_column"]
 
 
 class Columns(Record):
@@ -89,3 +89,18 @@ def column_kernel(physics):
 def kernel_of(physics):
     """The column kernel of ``physics``, or ``None`` where it has none."""
     return getattr(physics, "columns", None)
+
+
+def text_column(n: int, text: str):
+    """A column (object array) of ``n`` cells, each the str ``text``: a result or label that
+    is the same on every row (``eom``'s equations, an inverse's empty label).
+
+    Filled in place: ``np.full(n, text, dtype=object)`` casts the text through a numpy string
+    for every cell, 57 ms for 10^6 rows against 1 ms here (issue 17).
+
+    Example: ``text_column(2, "x'' = -x").tolist() == ["x'' = -x", "x'' = -x"]``."""
+    from ..lazy import numpy as np
+
+    column = np.empty(n, dtype=object)
+    column.fill(text)
+    return column

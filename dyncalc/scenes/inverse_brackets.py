@@ -26,7 +26,7 @@ from types import SimpleNamespace
 
 from ..lazy import numpy as np
 from ..physics.brent_arrays import RTOL_MIN, brent_roots
-from ..physics.columns import TypedColumn
+from ..physics.columns import TypedColumn, text_column
 from ..units import ANGLE
 from .inverse_columns import ClosedForm
 
@@ -100,7 +100,7 @@ def bracketed_columns(scene, kernel, unknown, target: str, arguments: dict, goal
         if out is None:
             return None
         exact &= fine & np.isfinite(value)
-    return ClosedForm(x, out, exact, np.full(n, "", dtype=object))
+    return ClosedForm(x, out, exact, text_column(n, ""))
 
 
 def _bracket(y, xs, part, goal, fine: int):

@@ -17,6 +17,7 @@ import math
 from fractions import Fraction
 
 from ..lazy import numpy as np
+from ..physics.columns import text_column
 from ..physics.numerics_arrays import elementwise
 from ..records import Record
 from ..units import ANGLE
@@ -130,7 +131,7 @@ def _simple_fractions(slope):
         p = np.rint(slope * q)
         close = np.abs(p / q - slope) <= SLOPE_TOL
         a = np.where(close, p / q, a)
-    labels = np.full(len(slope), "", dtype=object)
+    labels = text_column(len(slope), "")
     for value in set(a[np.isfinite(a)].tolist()):
         fraction = Fraction(value).limit_denominator(4)
         if float(fraction) != value:  # not the float of a simple fraction: the one-off's

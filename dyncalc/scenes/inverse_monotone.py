@@ -29,6 +29,7 @@ from types import SimpleNamespace
 
 from ..lazy import numpy as np
 from ..physics.brent_arrays import RTOL_MIN, brent_roots
+from ..physics.columns import text_column
 from ..physics.numerics_arrays import elementwise
 from ..units import ANGLE
 from .inverse_columns import PROBES, SLOPE_TOL, ClosedForm, _log
@@ -114,7 +115,7 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
         if out is None:
             return None
         exact &= fine
-    return ClosedForm(x, out, exact, np.full(n, "", dtype=object))
+    return ClosedForm(x, out, exact, text_column(n, ""))
 
 
 def _no_power_law(y, unknown, every, n):
