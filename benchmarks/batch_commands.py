@@ -147,6 +147,9 @@ CASES = [
      "m1 [kg],m2 [kg],k1 [N/m],k2 [N/m],k3 [N/m]",
      lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
                 ((0.5, 20), (0.5, 20), (1e2, 1e4), (1e2, 1e4), (1e2, 1e4))]),
+    ("modes pendulum-on-sliding-block", ["modes", "--scene", "pendulum-on-sliding-block"],
+     "m1 [kg],m2 [kg],l [m]",
+     lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in ((1, 20), (0.1, 5), (0.1, 1))]),
     ("rigid-body drum-two-blocks", ["rigid-body", "--scene", "drum-two-blocks"],
      "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2]",
      lambda r: [f"{r.uniform(0.5, 50):.6g}", f"{r.uniform(0.5, 50):.6g}",

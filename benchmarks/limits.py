@@ -56,6 +56,8 @@ LIMITS = {
     # round 8: damping that is not proportional, and scenes (issue 17, modesscene)
     "modes non-proportional": [str(LIMIT / "modes_complex.py")],
     "modes coupled-blocks": [str(LIMIT / "modes_scene.py")],
+    # round 10: a rigid-body drift in closed form (issue 17)
+    "modes pendulum-on-sliding-block": [str(LIMIT / "modes_drift.py")],
     # round 6: rigid-body scenes on column kernels (issue 17's brief, rigidbatch)
     "rigid-body drum-two-blocks": [str(LIMIT / "rigid_body.py"), "drum"],
     "rigid-body angled-bar-on-shaft": [str(LIMIT / "rigid_body.py"), "angled-bar"],

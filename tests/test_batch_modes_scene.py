@@ -180,16 +180,8 @@ def test_rows_the_columns_cannot_take_fall_back_with_the_one_offs_messages(tmp_p
         assert tie[0] == tie[1]
 
 
-def test_a_scene_without_a_column_path_stays_row_by_row(tmp_path):
-    """pendulum-on-sliding-block's drift is a rigid-body mode (the one-off's note); r left
-    out of block-disk-springs is the one-off's refusal."""
-    path = tmp_path / "drift.csv"
-    path.write_text("m1 [kg],m2 [kg],l [m]\n3,1,0.5\n")
-    assert ModesRows(scene="pendulum-on-sliding-block").fast is None
-    status, out, err = _run(path, "pendulum-on-sliding-block", False, True)
-    assert status == 0 and "warning: line 2: omega_1 = 0: a rigid-body mode" in err
-    assert math.isclose(float(out.splitlines()[1].split(",")[4]), math.sqrt(4 * 9.80665 / 1.5),
-                        rel_tol=1e-12)
+def test_a_refusal_of_the_one_off_stays_row_by_row(tmp_path):
+    """r left out of block-disk-springs is the one-off's refusal."""
     path = tmp_path / "no_r.csv"
     path.write_text("M [kg],m [kg],k [N/m]\n2,1,100\n")
     assert _blocks(path, "block-disk-springs") == []
@@ -197,6 +189,103 @@ def test_a_scene_without_a_column_path_stays_row_by_row(tmp_path):
     assert status == 2 and err == ("Error: line 2: modes --scene block-disk-springs needs r= "
                                    "(the disk's radius): it cancels from the frequencies but "
                                    "not from the mode shapes\n")
+
+
+DRIFT = "pendulum-on-sliding-block"
+DRIFT_NOTE = ("omega_1 = 0: a rigid-body mode (an eigenvalue omega^2 within 1e-10 of the terms "
+              "of K that sum to it is taken as zero)")
+
+
+def _drift_file(tmp_path, seed: int, count: int = 80, x_first: bool | None = None):
+    """Rows of the drift scene (m1 in kg, m2 in g, l in cm, g perhaps): the block's share of
+    the mass from 0.01 to 0.99, the swing's largest component x or phi (``x_first``: all
+    one, so that a CSV column keeps its unit), lengths and masses scaled alike."""
+    rng = random.Random(seed)
+    lines = ["m1 [kg],m2 [g],l [cm]"]
+    while len(lines) <= count:
+        share = rng.uniform(0.01, 0.99)
+        total = 10.0 ** rng.uniform(-3, 3)
+        m1, m2 = share * total, (1.0 - share) * total
+        l_ = 10.0 ** rng.uniform(-2, 2)
+        s = m2 * l_ / total
+        if x_first is not None and (s > 1.0) != x_first:
+            continue
+        lines.append(f"{m1!r},{m2 * 1000.0!r},{l_ * 100.0!r}")
+    path = tmp_path / "drift.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("normalize", [None, "mass"])
+def test_drift_rows_are_the_one_off_within_1e_12(tmp_path, normalize):
+    """pendulum-on-sliding-block on columns (the closed form of physics/modes_drift.py)
+    against the one-off's LAPACK solve a row at a time: the same note on every row, the
+    same units, the numbers within 1e-12 (JSON lines: every row; CSV: one kind of swing a
+    file, as a column keeps one unit)."""
+    path = _drift_file(tmp_path, 11)
+    assert sum(len(b.rows) for b in _blocks(path, DRIFT)) == 80
+    fast, generic = _run(path, DRIFT, True, True, normalize), \
+        _run(path, DRIFT, True, False, normalize)
+    assert (fast[0], fast[2]) == (generic[0], generic[2]) == (0, "")
+    mine = [json.loads(line) for line in fast[1].splitlines()]
+    theirs = [json.loads(line) for line in generic[1].splitlines()]
+    assert len(mine) == len(theirs) == 80
+    assert {line["results"]["modal_mass_2"]["unit"] for line in mine} == {"kg", "kg*m^2"}
+    for a, b in zip(mine, theirs):
+        assert a["warnings"] == b["warnings"] == [DRIFT_NOTE]
+        assert _close(a, b), (a, b)
+    for x_first in (False, True):
+        path = _drift_file(tmp_path, 12 + x_first, count=40, x_first=x_first)
+        fast, generic = _run(path, DRIFT, False, True, normalize), \
+            _run(path, DRIFT, False, False, normalize)
+        assert (fast[0], fast[2]) == (generic[0], generic[2])
+        assert fast[0] == 0 and fast[2].count(DRIFT_NOTE) == 40
+        assert all(_close(a, b) for a, b in zip(_cells(fast[1]), _cells(generic[1])))
+
+
+def test_drift_is_the_textbook_example_e4_19(tmp_path):
+    """E4.19: m1 = 3 kg, m2 = 1 kg, l = 0.5 m: omega = sqrt((m1 + m2) g / (m1 l)) =
+    5.11381136400890980955 rad/s (the scene's reference, to 30 digits); the swing
+    [-m2 l / (m1 + m2), 1] = [-0.125, 1] with modal mass m1 m2 l^2 / (m1 + m2) = 0.1875 kg m^2
+    and stiffness m2 g l; the drift [1, 0] with the whole mass 4 kg and no stiffness. The
+    same in grams and centimetres."""
+    for header, row in (("m1 [kg],m2 [kg],l [m]", "3,1,0.5"),
+                        ("m1 [g],m2 [g],l [cm]", "3000,1000,50")):
+        path = tmp_path / "e4_19.csv"
+        path.write_text(f"{header}\n{row}\n")
+        assert sum(len(b.rows) for b in _blocks(path, DRIFT)) == 1
+        status, out, err = _run(path, DRIFT, True, True)
+        assert status == 0 and err == ""
+        line = json.loads(out)
+        r = {name: entry["value"] for name, entry in line["results"].items()}
+        assert math.isclose(r["omega_2"], 5.11381136400890980955, rel_tol=2e-16)
+        assert (r["omega_1"], r["f_1"], r["mode_1"], r["modal_mass_1"],
+                r["modal_stiffness_1"]) == (0.0, 0.0, [1.0, 0.0], 4.0, 0.0)
+        assert r["mode_2"] == [-0.125, 1.0] and r["modal_mass_2"] == 0.1875
+        assert math.isclose(r["modal_stiffness_2"], 1 * 9.80665 * 0.5, rel_tol=1e-15)
+        assert line["results"]["modal_mass_2"]["unit"] == "kg*m^2"
+        assert line["warnings"] == [DRIFT_NOTE]
+        assert line["extra"]["equilibrium"] == "phi = 0 (bob below the pin), any x"
+
+
+def test_ill_conditioned_drift_rows_are_left_to_the_one_off(tmp_path):
+    """A block under 1 % of the mass (M's condition number over 400) and a swing whose small
+    component is near the floor below which the one-off shows 0 take the row-by-row path;
+    the output is the one-off's either way."""
+    from dyncalc.physics.modes import _COMPONENT_FLOOR
+
+    tiny = _COMPONENT_FLOOR * 1.3  # s = m2 l / (m1 + m2): within a factor 2 of the floor
+    path = tmp_path / "edge.csv"
+    path.write_text("m1 [kg],m2 [kg],l [m]\n3,1,0.5\n0.001,1,0.5\n"
+                    f"1,1,{2 * tiny!r}\n1,1,{2 * tiny * 1e-3!r}\n")
+    blocks = _blocks(path, DRIFT)
+    assert sorted(int(i) for b in blocks for i in b.rows) == [0, 3]
+    fast, generic = _run(path, DRIFT, True, True), _run(path, DRIFT, True, False)
+    assert (fast[0], fast[2]) == (generic[0], generic[2])
+    mine = [json.loads(line) for line in fast[1].splitlines()]
+    theirs = [json.loads(line) for line in generic[1].splitlines()]
+    assert len(mine) == 4 and all(_close(a, b) for a, b in zip(mine, theirs))
+    assert mine[3]["results"]["mode_2"]["value"] == [0.0, 1.0]  # below the floor: 0
 
 
 def test_with_a_scene_every_column_is_a_scene_parameter(tmp_path):

@@ -8,8 +8,12 @@ one-off's to the bit), then solved on a stack
 finds each row's equilibrium ``phi2_0`` with the one-off's own bisection
 (:func:`dyncalc.physics.lagrange.pendulums_equilibrium`, a row at a time: bit for bit).
 
+``pendulum-on-sliding-block`` (K singular: a rigid-body drift and a swing) is solved in
+closed form (:func:`dyncalc.physics.modes_drift.drift_modes`), every row with the one-off's
+note of the drift.
+
 A row is exact where every parameter is finite and meets its constraint and the kernel takes
-it (no rigid-body mode: ``pendulum-on-sliding-block``'s drift is the one-off's to note);
+it (the stacked kernel: no rigid-body mode; the closed form: see its module);
 the other rows take the generic path, which gives their message. Rows are grouped by which
 coordinate is each mode's largest component (``Columns.groups``): it decides whether a modal
 mass is in kg or kg*m^2.
@@ -68,15 +72,27 @@ def _pendulums(v, np):
     return M, K, phi
 
 
-#: The scenes on columns: their matrices and their constant linearisation facts
-#: (coordinates, kinds, the equilibrium's words; ``None``: per row, from ``phi2_0``).
+def _drift(v, normalize: str):
+    from ..physics.modes_drift import drift_modes
+
+    return drift_modes(v["m1"], v["m2"], v["l"], v["g"], normalize)
+
+
+#: The scenes on columns: their matrices (``None``: solved in closed form, :data:`SOLVED`)
+#: and their constant linearisation facts (coordinates, kinds, the equilibrium's words;
+#: ``None``: per row, from ``phi2_0``).
 SCENES = {
     "coupled-blocks": (_coupled_blocks, ("x1", "x2"), ("length", "length"),
                        "x1 = x2 = 0 (springs unstretched)"),
     "block-disk-springs": (_block_disk_springs, ("x", "phi"), ("length", "angle"),
                            "x = 0, phi = 0 (both springs unstressed)"),
     "spring-coupled-pendulums": (_pendulums, ("phi1", "phi2"), ("angle", "angle"), None),
+    "pendulum-on-sliding-block": (None, ("x", "phi"), ("length", "angle"),
+                                  "phi = 0 (bob below the pin), any x"),
 }
+#: The scenes whose modes come in closed form, not from the stacked kernel: (SI columns by
+#: name, normalize) -> Columns.
+SOLVED = {"pendulum-on-sliding-block": _drift}
 
 
 def _defaults(scene, given) -> dict | None:
@@ -135,10 +151,13 @@ def scene_columns(given: dict, settings: dict):
     for constraint in scene.constraints:  # (the one-off's relations, such as "two k > 0")
         ok &= _holds(constraint, values, rows, np)
     build, coordinates, kinds, equilibrium = SCENES[name]
-    with np.errstate(all="ignore"):
-        M, K, phi = build(values, np)
     normalize = settings.get("normalize") or "max"
-    out = stacked_modes(M, K, normalize)
+    if build is None:
+        out, phi = SOLVED[name](values, normalize), None
+    else:
+        with np.errstate(all="ignore"):
+            M, K, phi = build(values, np)
+        out = stacked_modes(M, K, normalize)
     exact = np.asarray(out.exact, dtype=bool) & ok
     results = dict(out.values)
     if phi is not None:
@@ -166,4 +185,4 @@ def scene_columns(given: dict, settings: dict):
             return [head, [json.dumps(f"phi1 = 0, phi2 = phi2_0 = {p:.6g} rad")
                            for p in phi[keep].tolist()], "}"]
     return Columns(results, exact, model=out.model, method=out.method, extras=extras,
-                   groups=groups)
+                   groups=groups, warnings=out.warnings, warned=out.warned)

@@ -19,7 +19,8 @@ from ..errors import InputError
 from ..lazy import numpy as np
 from ..records import Record
 
-__all__ = ["Modes", "solve_modes", "SYMMETRY_RTOL", "ZERO_RTOL", "PROPORTIONAL_RTOL"]
+__all__ = ["Modes", "solve_modes", "rigid_note", "SYMMETRY_RTOL", "ZERO_RTOL",
+           "PROPORTIONAL_RTOL"]
 
 #: Two mirrored entries may differ by this share of the matrix's largest entry.
 SYMMETRY_RTOL = 1e-9
@@ -165,12 +166,8 @@ def solve_modes(M, K, C=None, *, normalize: str = "max", names=("--M", "--K", "-
         eigenvalues[col] = p.eigenvalues[j]
         p.number[j] = col
     notes: list[str] = []
-    count = int(np.sum(rigid))
-    if count:
-        modes = ", ".join(f"omega_{i + 1}" for i in np.flatnonzero(rigid))
-        notes.append(f"{modes} = 0: {'a rigid-body mode' if count == 1 else 'rigid-body modes'}"
-                     f" (an eigenvalue omega^2 within {ZERO_RTOL:g} of the terms of K that "
-                     f"sum to it is taken as zero)")
+    if rigid.any():
+        notes.append(rigid_note(np.flatnonzero(rigid).tolist()))
     with np.errstate(over="ignore", under="ignore", divide="ignore"):
         shapes, reference = _normalised(V, normalize)
         pivot = np.abs(V[reference, np.arange(n)])
@@ -194,6 +191,15 @@ def solve_modes(M, K, C=None, *, normalize: str = "max", names=("--M", "--K", "-
     if C is not None:
         _damping(out, parts)
     return out
+
+
+def rigid_note(indices: list[int]) -> str:
+    """The note of the rigid-body modes at ``indices`` (0-based, ascending): ``omega_1 = 0: a
+    rigid-body mode (...)``."""
+    modes = ", ".join(f"omega_{i + 1}" for i in indices)
+    return (f"{modes} = 0: {'a rigid-body mode' if len(indices) == 1 else 'rigid-body modes'}"
+            f" (an eigenvalue omega^2 within {ZERO_RTOL:g} of the terms of K that sum to it is "
+            f"taken as zero)")
 
 
 def _components(M, K, C):
