@@ -167,6 +167,11 @@ CASES = [
     ("eom pendulum", ["eom", "--scene", "pendulum"], "l [m],phi [rad],phi_dot [rad/s]",
      lambda r: [f"{r.uniform(0.1, 5):.6g}", f"{r.uniform(-3, 3):.6g}",
                 f"{r.uniform(-2, 2):.6g}"]),
+    ("eom block-disk-springs", ["eom", "--scene", "block-disk-springs"],
+     "M [kg],m [kg],r [m],k [N/m],x [m],phi [rad],x_dot [m/s],phi_dot [rad/s]",
+     lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
+                ((0.5, 20), (0.5, 20), (0.05, 1), (10, 1e4), (-0.1, 0.1), (-1, 1), (-1, 1),
+                 (-2, 2))]),
     ("eom bead-on-rotating-ring", ["eom", "--scene", "bead-on-rotating-ring"],
      "r [m],Omega [rad/s],theta [rad],theta_dot [rad/s]",
      lambda r: [f"{r.uniform(0.05, 1):.6g}", f"{r.uniform(1, 30):.6g}",

@@ -39,7 +39,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "modes coupled-blocks", "modes pendulum-on-sliding-block",
                       "forced-response total response", "forced-response undamped",
                       "eom pendulum", "eom bead-on-rotating-ring", "eom coupled-blocks",
-                      "eom pendulum-on-sliding-block",
+                      "eom pendulum-on-sliding-block", "eom block-disk-springs",
                       "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft", "coriolis Earth inverse vr",
                       "rigid-body inverse",
