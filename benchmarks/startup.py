@@ -61,6 +61,7 @@ QUIET_FLOOR_NAME = ("floor, collector paused as dyncalc's entry pauses it (`gc.d
                     "`gc.freeze()`)")
 TARGET = "dyncalc natural-frequency --k 100N/m --m 2kg --json"
 COMPLETE_VAR = "_DYNCALC_COMPLETE"
+DAMPING = "damping-ratio --c 10N*s/m --k 1kN/m --m 2kg --value zeta"
 PASS = "python -c pass"
 QALC = "qalc -t 'sqrt((100 N/m)/(2 kg)) to 1/s'"
 FULL = "full path (dyncalc.cli.main): natural-frequency --k 100N/m --m 2kg --json"
@@ -98,6 +99,8 @@ def commands(before: str | None = None) -> dict[str, list[str]]:
     dyncalc = [str(script)] if script.exists() else [sys.executable, "-m", "dyncalc"]
     one_off = ["natural-frequency", "--k", "100N/m", "--m", "2kg", "--json"]
     full = [sys.executable, "-c", "from dyncalc.cli import main; main()", *one_off]
+    damping = ["damping-ratio", "--c", "10N*s/m", "--k", "1kN/m", "--m", "2kg", "--value",
+               "zeta"]
     readonly = unwritable_folder()
     cmds = {
         FLOOR_NAME: [sys.executable, "-c", FLOOR],
@@ -114,6 +117,11 @@ def commands(before: str | None = None) -> dict[str, list[str]]:
             "--json"],
         "dyncalc spring-series 200N/m 300N/m --value k_eq": [
             *dyncalc, "spring-series", "200N/m", "300N/m", "--value", "k_eq"],
+        # the full path through the console entry, which hides dask from pint (round 10),
+        # and the same without it (dyncalc.cli.main): apart where dask is installed
+        DAMPING + " (console entry: dask hidden from pint)": [*dyncalc, *damping],
+        DAMPING + " (dyncalc.cli.main: dask not hidden)": [
+            sys.executable, "-c", "from dyncalc.cli import main; main()", *damping],
         "dyncalc --help": [*dyncalc, "--help"],
         "dyncalc shell completion (`_DYNCALC_COMPLETE=bash_complete`)": (dyncalc, {
             COMPLETE_VAR: "bash_complete", "COMP_WORDS": "dyncalc spring-", "COMP_CWORD": "1"}),
