@@ -271,17 +271,19 @@ def test_drift_is_the_textbook_example_e4_19(tmp_path):
 def test_ill_conditioned_drift_rows_are_left_to_the_one_off(tmp_path):
     """A block under 1 % of the mass (M's condition number over 400) and a swing whose small
     component is near the floor below which the one-off shows 0 take the row-by-row path;
-    the output is the one-off's either way."""
+    the output is the one-off's either way, and bad values its one-line refusals."""
     from dyncalc.physics.modes import _COMPONENT_FLOOR
 
     tiny = _COMPONENT_FLOOR * 1.3  # s = m2 l / (m1 + m2): within a factor 2 of the floor
     path = tmp_path / "edge.csv"
     path.write_text("m1 [kg],m2 [kg],l [m]\n3,1,0.5\n0.001,1,0.5\n"
-                    f"1,1,{2 * tiny!r}\n1,1,{2 * tiny * 1e-3!r}\n")
+                    f"1,1,{2 * tiny!r}\n1,1,{2 * tiny * 1e-3!r}\n-3,1,0.5\n3,1,0\n")
     blocks = _blocks(path, DRIFT)
     assert sorted(int(i) for b in blocks for i in b.rows) == [0, 3]
     fast, generic = _run(path, DRIFT, True, True), _run(path, DRIFT, True, False)
     assert (fast[0], fast[2]) == (generic[0], generic[2])
+    assert fast[2] == ("Error: line 6: m1 must be positive; got -3 kilogram\n"
+                       "Error: line 7: l must be positive; got 0 meter\n")
     mine = [json.loads(line) for line in fast[1].splitlines()]
     theirs = [json.loads(line) for line in generic[1].splitlines()]
     assert len(mine) == 4 and all(_close(a, b) for a, b in zip(mine, theirs))
