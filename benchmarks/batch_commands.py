@@ -64,6 +64,15 @@ def _nonproportional_chain(r) -> list[str]:
             f'"[[{c1!r},0],[0,{c2!r}]]"']
 
 
+def _drum_goal(r) -> list[str]:
+    """drum-two-blocks solved for J_A: masses and radii with m2 r2 > m1 r1 and the angular
+    acceleration a drum of 0.01 to 5 kg m^2 would give, to six digits, as the goal."""
+    m1, m2, r1, r2, J = (float(f"{r.uniform(lo, hi):.6g}") for lo, hi in
+                         ((0.5, 5), (5, 50), (0.05, 0.2), (0.2, 0.5), (0.01, 5)))
+    alpha = (m2 * r2 - m1 * r1) * 9.80665 / (J + m1 * r1 * r1 + m2 * r2 * r2)
+    return [repr(m1), repr(m2), repr(r1), repr(r2), "?", f"{alpha:.6g}"]
+
+
 def _annulus(r) -> list[str]:
     """A disk and a concentric hole (``-disk``), lighter and smaller: a valid composite."""
     m, a = r.uniform(0.5, 50), r.uniform(0.05, 2)
@@ -164,6 +173,8 @@ CASES = [
      "m [kg],l [m],M0 [N*m],omega [rad/s],alpha [rad/s^2]",
      lambda r: [f"{r.uniform(0.5, 20):.6g}", f"{r.uniform(0.1, 2):.6g}", "?",
                 f"{r.uniform(0.5, 50):.6g}", f"{r.choice((-1, 1)) * r.uniform(0.1, 100):.6g}"]),
+    ("rigid-body drum J_A inverse", ["rigid-body", "--scene", "drum-two-blocks"],
+     "m1 [kg],m2 [kg],r1 [m],r2 [m],J_A [kg*m^2],alpha [rad/s^2]", lambda r: _drum_goal(r)),
     ("eom pendulum", ["eom", "--scene", "pendulum"], "l [m],phi [rad],phi_dot [rad/s]",
      lambda r: [f"{r.uniform(0.1, 5):.6g}", f"{r.uniform(-3, 3):.6g}",
                 f"{r.uniform(-2, 2):.6g}"]),

@@ -75,6 +75,8 @@ LIMITS = {
     "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
     # round 8: a bracketed inverse on columns (issue 17's brief, rigidbracket)
     "rigid-body inverse": [str(LIMIT / "rigid_body_inverse.py")],
+    # round 10: the drum's inertia from its angular acceleration (issue 17)
+    "rigid-body drum J_A inverse": [str(LIMIT / "rigid_drum_inverse.py")],
     # round 8: a motion in time and a nested spring network (issue 17's brief, springnest)
     "coriolis over times": [str(LIMIT / "coriolis_time.py")],
     "spring-series nested group with a shared EI": [str(LIMIT / "spring_nested.py")],

@@ -42,7 +42,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "eom pendulum-on-sliding-block", "eom block-disk-springs",
                       "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft", "coriolis Earth inverse vr",
-                      "rigid-body inverse",
+                      "rigid-body inverse", "rigid-body drum J_A inverse",
                       "coriolis over times", "spring-series nested group with a shared EI"}
 
 

@@ -72,9 +72,8 @@ def drum_exact(m1, m2, r1, r2, J):
                                m2 * (g - r2 * alpha))]
 
 
-def drum(df):
-    cols = ("m1 [kg]", "m2 [kg]", "r1 [m]", "r2 [m]", "J_A [kg*m^2]")
-    m1, m2, r1, r2, J = (number(df, c) for c in cols)
+def drum_values(m1, m2, r1, r2, J):
+    """``[alpha, a1, a2, S1, S2]``, each the float nearest the exact value (arrays)."""
     p1, p2 = two_prod(m1, r1), two_prod(m2, r2)
     top = add(p2, (-p1[0], -p1[1]))
     den = add(add((J, 0.0), mul(p1, (r1, 0.0))), mul(p2, (r2, 0.0)))
@@ -93,6 +92,12 @@ def drum(df):
     for i in np.flatnonzero(~sure).tolist():
         for column, v in zip(values, drum_exact(m1[i], m2[i], r1[i], r2[i], J[i])):
             column[i] = v
+    return values
+
+
+def drum(df):
+    cols = ("m1 [kg]", "m2 [kg]", "r1 [m]", "r2 [m]", "J_A [kg*m^2]")
+    values = drum_values(*(number(df, c) for c in cols))
     names = ("alpha", "a1", "a2", "S1", "S2")
     units = ("rad/s^2", "m/s^2", "m/s^2", "N", "N")
     given = [(c, c.split(" ")[0], c.split("[")[1][:-1]) for c in cols]
@@ -112,18 +117,23 @@ def angled_bar(df):
     return values, units, given, ""
 
 
-scene, path, as_json = sys.argv[1], sys.argv[2], "--json" in sys.argv[3:]
-df = read(path)
-values, units, given, tail = (drum if scene == "drum" else angled_bar)(df)
-out = {name: text(v) for name, v in values.items()}
-if as_json:
-    name = "drum-two-blocks" if scene == "drum" else "angled-bar-on-shaft"
-    head = ('"schema": "dyncalc/2", "command": "rigid-body", "scene": "' + name + '", '
-            '"model": "linear", "method": "closed-form"')
-    inputs = [p for i, (c, n, u) in enumerate(given) for p in json_input(df, c, n, u, i == 0)]
-    if tail:
-        inputs.append(tail)
-    json_lines(len(df), head, inputs, [p for i, (n, v) in enumerate(out.items())
-                                       for p in json_result(n, v, units[n], i == 0)])
-else:
-    csv_line(df, out, {n: f"{n} [{u}]" for n, u in units.items()})
+def main():
+    scene, path, as_json = sys.argv[1], sys.argv[2], "--json" in sys.argv[3:]
+    df = read(path)
+    values, units, given, tail = (drum if scene == "drum" else angled_bar)(df)
+    out = {name: text(v) for name, v in values.items()}
+    if as_json:
+        name = "drum-two-blocks" if scene == "drum" else "angled-bar-on-shaft"
+        head = ('"schema": "dyncalc/2", "command": "rigid-body", "scene": "' + name + '", '
+                '"model": "linear", "method": "closed-form"')
+        inputs = [p for i, (c, n, u) in enumerate(given) for p in json_input(df, c, n, u, i == 0)]
+        if tail:
+            inputs.append(tail)
+        json_lines(len(df), head, inputs, [p for i, (n, v) in enumerate(out.items())
+                                           for p in json_result(n, v, units[n], i == 0)])
+    else:
+        csv_line(df, out, {n: f"{n} [{u}]" for n, u in units.items()})
+
+
+if __name__ == "__main__":
+    main()

@@ -1,7 +1,8 @@
 """Column kernel of ``modes --scene pendulum-on-sliding-block``: a drift and a swing, in
 closed form.
 
-The linearised matrices about phi = 0 (:func:`dyncalc.physics.lagrange.pendulum_on_sliding_block_matrices`)
+The linearised matrices about phi = 0
+(:func:`dyncalc.physics.lagrange.pendulum_on_sliding_block_matrices`)
 
 .. math:: M = \\begin{bmatrix} m_1 + m_2 & m_2 l \\\\ m_2 l & m_2 l^2 \\end{bmatrix}, \\quad
           K = \\begin{bmatrix} 0 & 0 \\\\ 0 & m_2 g l \\end{bmatrix}
@@ -37,7 +38,7 @@ Example::
     >>> out.values["mode_2"].tolist(), round(float(out.values["omega_2"][0]) ** 2, 9)
     ([[-0.125, 1.0]], 26.151066667)
 
-Reference: Gross et al., Engineering Mechanics 3, E4.17 (a pendulum on a sliding block).
+Reference: Gross et al., Engineering Mechanics 3, E4.19 (a pendulum on a sliding block).
 """
 from __future__ import annotations
 
