@@ -17,8 +17,8 @@ from dyncalc.batch.rows import EomRows
 G = 9.80665
 
 
-def _run(path, scene: str, as_json: bool, fast: bool, calls=None):
-    spec = EomRows(scene=scene)
+def _run(path, scene: str, as_json: bool, fast: bool, calls=None, about=None):
+    spec = EomRows(scene=scene, about=about)
     if calls is not None:
         compute = spec.compute
 
@@ -112,3 +112,48 @@ def test_other_scenes_match_the_one_off(tmp_path, scene, header, make, as_json):
     fast = _run(path, scene, as_json, True)
     assert fast == _run(path, scene, as_json, False)
     assert fast[0] == 0
+
+
+UNSTABLE = ("the equilibrium linearised about is unstable: no natural frequency (a small "
+            "disturbance grows)")
+
+
+@pytest.mark.parametrize("about", ["phi=0", "phi=pi", "phi = 180 deg", "phi=-pi",
+                                   "phi=3.1415926", "phi=1", "x=0", "phi=", "phi=l"])
+@pytest.mark.parametrize("as_json", [False, True])
+def test_about_rows_are_the_one_offs_byte_for_byte(tmp_path, about, as_json):
+    """--about in batch (round 10): the equilibrium named (within the one-off's 1e-6, an
+    angle modulo 2 pi) linearised on columns, stable or not; one that is no equilibrium, or
+    a text the one-off refuses, leaves every row to the one-off and its message."""
+    path = _pendulum_file(tmp_path, 23)
+    fast = _run(path, "pendulum", as_json, True, about=about)
+    slow = _run(path, "pendulum", as_json, False, about=about)
+    assert fast == slow
+
+
+@pytest.mark.parametrize("about", ["phi=pi", "phi=0"])
+def test_about_takes_the_rows_on_columns(tmp_path, about):
+    path = _pendulum_file(tmp_path, 3, count=200, extremes=False)
+    calls: list = []
+    status, out, err = _run(path, "pendulum", False, True, calls, about=about)
+    assert len(calls) < 20  # the probes and the rows left to the one-off, not 200 rows
+    assert out.count("\n") == 1 + 200 + 2
+    assert err.count(UNSTABLE) == (202 if about == "phi=pi" else 0)
+
+
+def test_about_an_unstable_equilibrium_against_the_textbook(tmp_path):
+    """Linearised about phi = pi: K = g l cos(pi) = -g l < 0 per unit mass, so no omega; the
+    one-off's warning and method; phi'' = -g sin(phi)/l at the state all the same."""
+    path = tmp_path / "up.csv"
+    path.write_text("l [m],phi [deg],phi_dot [rad/s]\n2,30,0\n0.5,-90,1\n")
+    status, out, err = _run(path, "pendulum", True, True, about="phi=pi")
+    assert (status, err) == (0, "")
+    lines = [json.loads(line) for line in out.splitlines()]
+    for line, (l_, phi) in zip(lines, [(2.0, math.radians(30)), (0.5, math.radians(-90))]):
+        r = {name: entry["value"] for name, entry in line["results"].items()}
+        assert "omega_1" not in r and "f_1" not in r
+        assert (line["method"], line["warnings"]) == ("symbolic", [UNSTABLE])
+        assert line["extra"]["about"] == {"phi": math.pi}
+        assert r["mass_matrix"] == [[l_ * l_]]
+        assert math.isclose(r["stiffness_matrix"][0][0], -G * l_, rel_tol=1e-15)
+        assert math.isclose(r["phi_ddot"], -G * math.sin(phi) / l_, rel_tol=1e-15)

@@ -4,8 +4,11 @@ functions of the scene's derivation, generated at build time into
 so both agree bit for bit by construction and the batch never imports sympy.
 
 Taken here: one-coordinate scenes, not forced, whose equilibria do not depend on the values
-(``pendulum``: 0 and pi), every row with the first row's stabilities, the chosen equilibrium
-stable, no ``--about``. Every other row runs the one-off (:func:`scene_columns` leaves it).
+(``pendulum``: 0 and pi), every row with the first row's stabilities; the equilibrium
+linearised about is ``--about``'s (round 10), else the first stable one, else the first. One
+that is unstable has no frequency: the one-off's warning, no ``omega_1``/``f_1`` and the
+method ``symbolic``. ``--about`` on a scene whose equilibria depend on the values, or on two
+coordinates, and every other row run the one-off (:func:`scene_columns` leaves them).
 """
 from __future__ import annotations
 
@@ -207,7 +210,7 @@ def scene_columns(arrays: dict, settings: dict):
     from ..scenes.energies import energies
 
     scene = settings.get("scene")
-    if scene is None or settings.get("about") is not None:
+    if scene is None:
         return None
     record = energies(scene)
     params = {p.name: p for p in record.params}
@@ -229,21 +232,30 @@ def scene_columns(arrays: dict, settings: dict):
             exact &= (column >= 0) if name in ("kappa", "b") else (column > 0)
         exact &= np.isfinite(column)
     state = [k for k in arrays if k not in params]
+    about = settings.get("about")
+    if about is not None and (pair is not None or d.roots is None):
+        return None  # (--about: constant equilibria of one coordinate only)
     if pair is not None:
         return pair_columns(arrays, settings, pair, values, exact, n)
+    wanted = None
+    if about is not None:
+        wanted = _about_value(about, d)
+        if wanted is None:
+            return None  # the one-off's refusal, a row at a time
     with np.errstate(all="ignore"):
-        made = (_constant_equilibria if d.roots is not None else _value_equilibria)(
-            d, values, n, exact)
+        made = (_constant_equilibria(d, values, n, exact, wanted) if d.roots is not None
+                else _value_equilibria(d, values, n, exact))
         if made is None:
-            return None  # the one-off linearises about an unstable one: warnings, no omega
-        chosen, texts, extras = made
+            return None  # --about names no equilibrium: the one-off's message
+        chosen, texts, extras, steady = made
         M, K = d.plan.matrices(chosen, values)
         omega, _stable = one_frequency(M, K)
         out = {"eom_1": text_column(n, d.texts[0]), "equilibria": texts}
         shape = (n, 1, 1) if settings.get("json") else (n,)
         out["mass_matrix"], out["stiffness_matrix"] = M.reshape(shape), K.reshape(shape)
-        out["omega_1"], out["f_1"] = omega, omega / (2 * math.pi)
-        exact &= np.isfinite(omega)
+        if steady:
+            out["omega_1"], out["f_1"] = omega, omega / (2 * math.pi)
+            exact &= np.isfinite(omega)
         if state:
             c = d.coord
             if c not in arrays or c + "_dot" not in arrays or (d.plan.uses_t
@@ -255,17 +267,41 @@ def scene_columns(arrays: dict, settings: dict):
                                        np.asarray(t, dtype=float), values)
             exact &= np.isfinite(acc) & np.isfinite(arrays[c]) & np.isfinite(arrays[c + "_dot"])
             out[f"{c}_ddot"] = acc
-    return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
-                   warnings=d.warnings, warned=np.ones(n, dtype=bool) if d.warnings else None,
+    warnings = d.warnings if steady else (*d.warnings, UNSTABLE)
+    return Columns(out, exact, model="lagrange",
+                   method="symbolic + numeric equilibria" if steady else "symbolic",
+                   warnings=warnings, warned=np.ones(n, dtype=bool) if warnings else None,
                    extras=extras)
 
 
-def _constant_equilibria(d, values, n, exact):
-    """``(chosen, texts, extras)`` of a scene whose equilibria are constants: rows with the
-    first row's stabilities are exact (``exact`` updated in place); ``None``: that first
-    row has no stable one."""
+#: The one-off's warning where the equilibrium linearised about is unstable.
+UNSTABLE = ("the equilibrium linearised about is unstable: no natural frequency (a small "
+            "disturbance grows)")
+
+
+def _about_value(about: str, d) -> float | None:
+    """The coordinate's value ``--about`` names (SI), as the one-off reads it; ``None`` where
+    it refuses the text (the generic path gives its message)."""
+    from types import SimpleNamespace
+
+    from ..errors import InputError
+    from .eom_results import _parse_about
+
+    try:
+        wanted = _parse_about(SimpleNamespace(about=about, coords=[d.coord]), None, None)
+    except InputError:
+        return None
+    return float(wanted[0]) if 0 in wanted else None
+
+
+def _constant_equilibria(d, values, n, exact, wanted: float | None = None):
+    """``(chosen, texts, extras, steady)`` of a scene whose equilibria are constants: rows
+    with the first row's stabilities are exact (``exact`` updated in place); the equilibrium
+    chosen as the one-off chooses it (``wanted``, ``--about``'s value: the first equilibrium
+    close to it; else the first stable one, else the first), ``steady`` whether it is stable;
+    ``None``: ``wanted`` is no equilibrium."""
     from ..physics.eom_columns import one_frequency
-    from .eom_results import _equilibria_text
+    from .eom_results import _close, _equilibria_text
 
     stable = []
     for root in d.roots:
@@ -276,18 +312,23 @@ def _constant_equilibria(d, values, n, exact):
     pattern = [bool(s[first]) for s in stable]
     for s, want in zip(stable, pattern):
         exact &= s == want
-    if not any(pattern):
-        return None
-    chosen = d.roots[pattern.index(True)]
+    if wanted is not None:
+        near = [k for k, r in enumerate(d.roots) if _close(r, wanted, d.angle)]
+        if not near:
+            return None
+        k = near[0]
+    else:
+        k = pattern.index(True) if any(pattern) else 0
+    chosen = d.roots[k]
     text = _equilibria_text([d.coord], [[r] for r in d.roots], pattern, True, {})
     extra = {"equilibria": [{d.coord: r, "stable": s} for r, s in zip(d.roots, pattern)],
              "about": {d.coord: chosen}}
     return (np.full(n, chosen), text_column(n, text),
-            lambda _keep, line=json.dumps(extra): [line])
+            lambda _keep, line=json.dumps(extra): [line], pattern[k])
 
 
 def _value_equilibria(d, values, n, exact):
-    """``(chosen, texts, extras)`` of a scene whose equilibria depend on the values: each
+    """``(chosen, texts, extras, True)`` of a scene whose equilibria depend on the values: each
     row's closed-form roots (:func:`~dyncalc.physics.eom_columns.equilibria_rows`, as the
     one-off takes them), their stabilities from ``K / M``, the first stable one chosen; rows
     without a stable one are not exact (``exact`` updated in place)."""
@@ -349,4 +390,4 @@ def _value_equilibria(d, values, n, exact):
             out[np.searchsorted(keep, at)] = list(map(template.format, *varying)) \
                 if varying else [template.format()] * len(at)
         return [out.tolist()]
-    return chosen, texts, extras
+    return chosen, texts, extras, True
