@@ -343,3 +343,69 @@ def test_the_sorted_diagonal_is_lapacks_eigh_bit_for_bit():
     assert np.array_equal(np.take_along_axis(d, world, axis=1)[plain], moments[plain])
     assert (~plain).sum() > 100
     assert distinct.sum() > n // 2 and (~distinct).sum() > n // 5
+
+
+def _strict_split(pieces, cells):
+    """The slots' texts by the template's own pattern (a literal in each slot), or None."""
+    import re
+
+    from dyncalc.batch.fast_inertia import _SLOT
+
+    pattern = re.compile("^" + _SLOT.join(map(re.escape, pieces)) + "$", re.M)
+    k, n = len(pieces), len(cells)
+    split = pattern.split("\n".join(cells))
+    if len(split) != 1 + n * k or "".join(split[::k]) != "\n" * (n - 1):
+        return None
+    return [split[j::k] for j in range(1, k)]
+
+
+def _loose(pieces, cells):
+    from dyncalc.batch.fast_inertia import _loose as loose
+
+    return loose(pieces, "\n".join(cells), len(cells), len(pieces), "#".join(pieces), {})
+
+
+def test_the_loose_split_takes_what_the_literal_pattern_takes_and_reads_it():
+    """Round 10: slots split as runs of a literal's characters and read as JSON numbers give
+    the literal pattern's texts, with their values; a template a literal may run into, or a
+    slot JSON refuses (``+5``, ``.5``, ``5.``, ``007``, ``1-2``), is left to that pattern."""
+    pieces = ["disk(m=", " kg, r=", " m)"]
+    cells = ["disk(m=2 kg, r=0.5 m)", "disk(m=-0 kg, r=1E+3 m)", "disk(m=7e-300 kg, r=3 m)"]
+    got = _loose(pieces, cells)
+    assert got == _strict_split(pieces, cells) == [["2", "-0", "7e-300"], ["0.5", "1E+3", "3"]]
+    assert [g.values.tolist() for g in got] == [[2.0, -0.0, 7e-300], [0.5, 1000.0, 3.0]]
+    assert math.copysign(1.0, got[0].values[1]) == -1.0  # -0 read as float reads it
+    for bad in ("+5", ".5", "5.", "007", "1-2", "1e", ""):
+        odd = cells + [f"disk(m={bad} kg, r=1 m)"]
+        assert _loose(pieces, odd) is None
+    for template in (["a=", "e5 kg"], ["a=1", " kg"], ["a=", "\n", " m"]):
+        assert _loose(template, ["".join(p + "1" for p in template[:-1]) + template[-1]]) \
+            is None
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_loose_split_never_differs_from_the_literal_pattern(seed):
+    """Random templates (fixed texts of letters, ``=``, ``,``, brackets, blanks, ``e``) and
+    cells of literals, near-literals and pieces run together: wherever the loose split
+    answers, it is the literal pattern's split, and its values are float's."""
+    rng = random.Random(seed)
+    alphabet = "abm=,( )µe5"
+    literal_chars = "0123456789.eE+-"
+    for _ in range(400):
+        pieces = ["".join(rng.choice(alphabet) for _ in range(rng.randint(1, 5)))
+                  for _ in range(rng.randint(2, 4))]
+        cells = []
+        for _ in range(rng.randint(1, 5)):
+            values = [rng.choice([repr(rng.uniform(-1e3, 1e3)), str(rng.randint(-99, 99)),
+                                  "".join(rng.choice(literal_chars)
+                                          for _ in range(rng.randint(0, 4)))])
+                      for _ in range(len(pieces) - 1)]
+            cell = "".join(p + v for p, v in zip(pieces, values)) + pieces[-1]
+            if rng.random() < 0.2:  # pieces and literals run together
+                cell = "".join(rng.choice(pieces + values) for _ in range(rng.randint(1, 6)))
+            cells.append(cell)
+        got = _loose(pieces, cells)
+        if got is not None:
+            assert got == _strict_split(pieces, cells), (pieces, cells)
+            for texts in got:
+                assert texts.values.tolist() == [float(t) for t in texts]
