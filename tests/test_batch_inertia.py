@@ -362,7 +362,7 @@ def _strict_split(pieces, cells):
 def _loose(pieces, cells):
     from dyncalc.batch.fast_inertia import _loose as loose
 
-    return loose(pieces, "\n".join(cells), len(cells), len(pieces), "#".join(pieces), {})
+    return loose(pieces, "\n".join(cells), len(cells), len(pieces), {})
 
 
 def test_the_loose_split_takes_what_the_literal_pattern_takes_and_reads_it():

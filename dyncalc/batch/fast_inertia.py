@@ -150,19 +150,27 @@ def _one_template(bodies, body_cells, cache: dict):
         pieces = template.split("#")
         k, n = len(shape[1]) + 1, len(cells)
         joined = "\n".join(cells)
-        literals = _loose(pieces, joined, n, k, template, cache)
+        literals = _loose(pieces, joined, n, k, cache)
         if literals is None:
-            key = ("inertia-pattern", template)
-            if key not in cache:
-                cache[key] = re.compile("^" + _SLOT.join(map(re.escape, pieces)) + "$", re.M)
-            # split: the text between matches, then a match's slots, ...; every cell matched
-            # where the text between is only the line breaks
-            split = cache[key].split(joined)
-            if len(split) != 1 + n * k or "".join(split[::k]) != "\n" * (n - 1):
+            literals = _slots(pieces, _SLOT, joined, n, k, cache)
+            if literals is None:
                 return None
-            literals = [split[j::k] for j in range(1, k)]
         parts.append((column, shape, literals))
     return parts
+
+
+def _slots(pieces: list[str], slot: str, joined: str, n: int, k: int, cache: dict):
+    """Each slot's texts (a list a slot) of ``joined`` (``n`` cells, ``k - 1`` slots), split
+    by the pattern of ``pieces`` with ``slot`` in each slot (compiled once a run); ``None``
+    where a cell is off it. The split gives the text between matches, then a match's slots,
+    ...; every cell matched where the text between is only the line breaks."""
+    key = ("inertia-pattern", slot, tuple(pieces))
+    if key not in cache:
+        cache[key] = re.compile("^" + slot.join(map(re.escape, pieces)) + "$", re.M)
+    split = cache[key].split(joined)
+    if len(split) != 1 + n * k or "".join(split[::k]) != "\n" * (n - 1):
+        return None
+    return [split[j::k] for j in range(1, k)]
 
 
 #: A slot of a template no literal can run into: a run of a literal's characters (checked
@@ -186,7 +194,7 @@ def _clear(pieces: list[str]) -> bool:
             and not any(p and p[0] in _LITERAL_CHARS for p in pieces[1:]))
 
 
-def _loose(pieces, joined: str, n: int, k: int, template: str, cache: dict):
+def _loose(pieces, joined: str, n: int, k: int, cache: dict):
     """The slots' literals (:class:`_Literals`, their values read) of ``joined`` (``n``
     cells, ``k - 1`` slots), split by :data:`_LOOSE_SLOT`; ``None`` where the template is
     not :func:`_clear`, a cell is off it, or a slot is not a JSON number (JSON's number
@@ -195,15 +203,12 @@ def _loose(pieces, joined: str, n: int, k: int, template: str, cache: dict):
     pattern)."""
     if not _clear(pieces):
         return None
-    key = ("inertia-loose", template)
-    if key not in cache:
-        cache[key] = re.compile("^" + _LOOSE_SLOT.join(map(re.escape, pieces)) + "$", re.M)
-    split = cache[key].split(joined)
-    if len(split) != 1 + n * k or "".join(split[::k]) != "\n" * (n - 1):
+    split = _slots(pieces, _LOOSE_SLOT, joined, n, k, cache)
+    if split is None:
         return None
     out = []
-    for j in range(1, k):
-        texts = _Literals(split[j::k])
+    for column in split:
+        texts = _Literals(column)
         texts.values = json_floats(",".join(texts), n, texts)
         if texts.values is None:
             return None
