@@ -95,3 +95,39 @@ def json_result(name: str, values, unit: str, first: bool = False):
     """The parts of one result entry: ``"omega": {"value": 7.07, "unit": "rad/s"}``."""
     return [("" if first else ", ") + f'"{name}": {{"value": ', values,
             f', "unit": "{unit}"}}']
+
+
+def joined(*parts) -> pl.Series:
+    """One text a row: the ``parts`` (a str the same on every row, or a Series) concatenated."""
+    return pl.select(pl.concat_str([pl.lit(p) for p in parts])).to_series()
+
+
+def warning_lines(n: int, warning: str) -> None:
+    """dyncalc's CSV ``warning: line N: TEXT`` lines on stderr, one a row (lines 2 to n + 1),
+    after stdout is flushed."""
+    sys.stdout.flush()
+    lines = pl.select(pl.concat_str([pl.lit("warning: line "),
+                                     pl.Series(np.arange(2, n + 2)).cast(pl.String),
+                                     pl.lit(": " + warning)]).alias("w"))
+    lines.write_csv(sys.stderr.buffer, include_header=False, quote_style="never")
+
+
+def inverse_lines(df: pl.DataFrame, as_json: bool, scene: str, inputs: list, out: dict,
+                  units: dict, unknown: str, goal: str) -> None:
+    """The output of a rigid-body inverse row solved for ``unknown`` from the result ``goal``
+    by the one-off's bracketed search: JSON lines (``inputs``: the input entries' parts) or
+    CSV (the unknown and the goal as ``NAME_result`` columns)."""
+    if as_json:
+        head = ('"schema": "dyncalc/2", "command": "rigid-body", "scene": "' + scene + '", '
+                '"model": "linear", "method": "closed-form"')
+        results = [p for k, (n, v) in enumerate(out.items())
+                   for p in json_result(n, v, units[n], k == 0)]
+        json_lines(len(df), head, inputs, results,
+                   '{"inverse": {"unknown": "' + unknown + '", "method": "bracketed-root", '
+                   '"detail": "a sign change on a grid of ' + unknown + ', refined by '
+                   'Brent\'s method"}}')
+    else:
+        header = {n: f"{n} [{u}]" for n, u in units.items()}
+        for name in (unknown, goal):
+            header[name] = f"{name}_result [{units[name]}]"
+        csv_line(df, out, header)

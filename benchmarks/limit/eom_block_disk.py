@@ -8,9 +8,8 @@ dyncalc/scenes/eom_tables2.py, the same float operations in the same order)."""
 import json
 
 import numpy as np
-import polars as pl
-from _limit import (TWO_PI, arguments, csv_line, json_input, json_lines, json_result, number,
-                    read, text)
+from _limit import (TWO_PI, arguments, csv_line, joined, json_input, json_lines, json_result,
+                    number, read, text)
 
 path, as_json = arguments()
 df = read(path)
@@ -59,12 +58,10 @@ if as_json:
         {"equilibria": [{"x": 0.0, "phi": 0.0, "stable": True}],
          "about": {"x": 0.0, "phi": 0.0}, "matrix_units": UNITS}))
 else:
-    def cell(*parts):
-        return pl.select(pl.concat_str([pl.lit(p) for p in parts])).to_series()
     out = {"eom_1": EOM1, "eom_2": EOM2, "equilibria": EQ,
-           "mass_matrix": cell("[[", m00, " kg, ", m01, " kg*m], [", m01, " kg*m, ", m11,
+           "mass_matrix": joined("[[", m00, " kg, ", m01, " kg*m], [", m01, " kg*m, ", m11,
                                " kg*m^2]]"),
-           "stiffness_matrix": cell("[[", k00, " N/m, 0.0 N/rad], [0.0 N/rad, ", k11,
+           "stiffness_matrix": joined("[[", k00, " N/m, 0.0 N/rad], [0.0 N/rad, ", k11,
                                     " N*m/rad]]"),
            "omega_1": text(omega1), "omega_2": text(omega2), "f_1": text(omega1 / TWO_PI),
            "f_2": text(omega2 / TWO_PI), "x_ddot": text(ax), "phi_ddot": text(aphi)}

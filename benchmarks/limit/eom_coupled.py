@@ -4,9 +4,8 @@ K = [[k1 + k3, -k3], [-k3, k2 + k3]], the two frequencies by the symmetric reduc
 ``det(K - lam M) = 0`` (dyncalc.physics.eom_pairs: c = L^-1 K L^-T, lam = mean +- hypot,
 the smaller from det K / det M / the larger) and the accelerations."""
 import numpy as np
-import polars as pl
-from _limit import (TWO_PI, arguments, csv_line, json_lines, json_input, json_result, number,
-                    read, text)
+from _limit import (TWO_PI, arguments, csv_line, joined, json_lines, json_input, json_result,
+                    number, read, text)
 
 path, as_json = arguments()
 df = read(path)
@@ -46,11 +45,9 @@ if as_json:
                '{"equilibria": [{"x1": 0.0, "x2": 0.0, "stable": true}], '
                '"about": {"x1": 0.0, "x2": 0.0}}')
 else:
-    def cell(*parts):
-        return pl.select(pl.concat_str([pl.lit(p) for p in parts])).to_series()
     out = {"eom_1": EOM1, "eom_2": EOM2, "equilibria": EQ,
-           "mass_matrix": cell(text(m1), ",0.0;0.0,", text(m2)),
-           "stiffness_matrix": cell(K00, ",", K01, ";", K01, ",", K11),
+           "mass_matrix": joined(text(m1), ",0.0;0.0,", text(m2)),
+           "stiffness_matrix": joined(K00, ",", K01, ";", K01, ",", K11),
            "omega_1": text(omega1), "omega_2": text(omega2), "f_1": text(omega1 / TWO_PI),
            "f_2": text(omega2 / TWO_PI), "x1_ddot": text(a1), "x2_ddot": text(a2)}
     csv_line(df, out, {n: f"{n} [{u}]" if u else n for n, u in units.items()})

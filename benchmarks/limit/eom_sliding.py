@@ -5,9 +5,8 @@ K = [[0, 0], [0, g l m2]] (a unit on each entry), omega_1 = 0 (x free) and omega
 symmetric reduction of ``det(K - lam M) = 0`` as dyncalc.physics.eom_pairs writes it
 (here c00 = c01 = 0), and the two accelerations."""
 import numpy as np
-import polars as pl
-from _limit import (TWO_PI, arguments, csv_line, json_input, json_lines, json_result, number,
-                    read, text)
+from _limit import (TWO_PI, arguments, csv_line, joined, json_input, json_lines, json_result,
+                    number, read, text)
 
 G = 9.80665
 path, as_json = arguments()
@@ -48,12 +47,10 @@ if as_json:
                '"matrix_units": {"mass_matrix": [["kg", "kg*m"], ["kg*m", "kg*m^2"]], '
                '"stiffness_matrix": [["N/m", "N/rad"], ["N/rad", "N*m/rad"]]}}')
 else:
-    def cell(*parts):
-        return pl.select(pl.concat_str([pl.lit(p) for p in parts])).to_series()
     out = {"eom_1": EOM1, "eom_2": EOM2, "equilibria": EQ,
-           "mass_matrix": cell("[[", m00, " kg, ", m01, " kg*m], [", m01, " kg*m, ", m11,
+           "mass_matrix": joined("[[", m00, " kg, ", m01, " kg*m], [", m01, " kg*m, ", m11,
                                " kg*m^2]]"),
-           "stiffness_matrix": cell("[[0.0 N/m, 0.0 N/rad], [0.0 N/rad, ", k11, " N*m/rad]]"),
+           "stiffness_matrix": joined("[[0.0 N/m, 0.0 N/rad], [0.0 N/rad, ", k11, " N*m/rad]]"),
            "omega_1": "0.0", "omega_2": text(omega2), "f_1": "0.0",
            "f_2": text(omega2 / TWO_PI), "x_ddot": text(ax), "phi_ddot": text(aphi)}
     csv_line(df, out, {n: f"{n} [{u}]" if u else n for n, u in units.items()})

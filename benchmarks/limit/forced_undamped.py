@@ -3,13 +3,13 @@ from resonance: ``1 - eta^2`` exactly rounded as in forced_response.py; with ``z
 ``V = TR = 1/|1 - eta^2|`` and ``phi`` 0 below resonance, pi above; the one-off's warning on
 every row (JSON lines: in ``warnings``; CSV: a ``warning:`` line a row on stderr)."""
 import math
-import sys
 
 import numpy as np
 import polars as pl
 
 from _forced import one_minus_eta_squared
-from _limit import (arguments, csv_line, json_input, json_result, number, read, text, write)
+from _limit import (arguments, csv_line, json_input, json_result, number, read, text,
+                    warning_lines, write)
 
 WARNING = "undamped: X_res, the peak and the bandwidth are unbounded; not given"
 
@@ -51,8 +51,4 @@ else:
         out["isolation"] = pl.select(pl.when(pl.lit(mask)).then(pl.lit(iso))
                                      .otherwise(None)).to_series()
     csv_line(df, out, {n: f"{n} [{u}]" if u else n for n, u in units.items()})
-    sys.stdout.flush()
-    lines = pl.select(pl.concat_str([pl.lit("warning: line "),
-                                     pl.Series(np.arange(2, len(df) + 2)).cast(pl.String),
-                                     pl.lit(": " + WARNING)]).alias("w"))
-    lines.write_csv(sys.stderr.buffer, include_header=False, quote_style="never")
+    warning_lines(len(df), WARNING)

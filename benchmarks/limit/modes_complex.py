@@ -8,12 +8,10 @@ eigh of ``A = L^-1 K L^-T``, shapes ``V = L^-T w`` scaled to a largest component
 reduced state-space matrix ``[[0, I], [-A, -L^-1 C L^-T]]``, its eigenvalues with ``Im s >
 0`` by ascending ``|s|``, each matched to the free undamped mode of nearest omega:
 ``zeta = -Re s / |s|``, ``omega_d = Im s``, ``|s|`` in dyncalc's scaled form."""
-import sys
-
 import numpy as np
 import polars as pl
 
-from _limit import arguments, json_result, read, text, write
+from _limit import arguments, json_result, read, text, warning_lines, write
 from _modes import matrices, pair, undamped, undamped_values, write_csv
 
 NOTE = ("the damping is not proportional (Phi^T C Phi is not diagonal: C M^-1 K != K M^-1 C), "
@@ -84,8 +82,4 @@ if as_json:
            *results, '}, "warnings": ["' + NOTE + '"], "extra": ' + extra + "}"])
 else:
     write_csv(df, values, units)
-    sys.stdout.flush()
-    lines = pl.select(pl.concat_str([pl.lit("warning: line "),
-                                     pl.Series(np.arange(2, rows + 2)).cast(pl.String),
-                                     pl.lit(": " + NOTE)]).alias("w"))
-    lines.write_csv(sys.stderr.buffer, include_header=False, quote_style="never")
+    warning_lines(rows, NOTE)

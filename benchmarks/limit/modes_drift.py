@@ -10,12 +10,12 @@ component), modal mass ``m1 m2 l^2 / (m1 + m2)`` and stiffness ``m2 g l`` (dynca
 form, the same float operations in the same order)."""
 import json
 import math
-import sys
 
 import numpy as np
 import polars as pl
 
-from _limit import arguments, csv_line, json_input, json_result, number, read, text, write
+from _limit import (arguments, csv_line, json_input, json_result, number, read, text,
+                    warning_lines, write)
 
 G = 9.80665
 NOTE = ("omega_1 = 0: a rigid-body mode (an eigenvalue omega^2 within 1e-10 of the terms of K "
@@ -62,8 +62,4 @@ else:
     values["mode_1"] = "1.0,0.0"
     values["mode_2"] = pl.concat_str([pl.lit(values["mode_2"]), pl.lit(",1.0")])
     csv_line(df, values, {n: f"{n} [{u}]" if u else n for n, u in units.items()})
-    sys.stdout.flush()
-    lines = pl.select(pl.concat_str([pl.lit("warning: line "),
-                                     pl.Series(np.arange(2, len(df) + 2)).cast(pl.String),
-                                     pl.lit(": " + NOTE)]).alias("w"))
-    lines.write_csv(sys.stderr.buffer, include_header=False, quote_style="never")
+    warning_lines(len(df), NOTE)

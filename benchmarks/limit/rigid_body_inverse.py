@@ -10,8 +10,7 @@ import numpy as np
 
 from dyncalc.physics.brent_arrays import RTOL_MIN, brent_roots
 from dyncalc.physics.numerics_arrays import elementwise
-from _limit import arguments, csv_line, json_input, json_lines, json_result, number, read, \
-    text
+from _limit import arguments, inverse_lines, json_input, number, read, text
 
 DECADES = [5e-324, *(10.0 ** e for e in range(-300, 301, 5)), 1.7976931348623157e308]
 GRID = np.array([-d for d in reversed(DECADES)] + [0.0] + DECADES)
@@ -49,18 +48,7 @@ out = {"M0": text(M0), "alpha": text(alpha_of(M0, m, l)),
        "A_xi": text(0.0 - 0.75 * centripetal), "A_eta": text(27.0 * M0 / (80.0 * l)),
        "B_xi": text(0.0 - 7.0 * centripetal / 12.0), "B_eta": text(21.0 * M0 / (80.0 * l))}
 units = {"M0": "N*m", "alpha": "rad/s^2", "A_xi": "N", "A_eta": "N", "B_xi": "N", "B_eta": "N"}
-if as_json:
-    head = ('"schema": "dyncalc/2", "command": "rigid-body", "scene": "angled-bar-on-shaft", '
-            '"model": "linear", "method": "closed-form"')
-    inputs = (json_input(df, "m [kg]", "m", "kg", True) + json_input(df, "l [m]", "l", "m")
-              + json_input(df, "omega [rad/s]", "omega", "rad/s")
-              + json_input(df, "alpha [rad/s^2]", "alpha", "rad/s^2"))
-    json_lines(len(df), head, inputs,
-               [p for k, (n, v) in enumerate(out.items()) for p in json_result(n, v, units[n],
-                                                                              k == 0)],
-               '{"inverse": {"unknown": "M0", "method": "bracketed-root", "detail": "a sign '
-               'change on a grid of M0, refined by Brent\'s method"}}')
-else:
-    header = {n: f"{n} [{u}]" for n, u in units.items()}
-    header["M0"], header["alpha"] = "M0_result [N*m]", "alpha_result [rad/s^2]"
-    csv_line(df, out, header)
+inputs = (json_input(df, "m [kg]", "m", "kg", True) + json_input(df, "l [m]", "l", "m")
+          + json_input(df, "omega [rad/s]", "omega", "rad/s")
+          + json_input(df, "alpha [rad/s^2]", "alpha", "rad/s^2"))
+inverse_lines(df, as_json, "angled-bar-on-shaft", inputs, out, units, "M0", "alpha")

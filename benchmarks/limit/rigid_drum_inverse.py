@@ -13,8 +13,7 @@ import numpy as np
 
 from dyncalc.physics.brent_arrays import RTOL_MIN, brent_roots
 from dyncalc.physics.numerics_arrays import elementwise
-from _limit import arguments, csv_line, json_input, json_lines, json_result, number, read, \
-    text
+from _limit import arguments, inverse_lines, json_input, number, read, text
 from rigid_body import G, drum_values
 
 DECADES = [5e-324, *(10.0 ** e for e in range(-300, 301, 5)), 1.7976931348623157e308]
@@ -55,19 +54,8 @@ out = {"J_A": text(J), "alpha": text(alpha), "a1": text(a1), "a2": text(a2), "S1
        "S2": text(S2)}
 units = {"J_A": "kg*m^2", "alpha": "rad/s^2", "a1": "m/s^2", "a2": "m/s^2", "S1": "N",
          "S2": "N"}
-if as_json:
-    head = ('"schema": "dyncalc/2", "command": "rigid-body", "scene": "drum-two-blocks", '
-            '"model": "linear", "method": "closed-form"')
-    inputs = (json_input(df, "m1 [kg]", "m1", "kg", True) + json_input(df, "m2 [kg]", "m2", "kg")
-              + json_input(df, "r1 [m]", "r1", "m") + json_input(df, "r2 [m]", "r2", "m")
-              + [', "g": {"value": 9.80665, "unit": "m/s^2", "text": "9.80665 m/s^2"}']
-              + json_input(df, "alpha [rad/s^2]", "alpha", "rad/s^2"))
-    json_lines(len(df), head, inputs,
-               [p for k, (n, v) in enumerate(out.items()) for p in json_result(n, v, units[n],
-                                                                              k == 0)],
-               '{"inverse": {"unknown": "J_A", "method": "bracketed-root", "detail": "a sign '
-               'change on a grid of J_A, refined by Brent\'s method"}}')
-else:
-    header = {n: f"{n} [{u}]" for n, u in units.items()}
-    header["J_A"], header["alpha"] = "J_A_result [kg*m^2]", "alpha_result [rad/s^2]"
-    csv_line(df, out, header)
+inputs = (json_input(df, "m1 [kg]", "m1", "kg", True) + json_input(df, "m2 [kg]", "m2", "kg")
+          + json_input(df, "r1 [m]", "r1", "m") + json_input(df, "r2 [m]", "r2", "m")
+          + [', "g": {"value": 9.80665, "unit": "m/s^2", "text": "9.80665 m/s^2"}']
+          + json_input(df, "alpha [rad/s^2]", "alpha", "rad/s^2"))
+inverse_lines(df, as_json, "drum-two-blocks", inputs, out, units, "J_A", "alpha")
