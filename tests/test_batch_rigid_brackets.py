@@ -139,3 +139,65 @@ def test_rows_the_columns_cannot_prove_take_the_one_off(monkeypatch):
                                 "-", "--on-error", "skip"], text)
     assert sum(solved) == 1 and fast.exit_code == 2
     assert fast.stderr.startswith("Error: line 2: ")
+
+
+def test_seed_is_the_root_of_a_linear_fractional_result():
+    """The cross-ratio seed inverts y = (p x + q)/(r x + s) (and a line, r = 0) through any
+    three of its points: the root x = (s goal - q)/(p - r goal), to rounding."""
+    from dyncalc.scenes.inverse_monotone import _seed
+
+    rng = np.random.default_rng(SEED)
+    for _ in range(500):
+        p, q, r, s = rng.uniform(-5, 5, 4) * 10.0 ** rng.uniform(-3, 3, 4)
+        r = 0.0 if rng.uniform() < 0.2 else r
+        xs = tuple(sorted(rng.uniform(-10, 10, 3)))
+        root = rng.uniform(-10, 10)
+        goal = (p * root + q) / (r * root + s)
+        ys = [(p * x + q) / (r * x + s) for x in xs]
+        spread = max(abs(v) for v in ys) + abs(goal)
+        if min(abs(a - b) for a, b in ((ys[0], ys[1]), (ys[1], ys[2]), (goal, ys[2]))) \
+                < 1e-3 * spread:
+            continue   # points too close together to fix the map
+        assert _seed(xs, ys, goal) == pytest.approx(root, rel=1e-6, abs=1e-6)
+
+
+@pytest.mark.parametrize("case", [0, 2, 5])
+def test_the_seeded_step_is_proven_without_bisection(monkeypatch, case):
+    """On random rows of drum-two-blocks (J_A), beam-spun-up and two-drums-rope-drive (M0,
+    signed), the step the seed picks is the proven one on every row solved, coarse and fine:
+    the bisection (which a wrong seed would need) proves no row."""
+    from dyncalc.scenes import inverse_monotone
+
+    scene, header, unknown, target, _ = CASES[case]
+    proofs = []
+    original = inverse_monotone._proven
+    locate = inverse_monotone._locate
+
+    def proving(*args):
+        out = original(*args)
+        proofs[-1].append(int(out[2].sum()))
+        return out
+
+    def locating(*args):
+        proofs.append([])
+        return locate(*args)
+
+    monkeypatch.setattr(inverse_monotone, "_proven", proving)
+    monkeypatch.setattr(inverse_monotone, "_locate", locating)
+    solved = _bracketed_rows(monkeypatch)
+    rng = np.random.default_rng(SEED)
+    names = [h.split(" ")[0] for h in header.split(",")]
+    rows = []
+    for _ in range(40):
+        values = 10.0 ** rng.uniform(-1, 1, len(names))
+        if "M0" in names:
+            values[names.index("M0")] *= rng.choice([-1.0, 1.0])
+        values[-1] = target(values.tolist())
+        rows.append(",".join("?" if n == unknown else repr(float(v))
+                             for n, v in zip(names, values)))
+    out = batch_run(["rigid-body", "--scene", scene, "--batch", "-"],
+                    "\n".join([header, *rows]) + "\n")
+    assert out.exit_code in (0, 2)
+    assert sum(solved) >= 15
+    assert len(proofs) == 2 * len(solved)   # a coarse and a fine step each call
+    assert all(sum(redo) == 0 for first, *redo in proofs), proofs

@@ -13,8 +13,11 @@ Here the result is monotone in the unknown by construction (:data:`MONOTONE`: an
 rational rounded once, or float operations each monotone, in a quantity the unknown enters
 linearly or as one term of a positive denominator), so two neighbouring samples with
 ``y - goal`` of opposite signs, both nonzero, fix every other sample's sign: the one-off's
-bracket is found by bisecting the grid and then its refinement (a guess from the kernel's
-values), and proven by the kernel's exact values at the bracket's two ends alone. No turning
+bracket is found on the grid and then on its refinement, and proven by the kernel's exact
+values at the bracket's two ends alone. The step tried first holds a seed, the root of the
+linear-fractional map through three of the kernel's values (:func:`_seed`: exact for every
+pair here up to rounding), so a row costs two evaluations a stage; a row the seed's step does
+not prove is bisected over the steps and proven the same way. No turning
 point exists, so no extremum is added; an edge where the scene stops answering (an overflow at
 the grid's ends) adds samples only inside its own interval, never inside the bracket. A row is
 taken only where the kernel is exact at the power-law probes of a positive unknown (which must
@@ -49,6 +52,9 @@ MONOTONE = {
 DETAIL = "a sign change on a grid of {}, refined by Brent's method"
 #: Points of the one-off's refinement of an interval (``FINE``).
 FINE = 50
+#: Where a signed unknown's result is sampled for :func:`_seed` (a positive or nonnegative
+#: unknown's seed reads the power-law probes).
+SIGNED_PROBES = (-1.0, 0.0, 1.0)
 #: The flatness test of the one-off (1e-12 relative) with a margin for the kernel's rounding
 #: at the grid's ends (values there need not be exact).
 FLAT = 2e-12
@@ -92,10 +98,11 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
     xs = np.array(_grid(unknown))
     every = np.arange(n)
     with np.errstate(all="ignore"):
-        exact = _no_power_law(y, unknown, every, n)
+        exact, probe_x, probe_y = _no_power_law(y, unknown, every, n)
+        seed = _seed(probe_x, probe_y, goal)
         rising, exact = _direction(y, xs, every, exact)
-        a, b, exact = _coarse(y, xs, every, goal, rising, exact)
-        a, b, exact = _fine(y, a, b, every, goal, rising, exact)
+        a, b, exact = _coarse(y, xs, every, goal, rising, exact, seed)
+        a, b, exact = _fine(y, a, b, every, goal, rising, exact, seed)
         rows = np.flatnonzero(exact)
         missed = np.zeros(n, dtype=bool)
 
@@ -119,11 +126,14 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
 
 
 def _no_power_law(y, unknown, every, n):
-    """Rows where the one-off's power-law probe (a positive or nonnegative unknown) surely
-    finds none: the kernel exact at the probes, and a probe not positive or the log-slopes
-    (libm's log, as the one-off) apart by more than the tolerance or flat."""
+    """``(exact, xs, ys)``: the rows where the one-off's power-law probe (a positive or
+    nonnegative unknown) surely finds none: the kernel exact at the probes, and a probe not
+    positive or the log-slopes (libm's log, as the one-off) apart by more than the tolerance or
+    flat; and the three points ``(x, y)`` probed (:data:`SIGNED_PROBES` for a signed unknown,
+    which the one-off does not probe), which :func:`_seed` reads."""
     if unknown.constraint not in ("positive", "nonnegative"):
-        return np.ones(n, dtype=bool)
+        return np.ones(n, dtype=bool), SIGNED_PROBES, \
+            [y(np.full(n, p), every)[0] for p in SIGNED_PROBES]
     probes = [y(np.full(n, p), every) for p in PROBES]
     exact = probes[0][1] & probes[1][1] & probes[2][1]
     ys = [p[0] for p in probes]
@@ -132,7 +142,26 @@ def _no_power_law(y, unknown, every, n):
     slopes = [(logs[i + 1] - logs[i]) / math.log(PROBES[i + 1] / PROBES[i]) for i in (0, 1)]
     power = positive & ~(np.abs(slopes[0] - slopes[1]) > SLOPE_TOL) \
         & ~(np.abs(slopes[0]) < SLOPE_TOL)
-    return exact & ~power
+    return exact & ~power, PROBES, ys
+
+
+def _seed(xs, ys, goal):
+    """Where the result reaches ``goal``, read off the linear-fractional map
+    ``y = (p x + q)/(r x + s)`` through the three points ``(xs[i], ys[i])`` by the
+    invariance of the cross-ratio: ``S = R (x2 - x1)/(x2 - x3)`` with
+    ``R = (goal - y1)(y2 - y3) / ((goal - y3)(y2 - y1))``, and ``x = (x1 - S x3)/(1 - S)``.
+    Every result in :data:`MONOTONE` is linear or linear-fractional in its unknown, so the
+    seed is the root up to rounding; it only chooses the step tried first (NaN where the
+    points do not fix one), never the answer.
+
+    >>> round(float(_seed((1e-3, 1.0, 1e3), [6 / (x + 2) for x in (1e-3, 1.0, 1e3)], 1.5)), 12)
+    2.0
+    """
+    x1, x2, x3 = xs
+    y1, y2, y3 = ys
+    R = (goal - y1) * (y2 - y3) / ((goal - y3) * (y2 - y1))
+    S = R * (x2 - x1) / (x2 - x3)
+    return (x1 - S * x3) / (1.0 - S)
 
 
 def _direction(y, xs, every, exact):
@@ -157,46 +186,65 @@ def _direction(y, xs, every, exact):
     return last > first, exact
 
 
-def _coarse(y, xs, every, goal, rising, exact):
-    """The coarse interval ``[a, b]`` of the sign change: bisected on the kernel's values,
-    then proven by its exact values at both ends (nonzero and of opposite signs)."""
+def _coarse(y, xs, every, goal, rising, exact, seed):
+    """The coarse interval ``[a, b]`` of the sign change: the grid step holding the seed, or
+    else bisected on the kernel's values, proven by its exact values at both ends."""
+    def point(j, at):
+        return xs[j]
+
+    start = np.searchsorted(xs, np.where(np.isfinite(seed), seed, 0.0), side="right") - 1
+    return _locate(y, point, len(xs) - 1, start, every, goal, rising, exact)
+
+
+def _fine(y, a, b, every, goal, rising, exact, seed):
+    """The one-off's refinement of ``[a, b]`` (49 points; geometric where ``a b > 0``, with
+    C's ``pow`` as the one-off's ``**``): its step holding the seed, or else bisected, proven
+    as the coarse interval."""
+    geometric = a * b > 0
+    safe_a = np.where(exact, a, 1.0)
+    ratio = np.where(geometric & exact, b / safe_a, 1.0)
+
+    def point(j, at):
+        e = j / FINE
+        a_, b_, geometric_ = a[at], b[at], geometric[at]
+        power = elementwise(lambda r, k: r ** k, ratio[at], e)
+        return np.where(j == 0, a_, np.where(j == FINE, b_, np.where(
+            geometric_, a_ * power, a_ + (b_ - a_) * j / FINE)))
+
+    # the seed's place in the step, read with numpy's log (a guess only: the ends prove it)
+    where = np.where(geometric, np.log(np.abs(seed / safe_a)) / np.log(np.abs(ratio)),
+                     (seed - a) / np.where(b > a, b - a, 1.0))
+    start = np.floor(np.where(np.isfinite(where), where, 0.0) * FINE)
+    return _locate(y, point, FINE, start, every, goal, rising, exact)
+
+
+def _locate(y, point, last, start, every, goal, rising, exact):
+    """The step ``[point(j), point(j + 1)]`` (``0 <= j < last``) where ``y - goal`` changes
+    sign, proven by the kernel's exact values at its two ends (nonzero, of opposite signs):
+    first the step ``start`` (the seed's), then, for the rows it does not prove, bisection
+    over the steps. ``point(j, at)`` is the ``j``-th point of the rows ``at`` (positions in
+    ``every``). The function being monotone, the proven step is the one-off's either way."""
     n = len(every)
     sense = np.where(rising, 1.0, -1.0)
-    lo, hi = np.zeros(n, dtype=int), np.full(n, len(xs) - 1)
-    while np.any(hi - lo > 1):
-        mid = (lo + hi) // 2
-        value, _, _ = y(xs[mid], every)
-        above = (value - goal) * sense > 0
-        hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
-    return _proven(y, xs[lo], xs[hi], every, goal, sense, exact)
+    j = np.clip(start, 0, last - 1).astype(int)
+    here = np.arange(n)
+    a, b, proven = _proven(y, point(j, here), point(j + 1, here), every, goal, sense, exact)
+    redo = np.flatnonzero(exact & ~proven)
+    if len(redo):
+        lo, hi = np.zeros(len(redo), dtype=int), np.full(len(redo), last)
+        while np.any(hi - lo > 1):
+            mid = (lo + hi) // 2
+            value, _, _ = y(point(mid, redo), every[redo])
+            above = (value - goal[redo]) * sense[redo] > 0
+            hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
+        a[redo], b[redo], proven[redo] = _proven(
+            y, point(lo, redo), point(hi, redo), every[redo], goal[redo], sense[redo],
+            exact[redo])
+    return a, b, proven
 
 
 def _proven(y, a, b, every, goal, sense, exact):
     va, fa, _ = y(a, every)
     vb, fb, _ = y(b, every)
     exact = exact & fa & fb & ((va - goal) * sense < 0) & ((vb - goal) * sense > 0)
-    return a, b, exact
-
-
-def _fine(y, a, b, every, goal, rising, exact):
-    """The one-off's refinement of ``[a, b]`` (49 points; geometric where ``a b > 0``, with
-    C's ``pow`` as the one-off's ``**``), bisected and proven as the coarse interval."""
-    n = len(every)
-    sense = np.where(rising, 1.0, -1.0)
-    geometric = a * b > 0
-    safe_a = np.where(exact, a, 1.0)
-    ratio = np.where(geometric & exact, b / safe_a, 1.0)
-
-    def point(j):
-        e = j / FINE
-        power = elementwise(lambda r, k: r ** k, ratio, e)
-        return np.where(j == 0, a, np.where(j == FINE, b, np.where(
-            geometric, a * power, a + (b - a) * j / FINE)))
-
-    lo, hi = np.zeros(n, dtype=int), np.full(n, FINE)
-    while np.any(hi - lo > 1):
-        mid = (lo + hi) // 2
-        value, _, _ = y(point(mid), every)
-        above = (value - goal) * sense > 0
-        hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
-    return _proven(y, point(lo), point(hi), every, goal, sense, exact)
+    return np.array(a, dtype=float), np.array(b, dtype=float), exact
