@@ -56,3 +56,36 @@ def test_quoted_cells_are_the_csv_modules():
     assert _simple_quotes('"a,b"2') is None and _simple_quotes('"a\nb"') is None
     assert _quoted_columns('"1,2","3,4"\n"5,6","7,8"', 2) == [["1,2", "5,6"], ["3,4", "7,8"]]
     assert _quoted_columns('"1,2",3', 1) is None
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_single_cell_is_the_split_columns_cell(seed):
+    """``Table.cell(i, j)`` (a block's probe reads one row without splitting the chunk) is
+    ``table[j][i]``, for chunks without quotes and in simple quotes, all rows or some kept, and
+    a ``later`` column gives the same cell, stripped where asked, before and after the split."""
+    from dyncalc.batch.cells import _without_quotes
+    from dyncalc.batch.source import _Chunk
+
+    rng = random.Random(seed)
+    cells = ["1", " 2.5 ", "-0", "x", "", '"1,2"', '" a, b "', "3e4"]
+    for _ in range(50):
+        width = rng.randint(1, 4)
+        lines = [",".join(rng.choice(cells) for _ in range(width)) for _ in range(6)]
+        if "" in lines:   # (the reader takes an empty line by itself: no cell)
+            continue
+        plain = _without_quotes(lines, "\n".join(lines)) if '"' in "".join(lines) else None
+        if plain is None and '"' in "".join(lines):
+            continue
+        chunk = _Chunk(list(range(6)), lines=lines, plain=plain)
+        keep = None if rng.random() < 0.5 else sorted(rng.sample(range(6), 3))
+        expected = [list(c) for c in zip(*[next(csv.reader([lines[i]]))
+                                           for i in (range(6) if keep is None else keep)])]
+        table = chunk.table(width, keep)
+        stripped = [table.later(j, lambda c: [x.strip() for x in c], str.strip)
+                    for j in range(width)]
+        for i in range(len(expected[0])):
+            for j in range(width):
+                assert table.cell(i, j) == expected[j][i]
+                assert stripped[j][i] == expected[j][i].strip()
+        assert [list(table[j]) for j in range(width)] == expected
+        assert [stripped[j][0] for j in range(width)] == [c[0].strip() for c in expected]

@@ -23,13 +23,14 @@ class Table:
     commas when first asked for; and, where every cell is a plain number, the values of all
     of them read at once, without a text per cell (:meth:`numbers`)."""
 
-    __slots__ = ("_split", "_columns", "_text", "_numbers", "n", "width")
+    __slots__ = ("_split", "_columns", "_text", "_numbers", "_cell", "n", "width")
 
-    def __init__(self, split, n: int, width: int, text: str | None):
+    def __init__(self, split, n: int, width: int, text: str | None, cell=None):
         """``split()`` gives the columns; ``text``: the rows' lines joined by line breaks
-        where their cells are split at every comma (else None)."""
+        where their cells are split at every comma (else None); ``cell(i, j)``, where given,
+        the cell of row ``i``, column ``j`` as ``split()[j][i]`` without splitting the rest."""
         self._split, self._columns, self._text, self._numbers = split, None, text, False
-        self.n, self.width = n, width
+        self._cell, self.n, self.width = cell, n, width
 
     def __len__(self) -> int:
         return self.width
@@ -57,19 +58,32 @@ class Table:
         return self._numbers
 
 
-    def later(self, j: int, make=None) -> "_Later":
-        """Column ``j`` (or ``make(column j)``), split only when a cell of it is asked for."""
-        return _Later(lambda: self[j] if make is None else make(self[j]), self.n)
+    def cell(self, i: int, j: int) -> str:
+        """The cell of row ``i`` in column ``j``: ``self[j][i]``, splitting only its row
+        until the columns are split."""
+        if self._columns is None and self._cell is not None:
+            return self._cell(i, j)
+        return self[j][i]
+
+    def later(self, j: int, make=None, one=None) -> "_Later":
+        """Column ``j`` (or ``make(column j)``), split only when the column is asked for; a
+        single cell ``i`` is ``self.cell(i, j)`` (or ``one`` of it, where ``one`` is to a cell
+        what ``make`` is to the column) without splitting the chunk (a block's probe)."""
+        if make is None:
+            return _Later(lambda: self[j], self.n, lambda i: self.cell(i, j))
+        return _Later(lambda: make(self[j]), self.n,
+                      None if one is None else lambda i: one(self.cell(i, j)))
 
 
 class _Later:
     """A column made only when a cell of it is asked for (a column of plain numbers whose
     values :meth:`Table.numbers` gave: its texts are rarely needed)."""
 
-    __slots__ = ("make", "n", "cells")
+    __slots__ = ("make", "n", "cells", "one")
 
-    def __init__(self, make, n: int):
-        self.make, self.n, self.cells = make, n, None
+    def __init__(self, make, n: int, one=None):
+        """``make()``: the column; ``one(i)``: its cell ``i`` alone (or None)."""
+        self.make, self.n, self.cells, self.one = make, n, None, one
 
     def _made(self) -> list[str]:
         if self.cells is None:
@@ -80,6 +94,8 @@ class _Later:
         return self.n
 
     def __getitem__(self, i):
+        if self.cells is None and self.one is not None and type(i) is int:
+            return self.one(i)
         return self._made()[i]
 
     def __iter__(self):

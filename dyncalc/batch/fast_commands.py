@@ -92,7 +92,7 @@ def _command_fast(spec, columns: list[Column], table, want_json: bool,
     plain: dict[str, np.ndarray] = {}
     if numbers is not None:
         cells = {col.key: _stripped(table[col.index]) if want_json
-                 else table.later(col.index, _stripped) for col in columns}
+                 else table.later(col.index, _stripped, str.strip) for col in columns}
         plain = {col.key: np.ascontiguousarray(numbers[:, col.index]) for col in columns}
         present = [np.ones(n, dtype=bool) for _col in columns]
     else:

@@ -192,10 +192,14 @@ class _Chunk:
                 columns = [_unquoted(column) for column in columns]
             return columns
 
+        def cell(i: int, j: int) -> str:
+            text = lines[i].split(",")[j]
+            return text if self.plain is self.lines else text.replace("\0", ",")
+
         text = None
         if self.plain is self.lines:
             text = self.text if keep is None and self.text is not None else "\n".join(lines)
-        return Table(split, len(lines), width, text)
+        return Table(split, len(lines), width, text, cell)
 
     def echo(self, keep: list[int] | None) -> list[str]:
         """The rows (all, or ``keep``) as CSV lines, as ``csv.writer`` writes them."""
