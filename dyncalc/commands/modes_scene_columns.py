@@ -164,9 +164,13 @@ def scene_columns(given: dict, settings: dict):
         results["phi2_0"] = phi
     n = len(coordinates)
     shapes = np.stack([results[f"mode_{i + 1}"] for i in range(n)], -1)  # (rows, n, modes)
-    size = np.sort(np.abs(shapes), axis=1)
+    size = np.abs(shapes)
+    # the largest and second largest component of each mode (of two, the larger and smaller:
+    # numpy's sort along an axis of two costs as much as the rest of the modes' columns)
+    top = size.max(axis=1)
+    second = size.min(axis=1) if n == 2 else np.sort(size, axis=1)[:, -2, :]
     # a mode whose two largest components are nearly equal: the one-off's pick is its own
-    exact &= (size[:, -1, :] - size[:, -2, :] > TIE * size[:, -1, :]).all(axis=1)
+    exact &= (top - second > TIE * top).all(axis=1)
     reference = np.argmax(np.abs(shapes), axis=1)  # each mode's largest component
     rotation = (np.asarray(kinds) == "angle")[reference]  # modal mass in kg*m^2
     groups = (rotation * (2 ** np.arange(n))).sum(axis=1) if len(set(kinds)) > 1 else None
