@@ -89,3 +89,20 @@ def test_a_single_cell_is_the_split_columns_cell(seed):
                 assert stripped[j][i] == expected[j][i].strip()
         assert [list(table[j]) for j in range(width)] == expected
         assert [stripped[j][0] for j in range(width)] == [c[0].strip() for c in expected]
+
+
+def test_a_loop_over_a_later_column_splits_the_chunk_once():
+    """A ``later`` column answers its first cells one row at a time (a probe) and then makes
+    the column, so a loop over every row splits the chunk once, not a line a row."""
+    from dyncalc.batch.cells import SINGLES
+    from dyncalc.batch.source import _Chunk
+
+    lines = [f"{i},{2 * i}" for i in range(100)]
+    table = _Chunk(list(range(100)), lines=lines).table(2, None)
+    splits = []
+    original = table._split
+    table._split = lambda: splits.append(1) or original()
+    column = table.later(1)
+    assert column[3] == "6" and not splits
+    assert [column[i] for i in range(100)] == [str(2 * i) for i in range(100)]
+    assert len(splits) == 1 and column.singles == SINGLES

@@ -75,15 +75,21 @@ class Table:
                       None if one is None else lambda i: one(self.cell(i, j)))
 
 
+#: Cells of a :class:`_Later` column read one by one before the column is made.
+SINGLES = 8
+
+
 class _Later:
     """A column made only when a cell of it is asked for (a column of plain numbers whose
     values :meth:`Table.numbers` gave: its texts are rarely needed)."""
 
-    __slots__ = ("make", "n", "cells", "one")
+    __slots__ = ("make", "n", "cells", "one", "singles")
 
     def __init__(self, make, n: int, one=None):
-        """``make()``: the column; ``one(i)``: its cell ``i`` alone (or None)."""
-        self.make, self.n, self.cells, self.one = make, n, None, one
+        """``make()``: the column; ``one(i)``: its cell ``i`` alone (or None), used for the
+        first :data:`SINGLES` cells asked for one at a time (a block's probe), after which
+        the column is made (a loop over the rows splits the chunk once, not a line a row)."""
+        self.make, self.n, self.cells, self.one, self.singles = make, n, None, one, 0
 
     def _made(self) -> list[str]:
         if self.cells is None:
@@ -94,7 +100,9 @@ class _Later:
         return self.n
 
     def __getitem__(self, i):
-        if self.cells is None and self.one is not None and type(i) is int:
+        if self.cells is None and self.one is not None and type(i) is int \
+                and self.singles < SINGLES:
+            self.singles += 1
             return self.one(i)
         return self._made()[i]
 
