@@ -62,6 +62,21 @@ CASES = [
 ]
 
 
+def _random_values(rng, names: list[str], target, decades: float, noise: float):
+    """A row's values: each 10^U(-decades, decades) (a signed M0, a section x inside the
+    beam, g at its standard value), the last (the goal) from the others by ``target`` times
+    1 + U(-noise, noise)."""
+    values = 10.0 ** rng.uniform(-decades, decades, len(names))
+    if "x" in names:   # a section on the beam
+        values[names.index("x")] = values[names.index("l")] * rng.uniform(0, 0.99)
+    if "M0" in names:
+        values[names.index("M0")] *= rng.choice([-1.0, 1.0])
+    if "g" in names:
+        values[names.index("g")] = G
+    values[-1] = target(values.tolist()) * (1 + rng.uniform(-noise, noise))
+    return values
+
+
 @pytest.mark.parametrize("as_json", [False, True])
 @pytest.mark.parametrize("scene, header, unknown, target, share", CASES)
 def test_bracketed_rows_on_columns_are_the_one_off(monkeypatch, scene, header, unknown, target,
@@ -70,14 +85,7 @@ def test_bracketed_rows_on_columns_are_the_one_off(monkeypatch, scene, header, u
     names = [h.split(" ")[0] for h in header.split(",")]
     rows = []
     for i in range(60):
-        values = 10.0 ** rng.uniform(-2, 2, len(names))
-        if "x" in names:   # a section on the beam
-            values[names.index("x")] = values[names.index("l")] * rng.uniform(0, 0.99)
-        if "M0" in names:
-            values[names.index("M0")] *= rng.choice([-1.0, 1.0])
-        if "g" in names:
-            values[names.index("g")] = G
-        values[-1] = target(values.tolist()) * (1 + rng.uniform(-1e-3, 1e-3))
+        values = _random_values(rng, names, target, 2, 1e-3)
         cells = [f"{float(x)!r}" for x in values]
         cells[names.index(unknown)] = "?" if i % 3 else ""   # asked, or left out
         rows.append(",".join(cells))
@@ -189,10 +197,7 @@ def test_the_seeded_step_is_proven_without_bisection(monkeypatch, case):
     names = [h.split(" ")[0] for h in header.split(",")]
     rows = []
     for _ in range(40):
-        values = 10.0 ** rng.uniform(-1, 1, len(names))
-        if "M0" in names:
-            values[names.index("M0")] *= rng.choice([-1.0, 1.0])
-        values[-1] = target(values.tolist())
+        values = _random_values(rng, names, target, 1, 0.0)
         rows.append(",".join("?" if n == unknown else repr(float(v))
                              for n, v in zip(names, values)))
     out = batch_run(["rigid-body", "--scene", scene, "--batch", "-"],

@@ -80,8 +80,9 @@ SINGLES = 8
 
 
 class _Later:
-    """A column made only when a cell of it is asked for (a column of plain numbers whose
-    values :meth:`Table.numbers` gave: its texts are rarely needed)."""
+    """A column made only when it is needed (a column of plain numbers whose values
+    :meth:`Table.numbers` gave: its texts are rarely needed): iterated, sliced, or more than
+    :data:`SINGLES` of its cells asked for; a few cells are read alone."""
 
     __slots__ = ("make", "n", "cells", "one", "singles")
 
