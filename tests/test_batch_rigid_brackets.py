@@ -206,3 +206,56 @@ def test_the_seeded_step_is_proven_without_bisection(monkeypatch, case):
     assert sum(solved) >= 15
     assert len(proofs) == 2 * len(solved)   # a coarse and a fine step each call
     assert all(sum(redo) == 0 for first, *redo in proofs), proofs
+
+
+def test_the_drum_kernel_narrowed_to_one_result_is_that_result():
+    """``only=NAME``: the one result, bit for bit the full kernel's, exact on the rows where
+    the full kernel's is certain (a superset of its exact rows, which need every result)."""
+    from dyncalc.physics.kinetics import drum_two_blocks
+    from dyncalc.physics.kinetics_columns import KERNELS
+
+    kernel = KERNELS[drum_two_blocks]
+    rng = np.random.default_rng(SEED)
+    m1, m2, r1, r2, J_A = 10.0 ** rng.uniform(-3, 3, (5, 2000))
+    m2[:50] = m1[:50] * r1[:50] / r2[:50]   # alpha near zero: rows the kernel cannot prove
+    # r2 alpha = g (J_A = -m1 r1 (r1 + r2), a kernel test): S2 = m2 (g - r2 alpha) cancels
+    J_A[50:100] = -m1[50:100] * r1[50:100] * (r1[50:100] + r2[50:100])
+    full = kernel(m1, m2, r1, r2, J_A, np.full(2000, G))
+    for name in ("alpha", "a1", "a2", "S1", "S2"):
+        one = kernel(m1, m2, r1, r2, J_A, np.full(2000, G), only=name)
+        assert list(one.values) == [name]
+        assert np.array_equal(one.values[name], full.values[name], equal_nan=True)
+        assert not (full.exact & ~one.exact).any()
+    alpha = kernel(m1, m2, r1, r2, J_A, np.full(2000, G), only="alpha")
+    assert (alpha.exact & ~full.exact)[50:100].any()   # S2 uncertain, alpha certain
+    assert not alpha.exact[:50].all()
+
+
+def test_the_search_asks_the_drum_kernel_for_the_target_alone(monkeypatch):
+    """Every evaluation of the power-law probes and the bracketed search but the last (the
+    answer) reads ``alpha`` alone; the rows written are the one-off's (the byte-for-byte
+    test above)."""
+    from dyncalc.physics.kinetics import drum_two_blocks
+    from dyncalc.physics.kinetics_columns import KERNELS
+
+    kernel = KERNELS[drum_two_blocks]
+    asked = []
+
+    def spy(*args, **kwargs):
+        asked.append(kwargs.get("only"))
+        return kernel(*args, **kwargs)
+
+    spy.takes_only = True
+    monkeypatch.setitem(KERNELS, drum_two_blocks, spy)
+    rng = np.random.default_rng(SEED)
+    scene, header, unknown, target, _ = CASES[0]
+    names = [h.split(" ")[0] for h in header.split(",")]
+    rows = [",".join("?" if n == unknown else repr(float(v)) for n, v in
+                     zip(names, _random_values(rng, names, target, 1, 0.0))) for _ in range(30)]
+    solved = _bracketed_rows(monkeypatch)
+    out = batch_run(["rigid-body", "--scene", scene, "--batch", "-"],
+                    "\n".join([header, *rows]) + "\n")
+    assert out.exit_code == 0 and sum(solved) >= 15
+    # the power-law probes and their root (none a power law), the bracketed search, then
+    # the answer: every result
+    assert len(asked) > 5 and set(asked[:-1]) == {"alpha"} and asked[-1] is None

@@ -137,6 +137,9 @@ class Output:
             if name in units:
                 raise InputError(f"--unit {name}= given twice: give it once")
             units[name] = unit.strip()
+        from ..batch.memory import hold_freed_memory
+
+        hold_freed_memory()  # this process is dyncalc's: its allocator keeps freed chunks
         return run_batch(spec, self.batch, as_json=self.as_json, units=units,
                          on_error=self.on_error, debug=self.debug)
 

@@ -161,20 +161,26 @@ def rounded(values: dict, ok, zeros=()) -> Columns:
     return Columns(out, exact=exact)
 
 
-def _drum(m1, m2, r1, r2, J_A, g):
+def _drum(m1, m2, r1, r2, J_A, g, only=None):
     m1_, m2_, r1_, r2_, J, g_ = (Exact(v) for v in (m1, m2, r1, r2, J_A, g))
     D = J + m1_ * r1_ * r1_ + m2_ * r2_ * r2_
     top = m2_ * r2_ - m1_ * r1_
     alpha = top * g_ / D
-    return {"alpha": alpha, "a1": r1_ * alpha, "a2": r2_ * alpha,
-            "S1": m1_ * (g_ + r1_ * alpha), "S2": m2_ * (g_ - r2_ * alpha)}
+    made = {"alpha": lambda: alpha, "a1": lambda: r1_ * alpha, "a2": lambda: r2_ * alpha,
+            "S1": lambda: m1_ * (g_ + r1_ * alpha), "S2": lambda: m2_ * (g_ - r2_ * alpha)}
+    return {name: make() for name, make in made.items() if only in (None, name)}
 
 
 @rigid_kernel(drum_two_blocks)
-def _drum_two_blocks_columns(m1, m2, r1, r2, J_A, g) -> Columns:
-    """:func:`drum_two_blocks` on columns (SI arrays)."""
-    values = _drum(m1, m2, r1, r2, J_A, g)
+def _drum_two_blocks_columns(m1, m2, r1, r2, J_A, g, *, only=None) -> Columns:
+    """:func:`drum_two_blocks` on columns (SI arrays); ``only``: one result's name, that
+    result alone, exact where it is (the inverse's search reads one result: a third of the
+    work)."""
+    values = _drum(m1, m2, r1, r2, J_A, g, only)
     return rounded(values, in_range(m1, m2, r1, r2, J_A, g), zeros=("alpha", "a1", "a2"))
+
+
+_drum_two_blocks_columns.takes_only = True
 
 
 @rigid_kernel(wheel_incline_block)

@@ -86,12 +86,16 @@ def closed_form_columns(scene, kernel, unknown, target: str, arguments: dict, go
     goal = np.asarray(goal, dtype=float)
     n = len(goal)
 
-    def y(x):
+    narrow = {"only": target} if getattr(kernel, "takes_only", False) else {}
+
+    def y(x, every_result: bool = False):
+        """The target at ``x`` (a kernel with ``takes_only`` computes it alone: the probes
+        read nothing else), every result with ``every_result`` (the root)."""
         args = {**arguments, unknown.name: np.broadcast_to(np.asarray(x, dtype=float), (n,))}
         ok = np.ones(n, dtype=bool)
         for constraint in scene.constraints:
             ok &= np.asarray(constraint.holds(args), dtype=bool)
-        out = kernel(**args, **settings)
+        out = kernel(**args, **settings, **({} if every_result else narrow))
         if out is None or target not in out.values:
             return None
         return np.where(ok & out.exact, out.values[target], np.nan), ok & out.exact, out
@@ -113,7 +117,8 @@ def closed_form_columns(scene, kernel, unknown, target: str, arguments: dict, go
                                                                                   1.0)
         x = PROBES[1] * elementwise(_exp, ratio)
         exact &= np.isfinite(x) & (x > 0)
-        at_root = y(np.where(exact, x, 1.0))
+        # every result where a row is taken (none: drum-two-blocks' J_A, never a power law)
+        at_root = y(np.where(exact, x, 1.0), every_result=bool(exact.any()))
         if at_root is None:
             return None
         value, fine, out = at_root

@@ -20,10 +20,11 @@ pair here up to rounding), so a row costs two evaluations a stage; a row the see
 not prove is bisected over the steps and proven the same way. No turning
 point exists, so no extremum is added; an edge where the scene stops answering (an overflow at
 the grid's ends) adds samples only inside its own interval, never inside the bracket. A row is
-taken only where the kernel is exact at the power-law probes of a positive unknown (which must
-show no power law, else the one-off inverts in closed form), at the bracket's ends, at every
-Brent iterate and at the root, and where the result is not flat over the grid to 1e-12 (the
-one-off refuses that) with a margin; every other row is left to the one-off's search.
+taken only where the kernel's target is exact at the power-law probes of a positive unknown
+(which must show no power law, else the one-off inverts in closed form), at the bracket's ends
+and at every Brent iterate, every result is exact at the root, and the result is not flat over
+the grid to 1e-12 (the one-off refuses that) with a margin; every other row is left to the
+one-off's search. The search asks a kernel that can (``takes_only``) for the target alone.
 """
 from __future__ import annotations
 
@@ -81,15 +82,18 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
     goal = np.asarray(goal, dtype=float)
     n = len(goal)
 
-    def y(x, rows):
+    narrow = {"only": target} if getattr(kernel, "takes_only", False) else {}
+
+    def y(x, rows, every_result: bool = False):
         """``(y at x, exact, the kernel's Columns)`` of the rows ``rows``; NaN where the
-        kernel has no value."""
+        kernel has no value. The search reads the target alone (exact where it is: a kernel
+        with ``takes_only`` skips the other results); the answer, ``every_result``, all."""
         args = {k: (v[rows] if isinstance(v, np.ndarray) else v) for k, v in arguments.items()}
         args[unknown.name] = np.asarray(x, dtype=float)
         ok = np.ones(len(rows), dtype=bool)
         for constraint in scene.constraints:
             ok &= np.asarray(constraint.holds(args), dtype=bool)
-        out = kernel(**args)
+        out = kernel(**args, **({} if every_result else narrow))
         if out is None or target not in out.values:
             return np.full(len(rows), np.nan), np.zeros(len(rows), dtype=bool), None
         value = np.where(ok, out.values[target], np.nan)
@@ -118,7 +122,7 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
             exact[rows] &= found.converged & ~found.nan
             x[rows] = np.where(exact[rows], found.x, 1.0)
         exact &= ~missed
-        value, fine, out = y(x, every)
+        value, fine, out = y(x, every, every_result=True)
         if out is None:
             return None
         exact &= fine
