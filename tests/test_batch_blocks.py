@@ -153,6 +153,26 @@ def test_equal_float_columns_written_once_are_each_their_own_reprs(values, flip)
                 for x, y, z in zip(a.tolist(), b.tolist(), a[::-1].tolist())]
     assert assemble.lines(parts, len(values)) == expected
 
+
+@settings(max_examples=200, deadline=None)
+@given(st.sampled_from([0.0, -0.0, 1.0, float("nan"), 1e-05, 1e16, float("-inf"), 5e-324]),
+       st.integers(2, 9), st.integers(0, 8))
+def test_a_constant_float_column_is_one_text_and_each_line_its_repr(value, n, flip):
+    """A column of one bit pattern is written as one shared text (``assemble._constant``); a
+    column equal to it but in one row (``-0.0`` for ``0.0``, another value) stays a column;
+    every line is the ``repr``s either way."""
+    same = np.full(n, value)
+    other = same.copy()
+    i = flip % n
+    other[i] = -other[i] if other[i] == 0.0 else 2.0
+    assert assemble._constant(same) == repr(value)
+    assert assemble._constant(other) is other
+    parts = ["<", same, ",", other, ",", same[:1].repeat(n), ">"]
+    expected = [f"<{value!r},{y!r},{value!r}>" for y in other.tolist()]
+    assert assemble.lines(parts, n) == expected
+    assert assemble.lines(parts, n, joined=True) == "".join(e + "\n" for e in expected)
+    assert assemble.lines(["a", same, "b"], n) == [f"a{value!r}b"] * n
+
 # --- simple quoted cells read a block at a time --------------------------------------------------
 
 QUOTED = ['"0,0,1"', '"a b"', '""', '"', ",", "\n", "\r\n", "1", " ", '"x\ny"', "\0", "x"]

@@ -196,3 +196,26 @@ def test_a_whole_undamped_chunk_writes_its_warnings(tmp_path):
     err = _command_run(spec, path, True, False)[2]
     assert err.splitlines() == [f"warning: line {n}: undamped: X_res, the peak and the "
                                 "bandwidth are unbounded; not given" for n in range(2, 32)]
+
+
+def test_each_kind_of_block_is_probed_once_a_run_not_once_a_chunk(tmp_path):
+    """Undamped rows below and above Omega_iso (two blocks a chunk: isolation or not) over
+    seven chunks: two one-offs in all, and the lines are the row-by-row run's."""
+    import io
+
+    rows = [f"{100 + i},1,1,{3 + (i % 2) * 20}" for i in range(56)]   # omega ~ 10: eta .3, 2.2
+    path = tmp_path / "u.csv"
+    path.write_text("k,m,F0,Omega\n" + "\n".join(rows) + "\n")
+    spec = batch.ForcedRows()
+    spec.csv_rows = 8
+    calls = []
+    compute = spec.compute
+    spec.compute = lambda texts, labels: calls.append(texts) or compute(texts, labels)
+    out, err = io.StringIO(), io.StringIO()
+    assert batch.run_batch(spec, str(path), out=out, err=err) == 0
+    assert len(calls) == 2   # one probe per kind (with and without isolation), seven chunks
+    generic, generic_err = io.StringIO(), io.StringIO()
+    assert batch.run_batch(batch.ForcedRows(), str(path), out=generic, err=generic_err,
+                           fast=False) == 0
+    assert out.getvalue() == generic.getvalue() and err.getvalue() == generic_err.getvalue()
+    assert out.getvalue().count("\n") == 57

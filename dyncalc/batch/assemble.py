@@ -28,7 +28,7 @@ def lines(parts: list, n: int, joined: bool = False):
 
     Joined, the pieces of every line are joined in one ``str.join`` (no text per line is
     made): three times faster than joining each line, then the lines."""
-    merged = _merged(parts + ["\n"] if joined else parts)
+    merged = _merged([_constant(p) for p in parts] + (["\n"] if joined else []))
     columns: list = []
     written: list = []  # (float column, its texts): a column equal to one written is not again
     for part in merged:
@@ -79,6 +79,18 @@ def _float_texts(column: np.ndarray, written: list) -> list[str]:
     texts = reprs(column)
     written.append((bits, texts))
     return texts
+
+
+def _constant(part):
+    """A float column of one bit pattern as its one text (a shared text, joined with the texts
+    around it: fewer pieces a line; ``modes``' rigid-body mode writes 0.0 in three columns);
+    any other part as it is."""
+    if isinstance(part, np.ndarray) and part.dtype.kind == "f" and part.ndim == 1 \
+            and len(part) > 1:
+        bits = np.ascontiguousarray(part, dtype=np.float64).view(np.int64)
+        if bits[0] == bits[-1] and (bits == bits[0]).all():
+            return reprs(part[:1])[0]
+    return part
 
 
 def _merged(parts: list) -> list:

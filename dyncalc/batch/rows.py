@@ -318,6 +318,9 @@ def ForcedRows(*, scene: str | None = None, rtol: float | None = None,
     # up to 19 result columns, each through a double-double kernel: 16384 rows a chunk
     # peaked at 113 MB on 10^6 rows, 8192 at 87 MB (issue 17: <= 100 MB), no slower
     spec.csv_rows = 8192
+    # one probe (a one-off) per kind of block a run, not one per chunk: undamped rows split
+    # in two blocks a chunk (isolation or not), and their probes were a ninth of a run
+    spec.probed = {}
     return spec
 
 

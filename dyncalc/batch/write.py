@@ -146,7 +146,8 @@ class _Writer:
         if None in shown:
             shown = [t for t in shown if t is not None and not isinstance(t, _Failure)]
         if shown:
-            self.out.write("\n".join(shown) + "\n")
+            shown.append("")  # the last line's break, without copying the chunk's text again
+            self.out.write("\n".join(shown))
         if not self.as_json:  # the warnings of the vectorised rows written
             for block in blocks:
                 tails = [_tail(w) for w in block.warnings]
@@ -174,7 +175,8 @@ class _Writer:
                           for w in block.warnings)
             text = "\n".join(one_line(f"warning: line {lines[i]}: {w}") for i, w in rows)
         self.out.flush()
-        self.err.write(text + "\n")
+        self.err.write(text)  # then the break apart: the chunk's warnings are not copied again
+        self.err.write("\n")
         self.err.flush()
 
     def _fast_texts(self, block, chunk, texts) -> None:
