@@ -101,3 +101,9 @@ def test_a_library_run_batch_leaves_the_allocator(monkeypatch):
                        out=out, err=io.StringIO())
     assert status == 0 and out.getvalue().count("\n") == 2
     assert calls == []
+
+
+def test_a_python_without_ctypes_changes_nothing(monkeypatch):
+    monkeypatch.setattr(memory.os, "confstr", lambda name: "glibc 2.36")
+    monkeypatch.setitem(sys.modules, "ctypes", None)   # import ctypes raises ImportError
+    assert memory.hold_freed_memory() is False

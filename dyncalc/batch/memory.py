@@ -8,8 +8,8 @@ every step touched new pages: 450,000 minor page faults and 0.7 s of system time
 10^6-row ``eom --scene pendulum --json`` run of 2.6 s (``/usr/bin/time -f "%R %S"``). With
 both thresholds at 32 MiB (glibc's largest mmap threshold on 64-bit) the freed blocks are
 reused: 14,000 faults, 0.06 s of system time, 1.8 s in all, and the same peak resident size
-(``coriolis`` over times, the widest: the same maximum resident size to 0.1 %), since memory is
-kept only up to the run's own high-water mark. 8 MiB served these runs too, but a step whose
+(to 0.1 % for ``coriolis`` over times, the widest), since memory is kept only up to the run's
+own high-water mark. 8 MiB served these runs too, but a step whose
 blocks outgrow it (tests/test_batch_memory.py: three blocks of 6 MiB) thrashes again.
 
 Only the command line does this (:meth:`dyncalc.cli.options.Output.run_batch`): the process
@@ -42,7 +42,7 @@ def hold_freed_memory() -> bool:
         import ctypes
 
         mallopt = ctypes.CDLL(None).mallopt
-    except (ValueError, OSError, AttributeError):  # not glibc, or no mallopt to call
+    except (ValueError, OSError, AttributeError, ImportError):  # not glibc, no ctypes or mallopt
         return False
     mallopt.argtypes, mallopt.restype = [ctypes.c_int, ctypes.c_int], ctypes.c_int
     return mallopt(M_MMAP_THRESHOLD, HOLD_BYTES) == 1 and \
