@@ -91,6 +91,16 @@ def kernel_of(physics):
     return getattr(physics, "columns", None)
 
 
+def one_result(kernel, name: str) -> dict:
+    """The keywords that ask ``kernel`` for the result ``name`` alone: ``{"only": name}``
+    where the kernel takes them (marked ``takes_only``; it then computes that result alone,
+    exact where that result is), else none. An inverse's probes and search read one result;
+    its answer asks for all.
+
+    Example: ``one_result(lambda **kw: None, "alpha") == {}``."""
+    return {"only": name} if getattr(kernel, "takes_only", False) else {}
+
+
 def text_column(n: int, text: str):
     """A column (object array) of ``n`` cells, each the str ``text``: a result or label that
     is the same on every row (``eom``'s equations, an inverse's empty label).

@@ -174,8 +174,9 @@ def _drum(m1, m2, r1, r2, J_A, g, only=None):
 @rigid_kernel(drum_two_blocks)
 def _drum_two_blocks_columns(m1, m2, r1, r2, J_A, g, *, only=None) -> Columns:
     """:func:`drum_two_blocks` on columns (SI arrays); ``only``: one result's name, that
-    result alone, exact where it is (the inverse's search reads one: a quarter less CPU in a
-    ``J_A=?`` batch)."""
+    result alone, exact where it is (``takes_only``, see
+    :func:`~dyncalc.physics.columns.one_result`: the inverse's search reads one, a quarter
+    less CPU in a ``J_A=?`` batch)."""
     values = _drum(m1, m2, r1, r2, J_A, g, only)
     return rounded(values, in_range(m1, m2, r1, r2, J_A, g), zeros=("alpha", "a1", "a2"))
 

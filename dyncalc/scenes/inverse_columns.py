@@ -17,7 +17,7 @@ import math
 from fractions import Fraction
 
 from ..lazy import numpy as np
-from ..physics.columns import text_column
+from ..physics.columns import one_result, text_column
 from ..physics.numerics_arrays import elementwise
 from ..records import Record
 from ..units import ANGLE
@@ -86,11 +86,11 @@ def closed_form_columns(scene, kernel, unknown, target: str, arguments: dict, go
     goal = np.asarray(goal, dtype=float)
     n = len(goal)
 
-    narrow = {"only": target} if getattr(kernel, "takes_only", False) else {}
+    narrow = one_result(kernel, target)
 
     def y(x, every_result: bool = False):
-        """The target at ``x`` (a kernel with ``takes_only`` computes it alone: the probes
-        read nothing else), every result with ``every_result`` (the root)."""
+        """The target at ``x`` (the probes read nothing else), every result with
+        ``every_result`` (the root)."""
         args = {**arguments, unknown.name: np.broadcast_to(np.asarray(x, dtype=float), (n,))}
         ok = np.ones(n, dtype=bool)
         for constraint in scene.constraints:

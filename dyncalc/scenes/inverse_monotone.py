@@ -24,7 +24,8 @@ taken only where the kernel's target is exact at the power-law probes of a posit
 (which must show no power law, else the one-off inverts in closed form), at the bracket's ends
 and at every Brent iterate, every result is exact at the root, and the result is not flat over
 the grid to 1e-12 (the one-off refuses that) with a margin; every other row is left to the
-one-off's search. The search asks a kernel that can (``takes_only``) for the target alone.
+one-off's search. The search asks a kernel that can for the target alone
+(:func:`~dyncalc.physics.columns.one_result`).
 """
 from __future__ import annotations
 
@@ -33,7 +34,7 @@ from types import SimpleNamespace
 
 from ..lazy import numpy as np
 from ..physics.brent_arrays import RTOL_MIN, brent_roots
-from ..physics.columns import text_column
+from ..physics.columns import one_result, text_column
 from ..physics.numerics_arrays import elementwise
 from ..units import ANGLE
 from .inverse_columns import PROBES, SLOPE_TOL, ClosedForm, _log
@@ -82,12 +83,12 @@ def monotone_columns(scene, kernel, unknown, target: str, arguments: dict,
     goal = np.asarray(goal, dtype=float)
     n = len(goal)
 
-    narrow = {"only": target} if getattr(kernel, "takes_only", False) else {}
+    narrow = one_result(kernel, target)
 
     def y(x, rows, every_result: bool = False):
         """``(y at x, exact, the kernel's Columns)`` of the rows ``rows``; NaN where the
-        kernel has no value. The search reads the target alone (exact where it is: a kernel
-        with ``takes_only`` skips the other results); the answer, ``every_result``, all."""
+        kernel has no value. The search reads the target alone; the answer,
+        ``every_result``, all."""
         args = {k: (v[rows] if isinstance(v, np.ndarray) else v) for k, v in arguments.items()}
         args[unknown.name] = np.asarray(x, dtype=float)
         ok = np.ones(len(rows), dtype=bool)
