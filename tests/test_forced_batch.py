@@ -143,7 +143,7 @@ def test_undamped_rows_vectorised_write_the_one_off_bytes(tmp_path, header):
     import sys
 
     sys.path.insert(0, str(__import__("pathlib").Path(__file__).parent))
-    from test_batch_kernels import _command_cell, _command_run
+    from test_batch_kernels import _command_cell, _same_both_ways
 
     rng = random.Random(header)
     names = [h.split("[")[0].strip() for h in header.split(",")]
@@ -153,13 +153,9 @@ def test_undamped_rows_vectorised_write_the_one_off_bytes(tmp_path, header):
     path = tmp_path / "rows.csv"
     path.write_text(header + "\n" + "\n".join(rows) + "\n")
     spec = batch.ForcedRows()
-    for as_json in (False, True):
-        fast = _command_run(spec, path, True, as_json)
-        slow = _command_run(spec, path, False, as_json)
-        assert fast == slow
-    assert fast[0] == 2                     # the refused and bad rows: exit 2, as row by row
-    warned = _command_run(spec, path, True, False)[2].count("warning: line")
-    assert warned > 60
+    code, _out, err = _same_both_ways(spec, path)
+    assert code == 2                        # the refused and bad rows: exit 2, as row by row
+    assert err.count("warning: line") > 60
     cols = batch.read_header(1, header.split(","), spec)
     import csv
     import io
@@ -184,16 +180,14 @@ def test_undamped_rows_vectorised_write_the_one_off_bytes(tmp_path, header):
 def test_a_whole_undamped_chunk_writes_its_warnings(tmp_path):
     """Every row of the chunk vectorised (one block): the warning lines still come, one a
     row, after the chunk's lines, as row by row."""
-    from test_batch_kernels import _command_run
+    from test_batch_kernels import _same_both_ways
 
     path = tmp_path / "u.csv"
     path.write_text("k,m,F0,Omega\n" + "".join(f"{100 + i},1,1,{3 + i % 7}\n"
                                                for i in range(30)))
     spec = batch.ForcedRows()
-    for as_json in (False, True):
-        fast, slow = (_command_run(spec, path, f, as_json) for f in (True, False))
-        assert fast == slow and fast[0] == 0
-    err = _command_run(spec, path, True, False)[2]
+    code, _out, err = _same_both_ways(spec, path)
+    assert code == 0
     assert err.splitlines() == [f"warning: line {n}: undamped: X_res, the peak and the "
                                 "bandwidth are unbounded; not given" for n in range(2, 32)]
 

@@ -171,8 +171,9 @@ def evaluate(request: Request, shape: tuple[int, ...],
 
         for name, entry in result.results.items():
             out.put(name, i, machine(entry, {})[0], entry.dim)
-        out.warnings += [f"at index {where(i)}: {w}" for w in result.warnings]
+        warned.extend((i, w) for w in result.warnings)
 
+    warned: list[tuple[int, str]] = []  # (element, warning): the vectorised rows' too
     if n == 0:
         return out
     # the first element on its own: the refusals of the call as a whole (a parameter given
@@ -195,7 +196,10 @@ def evaluate(request: Request, shape: tuple[int, ...],
                 covered[block.rows] = True
                 for name, values in block.values.items():
                     out.put(name, rows, values, block.dims.get(name))
+                warned.extend((start + i, w) for i, w in block.warned_rows() if start + i)
         for i in np.flatnonzero(~covered).tolist():
             if start + i:
                 generic(start + i)
+    warned.sort(key=lambda pair: pair[0])  # (stable: an element's in the one-off's order)
+    out.warnings = [f"at index {where(i)}: {w}" for i, w in warned]
     return out

@@ -24,14 +24,32 @@ class FastBlock:
     arrays) and their dimensions (``None`` for words), and for JSON the constant part of each
     line (``head``), each row's ``inputs`` object text and the ``extra`` object text (or
     its parts, where rows differ: :attr:`~dyncalc.physics.columns.Columns.extras`);
-    ``warnings``: the one-off's warnings, the same on every row of the block."""
+    ``warnings``: the one-off's warnings, the same on every row of the block, or with
+    ``row_warnings`` (a list of tuples of texts, one a row) each row's own."""
 
-    __slots__ = ("rows", "values", "dims", "head", "inputs", "extra", "warnings")
+    __slots__ = ("rows", "values", "dims", "head", "inputs", "extra", "warnings",
+                 "row_warnings")
 
-    def __init__(self, rows, values, dims, head, inputs, extra="{}", warnings=()):
+    def __init__(self, rows, values, dims, head, inputs, extra="{}", warnings=(),
+                 row_warnings=None):
         self.rows, self.values, self.dims, self.head, self.inputs, self.extra = (
             rows, values, dims, head, inputs, extra)
         self.warnings = tuple(warnings)
+        self.row_warnings = row_warnings
+
+    def warned_rows(self):
+        """``(row, warning)`` of every warning of the block, in row order (each row's in the
+        one-off's order)."""
+        if self.row_warnings is not None:
+            return [(i, w) for i, texts in zip(self.rows.tolist(), self.row_warnings)
+                    for w in texts]
+        return [(i, w) for i in self.rows.tolist() for w in self.warnings]
+
+    def warns(self) -> bool:
+        """Whether any row of the block has a warning."""
+        if self.row_warnings is not None:
+            return any(self.row_warnings)
+        return bool(self.warnings)
 
 
 def json_head(command: str, scene: str | None, model: str, method: str) -> str:

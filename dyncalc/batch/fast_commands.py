@@ -303,7 +303,7 @@ def _split_by_results(spec, given, rows, cells, want_json, reads, good, out):
         part = Columns({name: out.values[name] for name, has in zip(names, pattern) if has},
                        exact=mask, model=out.model, method=out.method,
                        error_estimate=out.error_estimate, warnings=out.warnings,
-                       warned=out.warned, extras=out.extras)
+                       warned=out.warned, extras=out.extras, row_warnings=out.row_warnings)
         block = _finish(spec, given, rows, cells, want_json, reads, mask, part)
         if block is not None:
             blocks.append(block)
@@ -335,17 +335,23 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out,
     ``out.warned``, or those that do not, whichever the first good row is); ``group``: the
     rows' code of ``out.groups`` (each code probed on its own)."""
     warnings = ()
-    if out.warned is not None and out.warned[good].any():
+    per_row = getattr(out, "row_warnings", None)
+    if per_row is None and out.warned is not None and out.warned[good].any():
         first = bool(out.warned[int(np.argmax(good))])
         good = good & (out.warned if first else ~out.warned)
         warnings = out.warnings if first else ()
     first = int(np.argmax(good))
+    if per_row is not None:  # the probe checks the first row's own texts
+        warnings = tuple((per_row(np.array([first])) or [()])[0])
     first_extra = None if out.extras is None else _joined(out.extras(np.array([first])))
     # a spec with ``probed`` (a dict) probes each kind of block once a run (eom: a probe is
     # a whole one-off, with its explanation; springs: one per chunk was a quarter of a run);
     # the others probe every block. A kind: the columns, the units typed, the results.
     probed = getattr(spec, "probed", None)
-    key = (tuple(col.key for col in given), out.model, out.method, first_extra, warnings,
+    # (texts a row: the kind of block is whether its first row warns and how often; the
+    # texts come from the one-off's own formatting, its results say which warning it is)
+    said = warnings if per_row is None else ("per row", len(warnings))
+    key = (tuple(col.key for col in given), out.model, out.method, first_extra, said,
            tuple(out.values), tuple(_unit_at(reads[col.key][0], first) for col in given),
            group)
     probe = probed.get(key) if probed is not None else None
@@ -372,6 +378,10 @@ def _finish(spec, given, rows, cells, want_json, reads, good, out,
         {"error_estimate": out.error_estimate})
     if out.extras is not None:
         extra = out.extras(keep) if want_json else "{}"
+    each = per_row(keep) if per_row is not None else None
+    if each is not None:
+        return FastBlock(rows[keep], values, dims, head, texts, extra,
+                         row_warnings=[tuple(w) for w in each])
     return FastBlock(rows[keep], values, dims, head, texts, extra, warnings)
 
 

@@ -150,11 +150,11 @@ class _Writer:
             self.out.write("\n".join(shown))
         if not self.as_json:  # the warnings of the vectorised rows written
             for block in blocks:
-                tails = [_tail(w) for w in block.warnings]
-                messages += [(i, f"warning: line {lines[i]}{tail}")
-                             for i in block.rows.tolist()
+                tails: dict = {}
+                messages += [(i, f"warning: line {lines[i]}{tails.get(w) or _tail_of(tails, w)}")
+                             for i, w in block.warned_rows()
                              if i < upto and texts[i] is not None
-                             and not isinstance(texts[i], _Failure) for tail in tails]
+                             and not isinstance(texts[i], _Failure)]
         if messages:  # each message already one line (errors.one_line)
             self.out.flush()
             self.err.write("\n".join(m for _i, m in sorted(messages, key=_first)) + "\n")
@@ -163,16 +163,17 @@ class _Writer:
 
     def _block_warnings(self, blocks, lines) -> None:
         """The CSV run's ``warning:`` lines of vectorised blocks (the same texts each row)."""
-        if self.as_json or not any(block.warnings for block in blocks):
+        if self.as_json or not any(block.warns() for block in blocks):
             return
-        if len(blocks) == 1 and len(blocks[0].rows) == len(lines):
+        if len(blocks) == 1 and len(blocks[0].rows) == len(lines) and \
+                blocks[0].row_warnings is None:
             # one block over the whole chunk: every row has the same warnings, so each is made
             # one line once and the line numbers are joined around it in one call (one_line of
             # the whole message a row was half of a 10^6-row undamped forced-response run)
             text = _same_warnings(lines, sorted(blocks[0].warnings))
         else:
-            rows = sorted((i, w) for block in blocks for i in block.rows.tolist()
-                          for w in block.warnings)
+            rows = sorted((pair for block in blocks for pair in block.warned_rows()),
+                          key=_first)  # (stable: a row's warnings in the one-off's order)
             text = "\n".join(one_line(f"warning: line {lines[i]}: {w}") for i, w in rows)
         self.out.flush()
         self.err.write(text)  # then the break apart: the chunk's warnings are not copied again
@@ -254,8 +255,7 @@ class _Writer:
             numbers = chunk.numbers if whole else [chunk.numbers[i] for i in rows]
             return ['{"line": ', np.asarray(numbers, dtype=np.int64),
                     ", " + block.head + ', "inputs": {', *block.inputs, '}, "results": {',
-                    *parts, '}, "warnings": ' + json.dumps(list(block.warnings))
-                    + ', "extra": ', *_extra_parts(block.extra), "}"]
+                    *parts, *_warning_parts(block), *_extra_parts(block.extra), "}"]
         parts = [chunk.echo(None if whole else rows)]
         for name in self.columns:
             parts += [","] if name not in shown else [",", *shown[name][0]]
@@ -306,6 +306,23 @@ class _Writer:
             except InputError:
                 raise _Failure(self._not_shown(name, self.col_units[name], entry.dim)) from None
         return _csv_lines([row])[0]
+
+
+def _warning_parts(block) -> list:
+    """A block's JSON ``warnings`` member and the start of ``extra``: one text every line
+    shares, or each row's list (``row_warnings``), made once a distinct list."""
+    if block.row_warnings is None:
+        return ['}, "warnings": ' + json.dumps(list(block.warnings)) + ', "extra": ']
+    made: dict = {}
+    texts = [made.get(w) or made.setdefault(w, json.dumps(list(w)))
+             for w in block.row_warnings]
+    return ['}, "warnings": ', texts, ', "extra": ']
+
+
+def _tail_of(tails: dict, warning: str) -> str:
+    """:func:`_tail` of ``warning``, kept in ``tails`` (a block's rows share few texts)."""
+    tails[warning] = made = _tail(warning)
+    return made
 
 
 def _extra_parts(extra) -> list:

@@ -240,7 +240,10 @@ def columns(given: dict, settings: dict):
     ``v0`` finite), it raises and warns nothing and every result is finite and non-zero.
     A result that exists on some rows only (``isolation``, ``bandwidth``, the peak) is NaN
     on the others: the batch splits a block by the results its rows have
-    (``Columns.optional``).
+    (``Columns.optional``). Damped rows beyond the peak's or the bandwidth's limits are the
+    kernel's too, each with the one-off's warning (``Columns.row_warnings``, its values in
+    the text); the rows the kernel leaves are taken here only where the one-off warns
+    nothing.
     """
     from ..lazy import numpy as np
     from ..physics.columns import Columns
@@ -255,8 +258,9 @@ def columns(given: dict, settings: dict):
         return None
     arrays = {name: np.asarray(value, dtype=float) for name, value in given.items()}
     n = len(next(iter(arrays.values())))
-    kernel = forced_columns(arrays)
-    values, exact = kernel if kernel is not None else ({}, np.zeros(n, dtype=bool))
+    kernel = forced_columns(arrays, with_warnings=True)
+    values, exact, notes = kernel if kernel is not None else (
+        {}, np.zeros(n, dtype=bool), None)
     names = dict.fromkeys(name for name in values if name != "isolation"
                           or not np.all(np.isnan(values[name])))
     rows = {}
@@ -273,8 +277,9 @@ def columns(given: dict, settings: dict):
             out[name][i] = row.get(name, math.nan)
     exact = exact.copy()
     exact[list(rows)] = True
-    if keys & set(_DAMPINGS):
-        return Columns(out, exact=exact, model="linear", method="closed-form", optional=True)
+    if keys & set(_DAMPINGS):  # each row's warnings: the kernel's (none on the rows above)
+        return Columns(out, exact=exact, model="linear", method="closed-form", optional=True,
+                       row_warnings=notes)
     from ..physics.forced import UNDAMPED_WARNING  # undamped: every row the kernel answers warns
 
     return Columns(out, exact=exact, model="linear", method="closed-form", optional=True,

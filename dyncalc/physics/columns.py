@@ -37,6 +37,11 @@ class Columns(Record):
     ``warnings``: the one-off's warnings (the same texts on every row) of the exact rows that
     ``warned`` marks (a boolean array; ``None``: no row warns); the batch keeps together only
     rows that all warn so or all do not, and its probe checks the texts against the one-off.
+    ``row_warnings``: where the texts differ from row to row (a value in them), a function of
+    the rows kept (an index array) giving each row's warnings (a tuple of texts, in the
+    one-off's order; ``None`` where none of the rows warns); the texts must come from the
+    function the one-off formats them with (the probe checks a block's first row);
+    ``None``: ``warnings`` and ``warned`` say.
     ``extras``: where the one-off's ``extra`` differs from row to row (``coriolis``' Earth
     directions), a function of the rows kept (an index array) giving the parts of their JSON
     ``extra`` objects (texts every line shares and lists of one text a row, as
@@ -47,18 +52,18 @@ class Columns(Record):
     """
 
     _FIELDS = ("values", "exact", "model", "method", "error_estimate", "optional",
-               "warnings", "warned", "extras", "groups")
+               "warnings", "warned", "extras", "groups", "row_warnings")
     __slots__ = _FIELDS
     __hash__ = None
 
     def __init__(self, values: dict[str, Any], exact: Any, model: str = "linear",
                  method: str = "closed-form", error_estimate: float | None = None,
                  optional: bool = False, warnings: tuple[str, ...] = (), warned: Any = None,
-                 extras: Any = None, groups: Any = None):
+                 extras: Any = None, groups: Any = None, row_warnings: Any = None):
         self.values, self.exact, self.model, self.method, self.error_estimate = (
             values, exact, model, method, error_estimate)
         self.optional, self.warnings, self.warned = optional, tuple(warnings), warned
-        self.extras, self.groups = extras, groups
+        self.extras, self.groups, self.row_warnings = extras, groups, row_warnings
 
 
 class TypedColumn(Record):

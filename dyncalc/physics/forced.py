@@ -40,7 +40,8 @@ from .numerics import sqrt_ratio
 from .outcome import CRITICAL_BAND, Outcome
 
 __all__ = ["EXCITATIONS", "resonance_gap", "phase", "magnification", "transmissibility",
-           "peak", "half_power", "transient", "total_response", "forced_response",
+           "peak", "half_power", "no_peak_warning", "half_power_warning", "transient",
+           "total_response", "forced_response",
            "RESONANCE_GAP", "SQRT_HALF", "UNDAMPED_WARNING"]
 
 #: The excitation kinds, as the option names say them.
@@ -275,6 +276,39 @@ def _half_power_base(zeta: float):
         return None, high, None
     low = math.sqrt(1.0 - w_pos)
     return low, high, (disc / p) / (high + low)
+
+
+def no_peak_warning(kind: str, zeta: float) -> str:
+    """The warning of a damped response without a resonance peak (``zeta >= 1/sqrt 2``; not
+    for base motion, which always has one): where the amplitude is largest instead. One text
+    for the one-off and the batch's rows (:mod:`~dyncalc.physics.forced_columns`).
+
+    >>> no_peak_warning("force", 0.9)
+    'zeta = 0.9 >= 1/sqrt(2): the amplitude has no resonance peak; it is largest at Omega = 0'
+    """
+    where = "at Omega = 0" if kind != "unbalance" else "as Omega -> inf"
+    return (f"zeta = {zeta:.6g} >= 1/sqrt(2): the amplitude has no resonance peak; it is "
+            f"largest {where}")
+
+
+def half_power_warning(zeta: float, low: float | None, high: float | None,
+                       omega: float) -> str | None:
+    """The warning where one half-power frequency exists and the other does not (``low`` and
+    ``high`` as :func:`half_power` gives them, ``eta``; ``omega`` [rad/s]): the bandwidth is
+    not defined. ``None`` where both exist or neither does.
+
+    >>> half_power_warning(0.5, None, 1.5, 2.0)[:48]
+    'no lower half-power frequency at zeta = 0.5: X s'
+    """
+    if low is None and high is not None:
+        return (f"no lower half-power frequency at zeta = {zeta:.6g}: X stays above "
+                f"X_peak/sqrt(2) down to Omega = 0 (the upper one is {high * omega:.6g} "
+                "rad/s); the bandwidth is not defined")
+    if high is None and low is not None:
+        return (f"no upper half-power frequency at zeta = {zeta:.6g}: X stays above "
+                f"X_peak/sqrt(2) as Omega -> inf (the lower one is {low * omega:.6g} "
+                "rad/s); the bandwidth is not defined")
+    return None
 
 
 def transient(omega: float, zeta: float, x0: float, v0: float, t: float) -> float:
@@ -553,9 +587,7 @@ def _steady(values, kind, amplitude, gap, zeta, eta, w, W, k, m, static, warning
                 values["X_peak"] = static * top[1]
             values["V_peak"] = top[1]
         else:
-            where = "at Omega = 0" if kind != "unbalance" else "as Omega -> inf"
-            warnings.append(f"zeta = {zeta:.6g} >= 1/sqrt(2): the amplitude has no resonance "
-                            f"peak; it is largest {where}")
+            warnings.append(no_peak_warning(kind, zeta))
     else:
         warnings.append(UNDAMPED_WARNING)
     values["Omega_iso"] = math.sqrt(2.0) * w
@@ -565,12 +597,6 @@ def _steady(values, kind, amplitude, gap, zeta, eta, w, W, k, m, static, warning
         low, high, width = half_power(kind, zeta)
         if width is not None:
             values["bandwidth"] = width * w
-        elif low is None and high is not None:
-            warnings.append(f"no lower half-power frequency at zeta = {zeta:.6g}: X stays above "
-                            f"X_peak/sqrt(2) down to Omega = 0 (the upper one is "
-                            f"{high * w:.6g} rad/s); the bandwidth is not defined")
-        elif high is None and low is not None:
-            warnings.append(f"no upper half-power frequency at zeta = {zeta:.6g}: X stays above "
-                            f"X_peak/sqrt(2) as Omega -> inf (the lower one is "
-                            f"{low * w:.6g} rad/s); the bandwidth is not defined")
+        elif (text := half_power_warning(zeta, low, high, w)) is not None:
+            warnings.append(text)
         values["Q"] = 0.5 / zeta

@@ -102,7 +102,7 @@ def half_power_product_columns(zeta):
 _KINDS = {"F0": "force", "base": "base", "base_accel": "base-accel", "unbalance": "unbalance"}
 
 
-def forced_columns(given: dict):
+def forced_columns(given: dict, *, with_warnings: bool = False):
     """``(values, exact)`` for the rows of one block, or ``None`` when the block's form gives
     no row a full answer here (undamped, no mass where the amplitude needs it, initial
     conditions).
@@ -113,6 +113,21 @@ def forced_columns(given: dict):
     finite, positive and within :data:`DOMAIN`, damped below the peak's and the bandwidth's
     limits, the roundings certified, every result finite and non-zero); ``values`` holds the
     results by name (``isolation`` NaN where ``TR >= 1``), NaN on the other rows.
+
+    ``with_warnings``: also the damped rows beyond those limits, whose one-off warns
+    (``zeta >= 1/sqrt 2``: no peak; ``0.38268 < zeta < 1/sqrt 2``, or a heavily damped base
+    motion: one half-power frequency only), their missing results NaN, and a third item
+    ``notes(rows)`` giving the warnings of the rows of an index array (a tuple of texts each,
+    formatted by the one-off's own :func:`~dyncalc.physics.forced.no_peak_warning` and
+    :func:`~dyncalc.physics.forced.half_power_warning`; ``None`` where none of them warns).
+
+    >>> import numpy as np
+    >>> given = {"k": np.array([100.0, 100.0]), "m": np.array([1.0, 1.0]),
+    ...          "zeta": np.array([0.1, 0.9]), "F0": np.array([1.0, 1.0]),
+    ...          "Omega": np.array([5.0, 5.0])}
+    >>> values, exact, notes = forced_columns(given, with_warnings=True)
+    >>> exact.tolist(), np.isnan(values["V_peak"]).tolist(), notes(np.array([0, 1]))[1][0][:24]
+    ([True, True], [False, True], 'zeta = 0.9 >= 1/sqrt(2):')
     """
     names = set(given)
     excitation = [n for n in _KINDS if n in names]
@@ -135,16 +150,22 @@ def forced_columns(given: dict):
         ok &= (value >= low) & (value <= high)
     for name, value in start.items():   # x0, v0 of any sign (or zero), t positive
         ok &= np.isfinite(value) if name != "t" else (value >= low) & (value <= high)
+    absent = {}  # a result a row may lack, with a warning: where it does
+    notes = _NO_NOTES
     with np.errstate(all="ignore"):
         if undamped:  # zeta = 0: no resonance results; refused at resonance
             a["zeta"] = np.zeros(len(amp))
-            values, exact, _damped, gap = _steady(kind, a, m, ok)
+            values, exact, _damped, gap, _limits = _steady(kind, a, m, ok)
             exact &= np.abs(gap) > RESONANCE_GAP
             for name in _DAMPED_ONLY:
                 del values[name]
         else:
-            values, exact, damped, _gap = _steady(kind, a, m, ok)
+            values, exact, damped, _gap, limits = _steady(kind, a, m, ok)
             exact &= damped
+            if with_warnings:
+                absent, notes = _beyond(kind, values, limits)
+            else:
+                exact &= limits.has_peak & limits.has_width
         if "t" in start:
             zero = np.zeros(len(amp))
             sign = -1.0 if kind == "base-accel" else 1.0
@@ -157,9 +178,59 @@ def forced_columns(given: dict):
             exact &= np.isfinite(value)
             continue
         good = np.isfinite(value) & (value != 0.0)
+        if name in absent:
+            good |= absent[name]
         exact &= (good | np.isnan(value)) if name == "isolation" else good
     nan = np.nan
-    return {n: np.where(exact, v, nan) for n, v in values.items()}, exact
+    out = {n: np.where(exact & ~absent[n] if n in absent else exact, v, nan)
+           for n, v in values.items()}
+    if not with_warnings:
+        return out, exact
+    return out, exact, lambda rows: notes(rows, exact)
+
+
+def _NO_NOTES(rows, exact):
+    return None
+
+
+class _Limits:
+    """Where a damped row has its peak and half-power bandwidth (``has_peak``,
+    ``has_width``), and the half-power frequency it has where it lacks the other (``edge``,
+    as ``eta``: the upper one, the lower for unbalance)."""
+
+    __slots__ = ("has_peak", "has_width", "edge")
+
+    def __init__(self, has_peak, has_width, edge):
+        self.has_peak, self.has_width, self.edge = has_peak, has_width, edge
+
+
+def _beyond(kind, values, limits):
+    """The results rows beyond the peak's and the bandwidth's limits lack, by name (a mask
+    each), and the function of their warnings (the one-off's texts, its order)."""
+    from .forced import half_power_warning, no_peak_warning
+
+    no_peak, no_width = ~limits.has_peak, ~limits.has_width
+    half = limits.has_peak & no_width  # one half-power frequency only
+    absent = {"Omega_peak": no_peak, "X_peak": no_peak, "V_peak": no_peak,
+              "bandwidth": no_width}
+    zeta, omega, edge = values["zeta"], values["omega"], limits.edge
+    lower = kind == "unbalance"  # the frequency it has: the lower one
+
+    def notes(rows, exact):
+        warned = exact[rows] & (no_peak[rows] | half[rows])
+        if not warned.any():
+            return None
+        out: list = [()] * len(rows)
+        for j in np.flatnonzero(warned).tolist():
+            i = int(rows[j])
+            if no_peak[i]:
+                out[j] = (no_peak_warning(kind, float(zeta[i])),)
+            else:
+                e = float(edge[i])
+                out[j] = (half_power_warning(float(zeta[i]), e if lower else None,
+                                             None if lower else e, float(omega[i])),)
+        return out
+    return absent, notes
 
 
 #: The results an undamped oscillator does not have (unbounded).
@@ -227,51 +298,54 @@ def _steady(kind, a, m, ok):
         V_res = 1.0 / (d_res / 1.0) if kind == "unbalance" else 1.0 / d_res
     values["X_res"] = static * V_res
     values["V_res"] = V_res
-    eta_peak, V_peak, peak_ok = _peak(kind, zeta)
+    eta_peak, V_peak, has_peak, peak_ok = _peak(kind, zeta)
     values["Omega_peak"] = eta_peak * w
     values["X_peak"] = static * V_peak
     values["V_peak"] = V_peak
     values["Omega_iso"] = _SQRT2 * w
     values["isolation"] = np.where(TR < 1.0, 1.0 - TR, np.nan)
-    width, width_ok = _half_power(kind, zeta)
+    width, has_width, width_ok, edge = _half_power(kind, zeta)
     values["bandwidth"] = width * w
     values["Q"] = 0.5 / zeta
-    return values, ok, zeta_ok & peak_ok & width_ok, gap
+    return values, ok, zeta_ok & peak_ok & width_ok, gap, _Limits(has_peak, has_width, edge)
 
 
 def _peak(kind, zeta):
-    """:func:`dyncalc.physics.forced.peak` on columns: ``(eta_peak, V_peak, exists)``."""
+    """:func:`dyncalc.physics.forced.peak` on columns: ``(eta_peak, V_peak, exists,
+    certain)`` (``certain``: whether it exists is the one-off's answer)."""
     if kind == "base":
         r = _hypot(np.ones_like(zeta), _SQRT8 * zeta)
         s = 2.0 / (1.0 + r)
         w = _square(_SQRT8 * zeta / (1.0 + r))
         eta = np.sqrt(s)
         two_ze = 2.0 * zeta * eta
-        return eta, _hypot(np.ones_like(two_ze), two_ze) / _hypot(w, two_ze), \
-            np.ones(len(zeta), dtype=bool)
+        every = np.ones(len(zeta), dtype=bool)
+        return eta, _hypot(np.ones_like(two_ze), two_ze) / _hypot(w, two_ze), every, every
     s, ok = one_minus_two_z2_columns(zeta)
-    exists = ok & (s > 0.0)
     v = 1.0 / (2.0 * zeta * np.sqrt((1.0 - zeta) * (1.0 + zeta)))
     root = np.sqrt(s)
-    return (root if kind != "unbalance" else 1.0 / root), v, exists
+    return (root if kind != "unbalance" else 1.0 / root), v, s > 0.0, ok
 
 
 def _half_power(kind, zeta):
-    """``(bandwidth/omega, exists)`` as :func:`dyncalc.physics.forced.half_power` gives it
-    (rows where it gives none, with a warning, do not exist)."""
+    """``(bandwidth/omega, exists, certain, edge)`` as
+    :func:`dyncalc.physics.forced.half_power` gives it: ``exists`` where it gives a
+    bandwidth, ``certain`` where that is the one-off's answer, ``edge`` the one half-power
+    frequency (``eta``) of a row with one only (the upper; the lower for unbalance)."""
     if kind == "base":
         return _half_power_base(zeta)
     s, ok = one_minus_two_z2_columns(zeta)
     root = np.sqrt((1.0 - zeta) * (1.0 + zeta))
     plus = s + 2.0 * zeta * root
     product, ok2 = half_power_product_columns(zeta)
-    exists = ok & ok2 & (s > 0.0) & (product > 0.0)
+    exists = (s > 0.0) & (product > 0.0)
     minus = product / plus
     spread = 4.0 * zeta * root
     if kind != "unbalance":
         low = np.sqrt(minus)
-        return spread / (np.sqrt(plus) + low), exists
-    return spread / ((np.sqrt(plus) + np.sqrt(minus)) * np.sqrt(product)), exists
+        return spread / (np.sqrt(plus) + low), exists, ok & ok2, np.sqrt(plus)
+    return (spread / ((np.sqrt(plus) + np.sqrt(minus)) * np.sqrt(product)), exists, ok & ok2,
+            1.0 / np.sqrt(plus))
 
 
 def _half_power_base(zeta):
@@ -294,7 +368,7 @@ def _half_power_base(zeta):
     high = np.sqrt(1.0 - w_neg)
     exists = 1.0 - w_pos > 0.0
     low = np.sqrt(1.0 - w_pos)
-    return (disc / p) / (high + low), exists
+    return (disc / p) / (high + low), exists, np.ones(len(zeta), dtype=bool), high
 
 
 def _libm(function):
