@@ -95,8 +95,8 @@ def _random_rows(rng, n: int, form: str) -> list[str]:
 _EXTREMES = {
     "speed": ["90deg,10m/s,0deg,0,1kg", "-90deg,10m/s,90deg,0,1kg", "0deg,0m/s,0deg,0,1kg",
               "0,3m/s,0,0,1kg",                     # bare zeros: no warning, vectorised
-              "0.5,3m/s,10deg,0,1kg",               # a bare latitude warns: row by row
-              "45deg,3m/s,1,0,1kg",                 # a bare heading warns: row by row
+              "0.5,3m/s,10deg,0,1kg",               # a bare latitude warns: vectorised
+              "45deg,3m/s,1,0,1kg",                 # a bare heading warns: vectorised
               "91deg,3m/s,0deg,0,1kg",              # refused: beyond the pole
               "45deg,-3m/s,0deg,0,1kg",             # refused: a negative speed
               "45deg,1e300m/s,45deg,1e300,1e300kg", # F_c overflows: refused as the one-off does
@@ -123,10 +123,12 @@ def test_earth_batch_is_the_one_off_byte_for_byte(monkeypatch, form, as_json):
 
 
 def test_earth_batch_rows_that_warn_keep_the_one_offs_warning(monkeypatch):
+    """A bare latitude (radians) warns, each row its own text: on columns since session 13
+    (a block of its own: the unit typed differs from the next row's)."""
     text = "latitude,vr [m/s]\n0.5,\"0,20,0\"\n45deg,\"0,20,0\"\n"
     fast, exact = _fast_and_generic(monkeypatch, ["coriolis", "--batch", "-", "--json"], text)
     lines = [json.loads(line) for line in fast.stdout.splitlines()]
-    assert exact == 1
+    assert exact == 2
     assert lines[0]["warnings"] == ["--latitude 0.5 has no unit and is read in radians "
                                     "(28.6479 deg); write 0.5deg for degrees"]
     assert lines[1]["warnings"] == []
@@ -290,3 +292,39 @@ def test_perpendicular_inverse_rows_on_columns_are_the_one_off(monkeypatch, head
     fast, _exact = _fast_and_generic(monkeypatch, args, "\n".join([header, *rows]) + "\n")
     assert sum(solved) >= 190
     assert "Error: line" in fast.stderr
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_bare_latitudes_and_headings_on_columns_are_the_one_off(monkeypatch, as_json):
+    """Columns of bare numbers (radians, as the one-off reads them): every row on columns,
+    each non-zero cell with the one-off's warning naming the cell as typed (spaces, exponents,
+    signs) and its degrees; zeros warn nothing; beyond the pole refused as the one-off does."""
+    rng = np.random.default_rng(RNG_SEED + 7)
+    rows = []
+    for i in range(300):
+        lat, heading = float(rng.uniform(-1.57, 1.57)), float(rng.uniform(-7, 7))
+        lat_text = [repr(lat), f" {lat:.3e} ", "0", f"{lat:.4f}"][i % 4]
+        heading_text = [repr(heading), "0", f"{heading:.2E}", " 1 "][i % 4 if i % 3 else 0]
+        rows.append(f"{lat_text},{float(rng.uniform(0, 40))!r},{heading_text}")
+    rows += ["2,3,1", "-0.0,3,-0.0", "1e-300,3,1e-300"]
+    text = "latitude,speed [m/s],heading\n" + "\n".join(rows) + "\n"
+    args = ["coriolis", "--batch", "-", "--on-error", "skip"] + (["--json"] if as_json else [])
+    from dyncalc.batch import fast_commands
+
+    finish, written = fast_commands._finish, []
+
+    def counting(*a, **kw):  # the rows of the blocks the probe let through
+        block = finish(*a, **kw)
+        written.append(0 if block is None else len(block.rows))
+        return block
+    monkeypatch.setattr(fast_commands, "_finish", counting)
+    fast, exact = _fast_and_generic(monkeypatch, args, text)
+    assert exact >= 300 and sum(written) >= 300
+    assert fast.exit_code == 2  # 2 rad is beyond the pole: refused, as the one-off refuses it
+    if not as_json:
+        warned = [line for line in fast.stderr.splitlines() if line.startswith("warning:")]
+        assert len(warned) > 300
+        lat = float(rows[0].split(",")[0])
+        assert warned[0] == (f"warning: line 2: --latitude {rows[0].split(',')[0]} has no "
+                             f"unit and is read in radians ({math.degrees(lat):.6g} deg); "
+                             f"write {rows[0].split(',')[0]}deg for degrees")

@@ -266,7 +266,8 @@ def _block(spec, given: list[Column], rows: np.ndarray, cells, want_json: bool,
         return None
     settings = {**spec.settings, "units": _typed_units(reads, good), "json": want_json,
                 "typed": {key: read[2].shown for key, (read, _column) in reads.items()
-                          if read[4] == "number"}}
+                          if read[4] == "number"},
+                "cells": {key: column for key, (_read, column) in reads.items()}}
     try:
         with np.errstate(all="ignore"):
             out = spec.adapter(arrays, settings)

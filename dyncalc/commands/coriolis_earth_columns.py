@@ -20,18 +20,19 @@ _SCALARS = ("latitude", "omega", "speed", "heading", "vertical", "mass")
 
 
 def _degrees(key: str, si, settings: dict):
-    """``(degrees, ok)`` of the angle column ``key`` as the one-off reads it
-    (``quantity.to("degree")`` in the unit typed); a bare number is in radians and warns
-    unless zero, so only its zeros are taken (``ok``). ``None`` where the unit typed is not
-    one for the whole column."""
+    """``(degrees, ok, bare)`` of the angle column ``key`` as the one-off reads it
+    (``quantity.to("degree")`` in the unit typed); ``bare``: the column's numbers have no
+    unit and are read in radians (the one-off warns where they are not zero). ``None``
+    where the unit typed is not one for the whole column."""
     from ..units import Q_
 
     units, typed = settings.get("units") or {}, settings.get("typed") or {}
     if key not in units or key not in typed:
         return None
     unit = units[key]
-    if unit is None or not str(unit).strip():
-        return np.zeros_like(si), si == 0.0
+    bare = unit is None or not str(unit).strip()
+    if bare:
+        unit = "rad"  # (the one-off's quantity of a bare angle: radians)
     from ..errors import InputError
     from ..units import parse_quantity
     from .coriolis_read import OPTIONS
@@ -43,7 +44,7 @@ def _degrees(key: str, si, settings: dict):
                                  .to("degree").magnitude, dtype=float)
     except (InputError, ValueError, TypeError, AttributeError, ArithmeticError):
         return None  # a unit the reader refuses here: the generic path says why
-    return degrees, np.isfinite(degrees)
+    return degrees, np.isfinite(degrees), bare
 
 
 def earth_columns(given: dict, settings: dict):
@@ -52,9 +53,11 @@ def earth_columns(given: dict, settings: dict):
     magnitudes typed, which the one-off's degrees come from), or ``None`` where this form
     cannot take the block (an option refused with these, a unit not known for a column).
 
-    Exact where the one-off gives the same values with no warning: a latitude within
-    [-90, 90] deg, typed with a unit (or 0); a heading with a unit (or 0); a rate and a speed
-    not negative, a positive mass, finite values and the vector form's own conditions.
+    Exact where the one-off gives the same values: a latitude within [-90, 90] deg; a rate
+    and a speed not negative, a positive mass, finite values and the vector form's own
+    conditions. A latitude or heading column of bare numbers is read in radians, as the
+    one-off reads it, each non-zero cell with the one-off's warning (its text from
+    ``settings["cells"]``, the cells as typed: ``Columns.row_warnings``).
     """
     from ..constants import EARTH_RATE
     from ..physics.columns import Columns
@@ -78,8 +81,15 @@ def earth_columns(given: dict, settings: dict):
     latitude = _degrees("latitude", arrays["latitude"], settings)
     if latitude is None:
         return None
-    degrees, fine = latitude
+    degrees, fine, bare = latitude
     ok &= fine & (degrees >= -90.0) & (degrees <= 90.0)
+    cells = settings.get("cells") or {}
+    noted = []  # (warning function of a row, rows it applies to): the one-off's reading's
+    if bare:
+        if "latitude" not in cells:
+            ok &= degrees == 0.0
+        else:
+            noted.append((_latitude_note(cells["latitude"], degrees), degrees != 0.0))
     rate = arrays.get("omega", np.full(n, EARTH_RATE))
     ok &= rate >= 0.0
     for name, low in (("mass", 0.0), ("speed", None)):
@@ -101,8 +111,14 @@ def earth_columns(given: dict, settings: dict):
                 read = _degrees("heading", arrays["heading"], settings)
                 if read is None:
                     return None
-                heading, fine = read
+                heading, fine, bare = read
                 ok &= fine
+                if bare:
+                    if "heading" not in cells:
+                        ok &= arrays["heading"] == 0.0
+                    else:
+                        noted.append((_heading_note(cells["heading"]),
+                                      arrays["heading"] != 0.0))
             speed = arrays.get("speed", np.zeros(n))
             vr = enu_velocity_rows(speed, np.where(ok, heading, 0.0),
                                    arrays.get("vertical", np.zeros(n)))
@@ -123,7 +139,37 @@ def earth_columns(given: dict, settings: dict):
                 values[name + "_horizontal_mag"] = magnitude(flat)
     a_c = values["a_c"]
     return Columns(values, exact=exact & ok, model="Earth, east-north-up",
-                   extras=lambda keep: _directions(a_c[keep]))
+                   extras=lambda keep: _directions(a_c[keep]),
+                   row_warnings=_notes(noted) if noted else None)
+
+
+def _latitude_note(cells, degrees):
+    """The bare-latitude warning of row ``i`` (its cell as typed, its degrees)."""
+    from .coriolis_read import bare_latitude_warning
+
+    return lambda i: bare_latitude_warning(cells[i], float(degrees[i]))
+
+
+def _heading_note(cells):
+    """The bare-heading warning of row ``i``."""
+    from .coriolis_read import bare_heading_warning
+
+    return lambda i: bare_heading_warning(cells[i])
+
+
+def _notes(noted):
+    """Each row's warnings (the one-off's order: the latitude's, then the heading's) of the
+    rows kept, or ``None`` where none of them warns."""
+    def row_warnings(keep):
+        marks = [where[keep] for _note, where in noted]
+        if not any(m.any() for m in marks):
+            return None
+        out = [()] * len(keep)
+        for j in np.flatnonzero(np.logical_or.reduce(marks)).tolist():
+            i = int(keep[j])
+            out[j] = tuple(note(i) for (note, _where), m in zip(noted, marks) if m[j])
+        return out
+    return row_warnings
 
 
 def _direction_texts(v) -> list[str]:

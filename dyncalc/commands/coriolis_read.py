@@ -10,7 +10,8 @@ from ..result.entries import Entry, entry_from_parsed, format_number
 from ..units import (ACCELERATION, ANGLE, ANGULAR_ACCELERATION, ANGULAR_RATE, LENGTH, MASS,
                     VELOCITY, Dim, Parsed, format_quantity, parse_quantity, parse_vector)
 
-__all__ = ["OPTIONS", "CoriolisInputs", "read"]
+__all__ = ["OPTIONS", "CoriolisInputs", "read", "bare_latitude_warning",
+           "bare_heading_warning"]
 
 #: Option name -> (dimension, description).
 OPTIONS = {
@@ -225,6 +226,29 @@ def _read_scalars(reader: _Reader, omega: Parsed) -> CoriolisInputs:
     return reader.done("scalar")
 
 
+def bare_latitude_warning(text: str, degrees: float) -> str:
+    """The warning of a latitude typed without a unit (``text``, read in radians: ``degrees``
+    of latitude), for the one-off and the batch's rows alike.
+
+    >>> bare_latitude_warning(" 0.7", 40.10704565915762)
+    '--latitude 0.7 has no unit and is read in radians (40.107 deg); write 0.7deg for degrees'
+    """
+    text = text.strip()
+    return (f"--latitude {text} has no unit and is read in radians "
+            f"({format_number(degrees, 6)} deg); write {text}deg for degrees")
+
+
+def bare_heading_warning(text: str) -> str:
+    """The warning of a heading typed without a unit (``text``, read in radians).
+
+    >>> bare_heading_warning("1")
+    '--heading 1 has no unit and is read in radians; write 1deg for compass degrees'
+    """
+    text = text.strip()
+    return (f"--heading {text} has no unit and is read in radians; write {text}deg for "
+            "compass degrees")
+
+
 def _read_earth(reader: _Reader) -> CoriolisInputs:
     texts = reader.texts
     warnings: list[str] = []
@@ -236,9 +260,7 @@ def _read_earth(reader: _Reader) -> CoriolisInputs:
         raise InputError(f"--latitude must be between -90 deg and 90 deg; got "
                          f"{format_quantity(latitude.quantity)}{hint}")
     if latitude.assumed_si and degrees != 0.0:
-        warnings.append(f"--latitude {latitude.text.strip()} has no unit and is read in radians "
-                        f"({format_number(degrees, 6)} deg); write {latitude.text.strip()}deg "
-                        "for degrees")
+        warnings.append(bare_latitude_warning(latitude.text, degrees))
 
     if "omega" in texts:
         omega = reader.vector("omega")
@@ -266,8 +288,7 @@ def _read_earth(reader: _Reader) -> CoriolisInputs:
         heading = reader.scalar("heading")
         reader.scalar("vertical")
         if heading is not None and heading.assumed_si and heading.si != 0.0:
-            warnings.append(f"--heading {heading.text.strip()} has no unit and is read in "
-                            f"radians; write {heading.text.strip()}deg for compass degrees")
+            warnings.append(bare_heading_warning(heading.text))
     else:
         raise InputError("--vr is missing: give the velocity relative to the Earth as east, "
                          "north, up components, e.g. --vr '0,20,0 m/s', or --speed with "

@@ -80,7 +80,10 @@ class Command(Frozen):
     :class:`~dyncalc.result.Result`. ``columns(given, settings)``, where the command has
     one, is its batch adapter: the SI arrays of the columns a block of rows gives (by
     parameter name; vectors (n, 3), words as arrays of str) and the settings, to a
-    :class:`~dyncalc.physics.columns.Columns` of the one-off's results (or ``None``).
+    :class:`~dyncalc.physics.columns.Columns` of the one-off's results (or ``None``). The
+    batch adds to the settings ``units`` (the unit each column was typed in, ``""`` for
+    bare numbers), ``typed`` (the magnitudes as typed), ``cells`` (the cells as typed, for
+    warnings that quote them) and ``json``.
     """
 
     __slots__ = ("name", "summary", "help", "parameters", "words", "results", "compute",
