@@ -162,7 +162,8 @@ class _Writer:
         return failed, stopped
 
     def _block_warnings(self, blocks, lines) -> None:
-        """The CSV run's ``warning:`` lines of vectorised blocks (the same texts each row)."""
+        """The CSV run's ``warning:`` lines of vectorised blocks (the same texts each row, or
+        each row's own: ``row_warnings``), in row order."""
         if self.as_json or not any(block.warns() for block in blocks):
             return
         if len(blocks) == 1 and len(blocks[0].rows) == len(lines) and \

@@ -227,8 +227,9 @@ _SIGNED = ("x0", "v0")
 
 
 def columns(given: dict, settings: dict):
-    """The results of a block of batch rows, or ``None`` when not handled here (undamped
-    blocks: every row with the one-off's warning that the resonance results are unbounded).
+    """The results of a block of batch rows, or ``None`` when not handled here (a scene, a
+    result given to solve from, a form the one-off refuses). Undamped blocks carry the
+    one-off's warning that the resonance results are unbounded on every row.
 
     ``given`` maps the columns of the block (the record's input names: ``k``, ``m``,
     ``zeta``, ``F0``, ``Omega``, ...) to float64 SI arrays; ``settings`` holds ``scene``.
@@ -236,8 +237,9 @@ def columns(given: dict, settings: dict):
     columns go through :func:`dyncalc.physics.forced_columns.forced_columns`, the one-off's
     float operations on whole arrays with its exact roundings reproduced (bit for bit); the
     rows it leaves go through :func:`dyncalc.physics.forced.forced_response` on plain SI
-    floats (no parsing, no pint, no Result), the very function the one-off calls. A row is exact when every input is finite and positive (``x0``,
-    ``v0`` finite), it raises and warns nothing and every result is finite and non-zero.
+    floats (no parsing, no pint, no Result), the very function the one-off calls. A row is
+    exact when every input is finite and positive (``x0``, ``v0`` finite), it raises
+    nothing and every result is finite and non-zero.
     A result that exists on some rows only (``isolation``, ``bandwidth``, the peak) is NaN
     on the others: the batch splits a block by the results its rows have
     (``Columns.optional``). Damped rows beyond the peak's or the bandwidth's limits are the
