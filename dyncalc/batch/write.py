@@ -150,8 +150,9 @@ class _Writer:
             self.out.write("\n".join(shown))
         if not self.as_json:  # the warnings of the vectorised rows written
             for block in blocks:
-                tails: dict = {}
-                messages += [(i, f"warning: line {lines[i]}{tails.get(w) or _tail_of(tails, w)}")
+                tails: dict = {}  # (a block's rows share few texts: each made once)
+                messages += [(i, f"warning: line {lines[i]}"
+                                  f"{tails.get(w) or tails.setdefault(w, _tail(w))}")
                              for i, w in block.warned_rows()
                              if i < upto and texts[i] is not None
                              and not isinstance(texts[i], _Failure)]
@@ -318,12 +319,6 @@ def _warning_parts(block) -> list:
     texts = [made.get(w) or made.setdefault(w, json.dumps(list(w)))
              for w in block.row_warnings]
     return ['}, "warnings": ', texts, ', "extra": ']
-
-
-def _tail_of(tails: dict, warning: str) -> str:
-    """:func:`_tail` of ``warning``, kept in ``tails`` (a block's rows share few texts)."""
-    tails[warning] = made = _tail(warning)
-    return made
 
 
 def _extra_parts(extra) -> list:

@@ -160,16 +160,13 @@ def _heading_note(cells):
 def _notes(noted):
     """Each row's warnings (the one-off's order: the latitude's, then the heading's) of the
     rows kept, or ``None`` where none of them warns."""
-    def row_warnings(keep):
-        marks = [where[keep] for _note, where in noted]
-        if not any(m.any() for m in marks):
-            return None
-        out = [()] * len(keep)
-        for j in np.flatnonzero(np.logical_or.reduce(marks)).tolist():
-            i = int(keep[j])
-            out[j] = tuple(note(i) for (note, _where), m in zip(noted, marks) if m[j])
-        return out
-    return row_warnings
+    from ..physics.columns import warnings_of_rows
+
+    warned = np.logical_or.reduce([where for _note, where in noted])
+
+    def texts_of(i):
+        return tuple(note(i) for note, where in noted if where[i])
+    return lambda keep: warnings_of_rows(keep, warned, texts_of)
 
 
 def _direction_texts(v) -> list[str]:

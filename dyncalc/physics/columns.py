@@ -21,7 +21,8 @@ from typing import Any
 
 from ..records import Record
 
-__all__ = ["Columns", "TypedColumn", "column_kernel", "kernel_of", "text_column"]
+__all__ = ["Columns", "TypedColumn", "column_kernel", "kernel_of", "text_column",
+           "warnings_of_rows"]
 
 
 class Columns(Record):
@@ -104,6 +105,24 @@ def one_result(kernel, name: str) -> dict:
 
     Example: ``one_result(lambda **kw: None, "alpha") == {}``."""
     return {"only": name} if getattr(kernel, "takes_only", False) else {}
+
+
+def warnings_of_rows(rows, warned, texts_of):
+    """Each row's warnings for :attr:`Columns.row_warnings`: ``()`` for the rows of the index
+    array ``rows`` that ``warned`` (a boolean array over the block) does not mark,
+    ``texts_of(i)`` (a tuple of texts) for those it does; ``None`` where it marks none.
+
+    Example: ``warnings_of_rows(np.array([0, 2]), np.array([False, True, True]),
+    lambda i: (f"row {i}",)) == [(), ("row 2",)]``."""
+    from ..lazy import numpy as np
+
+    marks = warned[rows]
+    if not marks.any():
+        return None
+    out: list = [()] * len(rows)
+    for j in np.flatnonzero(marks).tolist():
+        out[j] = texts_of(int(rows[j]))
+    return out
 
 
 def text_column(n: int, text: str):

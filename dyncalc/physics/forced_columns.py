@@ -190,7 +190,7 @@ def forced_columns(given: dict, *, with_warnings: bool = False):
 
 
 def _NO_NOTES(rows, exact):
-    return None
+    return None  # (no row of the block warns)
 
 
 class _Limits:
@@ -207,6 +207,7 @@ class _Limits:
 def _beyond(kind, values, limits):
     """The results rows beyond the peak's and the bandwidth's limits lack, by name (a mask
     each), and the function of their warnings (the one-off's texts, its order)."""
+    from .columns import warnings_of_rows
     from .forced import half_power_warning, no_peak_warning
 
     no_peak, no_width = ~limits.has_peak, ~limits.has_width
@@ -216,20 +217,15 @@ def _beyond(kind, values, limits):
     zeta, omega, edge = values["zeta"], values["omega"], limits.edge
     lower = kind == "unbalance"  # the frequency it has: the lower one
 
+    def texts_of(i):
+        if no_peak[i]:
+            return (no_peak_warning(kind, float(zeta[i])),)
+        e = float(edge[i])
+        return (half_power_warning(float(zeta[i]), e if lower else None, None if lower else e,
+                                   float(omega[i])),)
+
     def notes(rows, exact):
-        warned = exact[rows] & (no_peak[rows] | half[rows])
-        if not warned.any():
-            return None
-        out: list = [()] * len(rows)
-        for j in np.flatnonzero(warned).tolist():
-            i = int(rows[j])
-            if no_peak[i]:
-                out[j] = (no_peak_warning(kind, float(zeta[i])),)
-            else:
-                e = float(edge[i])
-                out[j] = (half_power_warning(float(zeta[i]), e if lower else None,
-                                             None if lower else e, float(omega[i])),)
-        return out
+        return warnings_of_rows(rows, exact & (no_peak | half), texts_of)
     return absent, notes
 
 
