@@ -183,6 +183,12 @@ CASES = [
      lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
                 ((0.5, 20), (0.5, 20), (0.05, 1), (10, 1e4), (-0.1, 0.1), (-1, 1), (-1, 1),
                  (-2, 2))]),
+    # round 14: no equilibrium on the bar (closed forms outside the scene's domain)
+    ("eom disk-on-swinging-bar", ["eom", "--scene", "disk-on-swinging-bar"],
+     "m1 [kg],l [m],m2 [kg],J2 [kg*m^2],phi [rad],x [m],phi_dot [rad/s],x_dot [m/s]",
+     lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
+                ((0.5, 20), (0.2, 3), (0.1, 10), (0.001, 1), (-3, 3), (0, 3), (-2, 2),
+                 (-2, 2))]),
     ("eom bead-on-rotating-ring", ["eom", "--scene", "bead-on-rotating-ring"],
      "r [m],Omega [rad/s],theta [rad],theta_dot [rad/s]",
      lambda r: [f"{r.uniform(0.05, 1):.6g}", f"{r.uniform(1, 30):.6g}",

@@ -71,6 +71,8 @@ LIMITS = {
     "eom pendulum-on-sliding-block": [str(LIMIT / "eom_sliding.py")],
     # round 10: an equilibrium the values move, a unit on each matrix entry (issue 17)
     "eom block-disk-springs": [str(LIMIT / "eom_block_disk.py")],
+    # round 14: the two-coordinate table's closed forms outside the scene's domain
+    "eom disk-on-swinging-bar": [str(LIMIT / "eom_disk_bar.py")],
     # round 7: inverse rows on columns (issue 17's brief, rigidinv)
     "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
     # round 8: a bracketed inverse on columns (issue 17's brief, rigidbracket)

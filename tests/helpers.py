@@ -99,3 +99,43 @@ def count_block_rows(monkeypatch, module, name: str = "_solved") -> list:
 
     monkeypatch.setattr(module, name, counting)
     return counts
+
+
+def eom_batch(path, scene: str, as_json: bool, fast: bool, calls=None, about=None):
+    """``(status, stdout, stderr)`` of ``eom --scene SCENE --batch PATH`` in-process (``fast``:
+    the vectorised path allowed); ``calls`` (a list) gets the cells of every row the one-off
+    answers."""
+    import io
+
+    from dyncalc.batch import run_batch
+    from dyncalc.batch.rows import EomRows
+
+    spec = EomRows(scene=scene, about=about)
+    if calls is not None:
+        compute = spec.compute
+
+        def counted(texts, labels):
+            calls.append(texts)
+            return compute(texts, labels)
+        spec.compute = counted
+    out, err = io.StringIO(), io.StringIO()
+    status = run_batch(spec, str(path), as_json=as_json, on_error="skip", out=out, err=err,
+                       fast=fast)
+    return status, out.getvalue(), err.getvalue()
+
+
+def eom_batch_without_sympy(scene: str, path) -> str:
+    """The stdout of ``dyncalc eom --scene SCENE --batch PATH`` in a fresh interpreter,
+    after checking that it exits 0 and never imported sympy."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom dyncalc.cli import cli\n"
+            "try:\n    cli(['eom', '--scene', sys.argv[1], '--batch', sys.argv[2]])\n"
+            "except SystemExit as e:\n    assert not e.code, e.code\n"
+            "print('sympy' in sys.modules, file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code, scene, str(path)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.strip().splitlines()[-1] == "False"
+    return done.stdout

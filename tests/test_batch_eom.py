@@ -4,32 +4,17 @@ random rows with extremes, refusals and rows left to the one-off; and the number
 textbook pendulum (omega^2 = g/l, phi'' = -g sin(phi)/l, M = l^2, K = g l per unit mass)."""
 from __future__ import annotations
 
-import io
 import json
 import math
 import random
 
 import pytest
 
-from dyncalc.batch import run_batch
-from dyncalc.batch.rows import EomRows
+from helpers import eom_batch as _run
 
 G = 9.80665
 
 
-def _run(path, scene: str, as_json: bool, fast: bool, calls=None, about=None):
-    spec = EomRows(scene=scene, about=about)
-    if calls is not None:
-        compute = spec.compute
-
-        def counted(texts, labels):
-            calls.append(texts)
-            return compute(texts, labels)
-        spec.compute = counted
-    out, err = io.StringIO(), io.StringIO()
-    status = run_batch(spec, str(path), as_json=as_json, on_error="skip", out=out, err=err,
-                       fast=fast)
-    return status, out.getvalue(), err.getvalue()
 
 
 def _pendulum_file(tmp_path, seed: int, count: int = 40, extremes: bool = True):

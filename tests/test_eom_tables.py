@@ -9,8 +9,6 @@ import io
 import json
 import math
 import random
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -22,6 +20,7 @@ from dyncalc.commands.eom import eom
 from dyncalc.commands.eom_columns import derive_scene, light_probe
 from dyncalc.scenes.energies import energies
 from dyncalc.scenes.eom_tables import TABLES
+from helpers import eom_batch_without_sympy
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = sorted(TABLES)
@@ -139,15 +138,8 @@ def test_defaults_scene_batch_is_the_one_offs_byte_for_byte(tmp_path, as_json):
 def test_pendulum_batch_does_not_import_sympy(tmp_path):
     path = tmp_path / "p.csv"
     path.write_text("l [m],phi [rad],phi_dot [rad/s]\n1,0.1,0\n2,-0.3,1\n")
-    code = ("import sys\nfrom dyncalc.cli import cli\n"
-            "try:\n    cli(['eom', '--scene', 'pendulum', '--batch', sys.argv[1]])\n"
-            "except SystemExit as e:\n    assert not e.code, e.code\n"
-            "print('sympy' in sys.modules, file=sys.stderr)\n")
-    done = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True,
-                          text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    assert done.stderr.strip().splitlines()[-1] == "False"
-    lines = done.stdout.splitlines()
+    stdout = eom_batch_without_sympy("pendulum", path)
+    lines = stdout.splitlines()
     assert len(lines) == 3
     row = lines[2].split(",")
     assert float(row[7]) == pytest.approx(math.sqrt(9.80665 / 2.0), rel=1e-15)  # sqrt(g/l)

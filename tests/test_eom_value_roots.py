@@ -6,7 +6,6 @@ the numeric search they replace (a few ulp) and the textbook, the per-row canoni
 on them against the one-off byte for byte, rows it cannot take left to the one-off."""
 from __future__ import annotations
 
-import io
 import json
 import math
 import random
@@ -16,14 +15,13 @@ import sys
 import numpy as np
 import pytest
 
-from dyncalc.batch import run_batch
-from dyncalc.batch.rows import EomRows
 from dyncalc.commands.eom import eom, read
 from dyncalc.commands.eom_columns import scene_columns
 from dyncalc.commands.eom_results import _table_roots, derive_system
 from dyncalc.physics import lagrange_equations as lagrange
 from dyncalc.physics.eom_columns import equilibria_rows
 from dyncalc.scenes.eom_tables import TABLES
+from helpers import eom_batch as _run
 
 G = 9.80665
 
@@ -121,19 +119,6 @@ def test_equilibria_rows_follows_the_search_rules():
         assert row[:2].tolist() == [0.0, math.pi] and np.isnan(row[2:]).all()
 
 
-def _run(path, scene, as_json, fast, calls=None):
-    spec = EomRows(scene=scene)
-    if calls is not None:  # count the rows the one-off answers
-        compute = spec.compute
-
-        def counted(texts, labels):
-            calls.append(texts)
-            return compute(texts, labels)
-        spec.compute = counted
-    out, err = io.StringIO(), io.StringIO()
-    status = run_batch(spec, str(path), as_json=as_json, on_error="skip", out=out, err=err,
-                       fast=fast)
-    return status, out.getvalue(), err.getvalue()
 
 
 @pytest.mark.parametrize("as_json", [False, True])

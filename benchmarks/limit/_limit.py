@@ -131,3 +131,21 @@ def inverse_lines(df: pl.DataFrame, as_json: bool, scene: str, inputs: list, out
         for name in (unknown, goal):
             header[name] = f"{name}_result [{units[name]}]"
         csv_line(df, out, header)
+
+
+def two_lams(m00, m01, m11, k00, k01, k11, det_m, det_k):
+    """``(lo, hi)`` of ``det(K - lam M) = 0`` for 2x2 matrices, as dyncalc.physics.eom_pairs
+    computes them (the same float operations): both scaled by ``diag(M_ii^-1/2)``, the
+    symmetric reduction, the larger from mean + hypot (every mean here is >= 0), the other
+    from ``det K / det M`` over it (significands divided, exponents summed)."""
+    r0, r1 = np.sqrt(m00), np.sqrt(m11)
+    r = m01 / r0 / r1
+    s2 = det_m / m00 / m11
+    a00, a01, a11 = k00 / r0 / r0, k01 / r0 / r1, k11 / r1 / r1
+    c01 = (a01 - r * a00) / np.sqrt(s2)
+    c11 = (a11 - 2 * r * a01 + r * r * a00) / s2
+    hi = (a00 + c11) / 2 + np.hypot((a00 - c11) / 2, c01)
+    (ma, ea), (mb, eb), (mc, ec) = np.frexp(det_k), np.frexp(det_m), np.frexp(hi)
+    with np.errstate(all="ignore"):
+        lo = np.where(hi != 0, np.ldexp(ma / mb / mc, ea - eb - ec), 0.0)
+    return lo, hi

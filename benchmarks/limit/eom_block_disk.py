@@ -9,7 +9,7 @@ import json
 
 import numpy as np
 from _limit import (TWO_PI, arguments, csv_line, joined, json_input, json_lines, json_result,
-                    number, read, text)
+                    number, read, text, two_lams)
 
 path, as_json = arguments()
 df = read(path)
@@ -19,12 +19,7 @@ F = np.zeros(len(df))
 m00, m01, m11 = M + m, -m*r, (3/2)*m*r**2
 k00, k01, k11 = k, np.zeros(len(df)), k*r**2
 det_m, det_k = (1/2)*m*r**2*(3*M + m), k**2*r**2
-c00 = k00 / m00
-c01 = (k01 * m00 - k00 * m01) / (m00 * np.sqrt(det_m))
-c11 = (k11 * m00 * m00 - 2 * m01 * k01 * m00 + m01 * m01 * k00) / (m00 * det_m)
-mean, radius = (c00 + c11) / 2, np.hypot((c00 - c11) / 2, c01)
-hi = mean + radius          # (mean > 0 on every row here)
-lo = (det_k / det_m) / hi
+lo, hi = two_lams(m00, m01, m11, k00, k01, k11, det_m, det_k)  # (mean > 0 on every row)
 tol = 1e-10 * np.maximum(np.abs(lo), np.abs(hi))
 omega1 = np.where(lo > tol, np.sqrt(np.where(lo > tol, lo, 0.0)), 0.0)
 omega2 = np.where(hi > tol, np.sqrt(np.where(hi > tol, hi, 0.0)), 0.0)

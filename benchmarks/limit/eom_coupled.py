@@ -1,11 +1,11 @@
 """Limit: eom --scene coupled-blocks (m1, m2, k1, k2, k3, x1, x2, x1_dot, x2_dot): the equations
 as derived (the same texts every row), the one equilibrium x1 = x2 = 0, M = diag(m1, m2),
 K = [[k1 + k3, -k3], [-k3, k2 + k3]], the two frequencies by the symmetric reduction of
-``det(K - lam M) = 0`` (dyncalc.physics.eom_pairs: c = L^-1 K L^-T, lam = mean +- hypot,
-the smaller from det K / det M / the larger) and the accelerations."""
+``det(K - lam M) = 0`` (dyncalc.physics.eom_pairs: scaled by diag(M_ii^-1/2), c = L^-1 K L^-T,
+lam = mean +- hypot, the smaller from det K / det M / the larger) and the accelerations."""
 import numpy as np
 from _limit import (TWO_PI, arguments, csv_line, joined, json_lines, json_input, json_result,
-                    number, read, text)
+                    number, read, text, two_lams)
 
 path, as_json = arguments()
 df = read(path)
@@ -14,11 +14,8 @@ k1, k2, k3 = number(df, "k1 [N/m]"), number(df, "k2 [N/m]"), number(df, "k3 [N/m
 x1, x2 = number(df, "x1 [m]"), number(df, "x2 [m]")
 K00, K01, K11 = k1 + k3, -k3, k2 + k3
 det_m, det_k = m1 * m2, k1 * k2 + k1 * k3 + k2 * k3
-c00 = K00 / m1
-c01 = (K01 * m1 - K00 * 0.0) / (m1 * np.sqrt(det_m))
-c11 = (K11 * m1 * m1 - 2 * 0.0 * K01 * m1 + 0.0 * 0.0 * K00) / (m1 * det_m)
-big = (c00 + c11) / 2 + np.hypot((c00 - c11) / 2, c01)
-omega1, omega2 = np.sqrt(det_k / det_m / big), np.sqrt(big)
+lo, hi = two_lams(m1, 0.0, m2, K00, K01, K11, det_m, det_k)
+omega1, omega2 = np.sqrt(lo), np.sqrt(hi)
 a1 = (-k1 * x1 - k3 * (x1 - x2)) / m1
 a2 = (-k2 * x2 + k3 * (x1 - x2)) / m2
 EOM1, EOM2 = "x1'' = (-k1*x1 - k3*(x1 - x2))/m1", "x2'' = (-k2*x2 + k3*(x1 - x2))/m2"

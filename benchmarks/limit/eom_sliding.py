@@ -3,10 +3,10 @@ default): the equations as derived (the same texts every row), the equilibria ph
 (stable) and pi (unstable) with x free, M = [[m1 + m2, l m2], [l m2, l^2 m2]] and
 K = [[0, 0], [0, g l m2]] (a unit on each entry), omega_1 = 0 (x free) and omega_2 from the
 symmetric reduction of ``det(K - lam M) = 0`` as dyncalc.physics.eom_pairs writes it
-(here c00 = c01 = 0), and the two accelerations."""
+(here K_00 = K_01 = 0), and the two accelerations."""
 import numpy as np
 from _limit import (TWO_PI, arguments, csv_line, joined, json_input, json_lines, json_result,
-                    number, read, text)
+                    number, read, text, two_lams)
 
 G = 9.80665
 path, as_json = arguments()
@@ -15,8 +15,8 @@ m1, m2, l = number(df, "m1 [kg]"), number(df, "m2 [kg]"), number(df, "l [m]")
 phi, phi_dot = number(df, "phi [rad]"), number(df, "phi_dot [rad/s]")
 m00, m01, m11, k11 = m1 + m2, l * m2 * 1.0, l ** 2 * m2, G * l * m2 * 1.0
 det_m = l ** 2 * m2 * (m1 + m2 * 0.0)
-c11 = (k11 * m00 * m00 - 2 * m01 * 0.0 * m00 + m01 * m01 * 0.0) / (m00 * det_m)
-omega2 = np.sqrt(c11 / 2 + np.hypot(-c11 / 2, 0.0))
+_lo, hi = two_lams(m00, m01, m11, 0.0, 0.0, k11, det_m, 0.0)
+omega2 = np.sqrt(hi)
 s, c = np.sin(phi), np.cos(phi)
 ax = m2 * (phi_dot ** 2 * l + G * c) * s / (m1 + m2 * s ** 2)
 aphi = -(phi_dot ** 2 * l * m2 * c + G * (m1 + m2)) * s / (l * (m1 + m2 * s ** 2))

@@ -5,9 +5,11 @@ symbolic derivation at build time (tools/gen_eom_columns.py), the frequencies
 :func:`~dyncalc.physics.eom_pairs.two_frequencies`; the one-off evaluates the same, so both
 agree bit for bit by construction and the batch never imports sympy.
 
-Taken here: every parameter with a value, every row with the first row's stabilities, the
-state complete (both coordinates and rates) or absent, no ``--about``; the other rows run
-the one-off (:func:`pair_columns` leaves them).
+Taken here: every parameter with a value, every row whose equilibria in the scene's domain
+and their stabilities are the first such row's (one with a stable equilibrium, or one with
+none in the domain: ``disk-on-swinging-bar``'s ``no equilibrium``), the state complete (both
+coordinates and rates) or absent, no ``--about``; the other rows run the one-off
+(:func:`pair_columns` leaves them).
 """
 from __future__ import annotations
 
@@ -76,26 +78,44 @@ def pair_roots(system, angles) -> list[list] | None:
 
 
 def pair_root_forms(system, angles, params) -> list | None:
-    """The one equilibrium of a two-coordinate derivation as closed forms in ``params`` (a
-    force moves it: ``x = F/k``), or ``None``: several or none, a free coordinate, an angle
-    that depends on the values (its wrapping), or anything else ``pair_roots`` takes."""
+    """The equilibria of a two-coordinate derivation as closed forms in ``params``, each
+    ``[q1, q2]`` (a force moves it: ``x = F/k``; a bar's pivot: ``phi = pi/2, x = -m1 l /
+    (2 m2)``), angles wrapped to (-pi, pi] exactly (``3 pi/2`` is ``-pi/2``); or ``None``:
+    none, a free coordinate, an angle that depends on the values (its wrapping), or
+    anything else ``pair_roots`` takes. sympy's ``solve`` is asked even where
+    :func:`~dyncalc.physics.lagrange_equations.solvable` would not (this runs at build time;
+    tests/test_eom_tables2.py checks the forms against the numeric search)."""
     import sympy
 
     from ..physics import lagrange_equations as lagrange
 
     s = system.symbols
     equations = [e for e in system.static if e != 0]
-    if lagrange.free_coordinates(system) or not equations \
-            or not lagrange.solvable(equations, list(s.q)):
+    if lagrange.free_coordinates(system) or not equations:
         return None
-    found = lagrange.symbolic_equilibria(system)
-    if not found or len(found) != 1:
+    try:
+        found = sympy.solve(equations, list(s.q), dict=True, check=False, simplify=False)
+    except (NotImplementedError, ValueError, TypeError):
         return None
-    forms = [sympy.sympify(found[0].get(q, 0)) for q in s.q]
-    if any(f.free_symbols - set(params) or (a and f.free_symbols)
-           for f, a in zip(forms, angles)):
-        return None
-    return forms
+    forms: list[list] = []
+    for f in found:
+        root = [sympy.sympify(f.get(q, 0)) for q in s.q]
+        if any(v.free_symbols - set(params) or v.has(sympy.I, sympy.oo, sympy.zoo)
+               or (a and v.free_symbols) for v, a in zip(root, angles)):
+            return None
+        root = [_wrapped(v) if a else v for v, a in zip(root, angles)]
+        if root not in forms:
+            forms.append(root)
+    return forms or None
+
+
+def _wrapped(angle):
+    """A constant angle moved by whole turns into (-pi, pi], exactly (sympy)."""
+    import sympy
+
+    turns = round(float(angle) / (2 * math.pi))
+    out = sympy.nsimplify(angle - 2 * sympy.pi * turns) if turns else angle
+    return sympy.pi if out == -sympy.pi else out
 
 
 def derive_pair(scene: str):
@@ -113,7 +133,7 @@ def derive_pair(scene: str):
     from .eom_results import derive_system
 
     inputs = read({}, (), scene=scene)
-    if len(inputs.coords) != 2 or inputs.domain:
+    if len(inputs.coords) != 2:
         return None
     s, _exprs, system = derive_system(inputs)
     if system.forced or any(a.has(s.t) for a in system.accelerations):
@@ -132,6 +152,8 @@ def derive_pair(scene: str):
         return None
     at = [*s.q, *params]
 
+    domain, bounds = _domain_forms(inputs, s)
+
     def tidy(expr):
         return sympy.factor(sympy.simplify(expr))
     return {
@@ -141,7 +163,10 @@ def derive_pair(scene: str):
         "detK": sympy.lambdify(at, tidy(K.det()), "numpy"),
         "a": sympy.lambdify([*s.q, *s.qd, s.t, *params], list(system.accelerations), "numpy"),
         "roots": roots,
-        "R": None if forms is None else sympy.lambdify(params, forms, "numpy"),
+        "R": None if forms is None else sympy.lambdify(params, [v for root in forms
+                                                                for v in root], "numpy"),
+        "domain": domain,
+        "B": None if not domain else sympy.lambdify(params, bounds, "numpy"),
         "texts": tuple(f"{c}'' = {text_of(a)}" for c, a in zip(inputs.coords,
                                                                 system.accelerations)),
         "warnings": ("omega_i are the undamped natural frequencies (D is left out of them)",)
@@ -149,12 +174,34 @@ def derive_pair(scene: str):
     }
 
 
+def _domain_forms(inputs, s) -> tuple[tuple, list]:
+    """``(indices, ends)``: the coordinates the scene bounds and each one's lowest and
+    highest as sympy forms in the parameters (the domain's texts read as the one-off reads
+    them)."""
+    from ..physics.symbolic import to_sympy
+    from ..scenes.energies import energies
+    from ..units.expression import parse_expression
+
+    names = {p.name for p in energies(inputs.scene).params}
+    indices, ends = [], []
+    for c, pair in (inputs.domain or {}).items():
+        indices.append(inputs.coords.index(c))
+        ends += [to_sympy(parse_expression(text, names=names, free_names=False), s)
+                 for text in pair]
+    return tuple(indices), ends
+
+
 def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact, n: int):
     """The :class:`~dyncalc.physics.columns.Columns` of a two-coordinate scene of the table
     (``values``: every parameter's SI column; ``exact`` updated in place), or ``None``: the
-    first row has no stable equilibrium or the state is incomplete (the one-off answers)."""
+    first row has equilibria in the scene's domain but no stable one, or the state is
+    incomplete (the one-off answers).
+
+    A row's pattern is which equilibria lie in the domain and which of those are stable;
+    the rows of the first row's pattern are taken (that first row one with a stable
+    equilibrium, else one with none in the domain: the one-off's ``no equilibrium``)."""
     from ..physics.columns import Columns
-    from ..physics.eom_pairs import PairPlan, finite_rows, two_frequencies
+    from ..physics.eom_pairs import PairPlan, frequency_rows, within
     from .eom_results import _equilibria_text
 
     plan, coords = PairPlan(entry), entry["coords"]
@@ -162,40 +209,69 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     rates = [c + "_dot" for c in coords]
     if state and any(k not in arrays for k in (*coords, *rates)):
         return None  # the one-off asks for the rest of the state
-    moved = entry["roots"] is None  # (the one equilibrium of each row, its closed forms)
+    moved = entry["roots"] is None  # (the equilibria of each row, their closed forms)
     with np.errstate(all="ignore"):
+        if moved:
+            rows, distinct = plan.root_rows(values, n)
+            exact &= distinct
+        else:
+            rows = [[np.full(n, 0.0 if v is None else v) for v in root]
+                    for root in entry["roots"]]
+        bounds = plan.bound_rows(values, n)
+        for lo, hi in bounds.values():
+            exact &= np.isfinite(lo) & np.isfinite(hi)
+        inside = [within(q, bounds) for q in rows]
         stable, at = [], []
-        rows = [plan.root_rows(values, n)] if moved else [
-            [np.full(n, 0.0 if v is None else v) for v in root] for root in entry["roots"]]
-        for q in rows:
+        for q, there in zip(rows, inside):
             exact &= np.isfinite(q[0]) & np.isfinite(q[1])
+            if not (there & exact).any():  # (off the domain: never linearised)
+                stable.append(np.zeros(n, dtype=bool))
+                at.append(None)
+                continue
             M, K, dm, dk = plan.matrices(*q, values)
-            stable.append(two_frequencies(M, K, dm, dk)[1])
-            exact &= finite_rows(M, K, dm, dk)  # (elsewhere the one-off goes symbolic)
-            at.append((M, K, dm, dk))
-        settled = exact & np.logical_or.reduce(stable)  # (a row with a stable equilibrium)
-        first = int(np.argmax(settled)) if settled.any() else 0
-        pattern = [bool(s[first]) for s in stable]
-        for s, want in zip(stable, pattern):
-            exact &= s == want
-        if not any(pattern):
+            omega, steady, finite = frequency_rows(M, K, dm, dk)
+            stable.append(steady)
+            exact &= ~there | finite  # (elsewhere the one-off goes symbolic)
+            at.append((M, K, omega))
+        settled = np.logical_or.reduce([i & s for i, s in zip(inside, stable)])
+        candidates = exact & (settled | ~np.logical_or.reduce(inside))
+        if not candidates.any():
             return None  # the one-off linearises about an unstable one: warnings, no omega
-        k = pattern.index(True)
-        M, K, dm, dk = at[k]
-        omega, _stable = two_frequencies(M, K, dm, dk)
-        exact &= np.isfinite(omega).all(axis=1)
+        first = int(np.argmax(exact & settled)) if (exact & settled).any() \
+            else int(np.argmax(candidates))
+        kept = [bool(i[first]) for i in inside]
+        pattern = [bool(s[first]) for s in stable]
+        for i, s, want_in, want in zip(inside, stable, kept, pattern):
+            exact &= (i == want_in) & (~i | (s == want))
+        kept_roots = [k for k, want_in in enumerate(kept) if want_in]
         out = {f"eom_{i}": text_column(n, t)
                for i, t in enumerate(entry["texts"], start=1)}
-        if moved:
-            out["equilibria"], extras = _moved_texts(coords, rows[0], entry)
+        if not kept_roots:
+            out["equilibria"] = text_column(n, "none")
+            warnings = ("no equilibrium: the system is never at rest at these values",)
+            method = "symbolic"
+            extras = lambda _keep: ['{"equilibria": []}']  # noqa: E731
         else:
-            chosen = entry["roots"][k]
-            text = _equilibria_text(list(coords), [list(r) for r in entry["roots"]], pattern,
-                                    True, {})
-            out["equilibria"] = text_column(n, text)
-        out["mass_matrix"], out["stiffness_matrix"] = M, K
-        out["omega_1"], out["omega_2"] = omega[:, 0], omega[:, 1]
-        out["f_1"], out["f_2"] = omega[:, 0] / (2 * math.pi), omega[:, 1] / (2 * math.pi)
+            k = next(k for k in kept_roots if pattern[k])
+            M, K, omega = at[k]
+            exact &= np.isfinite(omega).all(axis=1)
+            marks = [pattern[k] for k in kept_roots]
+            if moved:
+                out["equilibria"], extras = _moved_texts(
+                    coords, [rows[j] for j in kept_roots], marks, kept_roots.index(k), entry)
+            else:
+                points = [list(entry["roots"][j]) for j in kept_roots]
+                out["equilibria"] = text_column(n, _equilibria_text(list(coords), points,
+                                                                    marks, True, {}))
+                extra = {"equilibria": [{**dict(zip(coords, r)), "stable": m}
+                                        for r, m in zip(points, marks)],
+                         "about": dict(zip(coords, entry["roots"][k]))}
+                extra.update(_units_extra(entry))
+                extras = lambda _keep, line=json.dumps(extra): [line]  # noqa: E731
+            out["mass_matrix"], out["stiffness_matrix"] = M, K
+            out["omega_1"], out["omega_2"] = omega[:, 0], omega[:, 1]
+            out["f_1"], out["f_2"] = omega[:, 0] / (2 * math.pi), omega[:, 1] / (2 * math.pi)
+            warnings, method = entry["warnings"], "symbolic + numeric equilibria"
         if state:
             columns = [np.asarray(arrays[k], dtype=float) for k in (*coords, *rates)]
             accs = plan.accelerations(*columns, np.zeros(n), values)
@@ -204,16 +280,10 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
                 exact &= np.isfinite(acc)
             for column in columns:
                 exact &= np.isfinite(column)
-    if not moved:
-        extra = {"equilibria": [{**dict(zip(coords, r)), "stable": s}
-                                for r, s in zip(entry["roots"], pattern)],
-                 "about": dict(zip(coords, chosen))}
-        extra.update(_units_extra(entry))
-        extras = lambda _keep, line=json.dumps(extra): [line]  # noqa: E731
-    warnings = entry["warnings"]
-    return Columns(out, exact, model="lagrange", method="symbolic + numeric equilibria",
-                   warnings=warnings, warned=np.ones(n, dtype=bool) if warnings else None,
-                   extras=extras)
+    if any(name not in entry["dims"] for name in out if not name.startswith(("eom_", "equi"))):
+        return None  # (results the table has no units for: the one-off's)
+    return Columns(out, exact, model="lagrange", method=method, warnings=warnings,
+                   warned=np.ones(n, dtype=bool) if warnings else None, extras=extras)
 
 
 def _units_extra(entry) -> dict:
@@ -224,20 +294,28 @@ def _units_extra(entry) -> dict:
                              for name, units in entry["matrix_units"].items()}}
 
 
-def _moved_texts(coords, q, entry):
-    """``(texts, extras)`` of the one stable equilibrium each row has (``q``: its two
-    columns): the equilibria text one format call a row, and the JSON ``extra`` (made for
-    JSON only, for the rows kept)."""
+def _moved_texts(coords, roots, marks, chosen: int, entry):
+    """``(texts, extras)`` of the equilibria each row has in the domain (``roots``: each
+    one's two columns, ``marks`` their stabilities, ``chosen`` the one linearised about):
+    the equilibria text one format call a row, and the JSON ``extra`` (made for JSON only,
+    for the rows kept)."""
     names = list(coords)
-    template = ", ".join(f"{c}={{:.6g}}" for c in names) + " (stable)"
-    texts = np.empty(len(q[0]), dtype=object)
-    texts[:] = list(map(template.format, q[0].tolist(), q[1].tolist()))
+    words = ["stable" if m else "unstable" for m in marks]
+    template = "; ".join(", ".join(f"{c}={{:.6g}}" for c in names) + f" ({w})" for w in words)
+    flat = [col.tolist() for root in roots for col in root]
+    texts = np.empty(len(roots[0][0]), dtype=object)
+    texts[:] = list(map(template.format, *flat))
     tail = json.dumps(_units_extra(entry))[1:-1]
     tail = "}" if not tail else ", " + tail + "}"
+    first, second = json.dumps(names[0]), json.dumps(names[1])
 
     def extras(keep):
-        a, b = ([repr(v) for v in col[keep].tolist()] for col in q)
-        first, second = json.dumps(names[0]), json.dumps(names[1])
-        return [f'{{"equilibria": [{{{first}: ', a, f", {second}: ", b,
-                f', "stable": true}}], "about": {{{first}: ', a, f", {second}: ", b, "}" + tail]
+        cols = [[repr(v) for v in col[keep].tolist()] for root in roots for col in root]
+        parts: list = ['{"equilibria": [']
+        for k, mark in enumerate(marks):
+            parts += [("" if k == 0 else ", ") + f"{{{first}: ", cols[2 * k],
+                      f", {second}: ", cols[2 * k + 1], f', "stable": {json.dumps(mark)}}}']
+        parts += [f'], "about": {{{first}: ', cols[2 * chosen], f", {second}: ",
+                  cols[2 * chosen + 1], "}" + tail]
+        return parts
     return texts, extras

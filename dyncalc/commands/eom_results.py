@@ -298,18 +298,33 @@ def _pair_plan(inputs):
         return None
     import numpy as np
 
-    from ..physics.eom_pairs import PairPlan, finite_rows
+    from ..physics.eom_pairs import PairPlan, finite_rows, within
 
     plan, row = PairPlan(entry), _one_row(inputs.values)
     with np.errstate(all="ignore"):
         roots = [[0.0 if v is None else float(v) for v in r] for r in entry["roots"]] \
-            if entry["roots"] is not None else [[float(q[0]) for q in plan.root_rows(row, 1)]]
+            if entry["roots"] is not None else _form_roots(plan, row)
+        bounds = plan.bound_rows(row, 1)
         for root in roots:
             if not all(map(math.isfinite, root)):
                 return None
-            if not finite_rows(*plan.matrices(*(np.array([v]) for v in root), row))[0]:
-                return None
+            at = [np.array([v]) for v in root]
+            if within(at, bounds)[0] and not finite_rows(*plan.matrices(*at, row))[0]:
+                return None  # (an equilibrium off the scene's domain is never linearised)
     return plan
+
+
+def _form_roots(plan, row: dict) -> list[list[float]]:
+    """The equilibria of one row from the table's closed forms
+    (:meth:`~dyncalc.physics.eom_pairs.PairPlan.root_rows`, the batch's too), in its order,
+    each that coincides with an earlier one left out (as the numeric search merges them)."""
+    found: list[list[float]] = []
+    for root in plan.root_rows(row, 1)[0]:
+        point = [float(q[0]) for q in root]
+        if not any(all(abs(a - b) <= 1e-7 * max(1.0, abs(a)) for a, b in zip(other, point))
+                   for other in found):
+            found.append(point)
+    return found
 
 
 def constant_roots(system, angle: bool):
@@ -365,7 +380,7 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
         roots = constant_roots(system, angles[0]) if plan is not None else None
         closed = _table_roots(inputs) if plan is not None and roots is None else None
         if pair is not None and pair.roots is None:  # the table's closed forms, as batch
-            found = [[float(q[0]) for q in pair.root_rows(_one_row(inputs.values), 1)]]
+            found = _form_roots(pair, _one_row(inputs.values))
         elif pair is not None:  # the generated table's roots, as batch takes them: no search
             found = [[0.0 if v is None else v for v in r] for r in pair.roots]
         elif roots is not None:  # sympy's roots, as batch takes them: no search
@@ -375,7 +390,9 @@ def _equilibria(system, values, angles, inputs, numeric, plan=None):
         else:
             found = lagrange.numeric_equilibria(system, values, angles,
                                                  [scale] * len(s.q))
-        bounds = _bounds(inputs, values)
+        bounds = _bounds(inputs, values) if pair is None or not pair.domain else {
+            i: (float(lo[0]), float(hi[0]))  # (the table's, as batch takes them)
+            for i, (lo, hi) in pair.bound_rows(_one_row(inputs.values), 1).items()}
         for p in found:
             if any(not lo - 1e-9 <= p[i] <= hi + 1e-9 for i, (lo, hi) in bounds.items()):
                 continue

@@ -247,7 +247,12 @@ def _periodic(equations, q) -> bool:
 
 def frequencies(M, K) -> tuple[list[float], bool]:
     """The natural angular frequencies (ascending) of numeric ``M``, ``K``, and whether the
-    equilibrium is stable (no negative eigenvalue of ``M^-1 K``)."""
+    equilibrium is stable (no negative eigenvalue of ``M^-1 K``).
+
+    Both matrices are first scaled by ``D = diag(M_ii^-1/2)`` (``D K D``, ``D M D``: the
+    same eigenvalues, a unit diagonal of ``M``), so entries far apart in size (a mass of
+    1e300 kg beside one of 1e5) do not overflow the eigenvalue solver; an eigenvalue that is
+    still not finite is refused rather than read as stable."""
     from scipy.linalg import eigvals
 
     Mn = np.array(M.tolist(), dtype=float)
@@ -255,7 +260,18 @@ def frequencies(M, K) -> tuple[list[float], bool]:
     if not (np.isfinite(Mn).all() and np.isfinite(Kn).all()):
         raise PhysicsError("the linearised mass or stiffness matrix overflows at these values "
                            "(an entry beyond 1.8e308 in SI units)")
-    lam = eigvals(Kn, Mn)
+    diagonal = np.diag(Mn)
+    if (diagonal > 0).all():
+        with np.errstate(all="ignore"):
+            d = 1 / np.sqrt(diagonal)
+            Ms, Ks = Mn * d[:, None] * d[None, :], Kn * d[:, None] * d[None, :]
+        if np.isfinite(Ms).all() and np.isfinite(Ks).all():  # (else as given)
+            Mn, Kn = Ms, Ks
+    with np.errstate(all="ignore"):  # (an overflow is refused just below)
+        lam = eigvals(Kn, Mn)
+    if not np.isfinite(lam).all():
+        raise PhysicsError("the natural frequencies overflow at these values (an eigenvalue "
+                           "of M^-1 K beyond 1.8e308 in SI units)")
     lam = np.sort(lam.real)
     scale = float(np.max(np.abs(lam))) if lam.size else 0.0
     tol = 1e-10 * scale
