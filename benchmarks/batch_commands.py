@@ -189,6 +189,11 @@ CASES = [
      lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
                 ((0.5, 20), (0.2, 3), (0.1, 10), (0.001, 1), (-3, 3), (0, 3), (-2, 2),
                  (-2, 2))]),
+    # round 14: equilibria from roots written by hand (b = 0), in a domain
+    ("eom spring-coupled-pendulums", ["eom", "--scene", "spring-coupled-pendulums"],
+     "m [kg],l [m],k [N/m],phi1 [rad],phi2 [rad],phi1_dot [rad/s],phi2_dot [rad/s]",
+     lambda r: [f"{r.uniform(lo, hi):.6g}" for lo, hi in
+                ((0.5, 5), (0.2, 2), (200, 1e4), (-1, 1), (0, 1.5), (-2, 2), (-2, 2))]),
     ("eom bead-on-rotating-ring", ["eom", "--scene", "bead-on-rotating-ring"],
      "r [m],Omega [rad/s],theta [rad],theta_dot [rad/s]",
      lambda r: [f"{r.uniform(0.05, 1):.6g}", f"{r.uniform(1, 30):.6g}",

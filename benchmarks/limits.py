@@ -73,6 +73,7 @@ LIMITS = {
     "eom block-disk-springs": [str(LIMIT / "eom_block_disk.py")],
     # round 14: the two-coordinate table's closed forms outside the scene's domain
     "eom disk-on-swinging-bar": [str(LIMIT / "eom_disk_bar.py")],
+    "eom spring-coupled-pendulums": [str(LIMIT / "eom_spring_pendulums.py")],
     # round 7: inverse rows on columns (issue 17's brief, rigidinv)
     "coriolis Earth inverse vr": [str(LIMIT / "coriolis_earth_inverse.py")],
     # round 8: a bracketed inverse on columns (issue 17's brief, rigidbracket)

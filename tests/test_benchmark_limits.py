@@ -40,7 +40,7 @@ def test_every_command_of_the_brief_has_a_limit_script():
                       "forced-response total response", "forced-response undamped",
                       "eom pendulum", "eom bead-on-rotating-ring", "eom coupled-blocks",
                       "eom pendulum-on-sliding-block", "eom block-disk-springs",
-                      "eom disk-on-swinging-bar",
+                      "eom disk-on-swinging-bar", "eom spring-coupled-pendulums",
                       "rigid-body drum-two-blocks",
                       "rigid-body angled-bar-on-shaft", "coriolis Earth inverse vr",
                       "rigid-body inverse", "rigid-body drum J_A inverse",

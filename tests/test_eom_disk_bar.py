@@ -45,8 +45,8 @@ def test_table_accelerations_and_roots_are_the_hand_derivations():
     want = _by_hand(m1, l, m2, J2, g, phi, x, phi_dot, x_dot)
     for a, b in zip(got, want):
         assert np.allclose(a, b, rtol=1e-12, atol=1e-12 * np.abs(b).max())
-    roots, distinct = plan.root_rows(values, n)
-    assert distinct.all() and len(roots) == 2
+    roots, distinct, covered = plan.root_rows(values, n)
+    assert distinct.all() and covered.all() and len(roots) == 2
     assert (roots[0][0] == math.pi / 2).all() and (roots[1][0] == -math.pi / 2).all()
     for root in roots:
         assert np.allclose(root[1], -m1 * l / (2 * m2), rtol=1e-15, atol=0)

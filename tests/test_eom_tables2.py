@@ -23,6 +23,7 @@ from dyncalc.batch.rows import EomRows
 from dyncalc.commands.eom_pairs import derive_pair
 from dyncalc.physics import lagrange_equations as lagrange
 from dyncalc.physics.eom_pairs import PairPlan, finite_rows, two_frequencies
+from dyncalc.physics.pendulum_pair_roots import spring_pendulum_roots
 from dyncalc.scenes.eom_tables2 import TABLES2
 from helpers import eom_batch as _run, eom_batch_without_sympy
 
@@ -46,7 +47,9 @@ def test_committed_table_is_what_sympy_derives(gen):
 
 def test_the_table_holds_the_two_coordinate_scenes_it_can():
     assert SCENES == ["block-disk-springs", "coupled-blocks", "disk-on-swinging-bar",
-                      "pendulum-on-sliding-block", "wheel-on-moving-beam"]
+                      "pendulum-on-sliding-block", "spring-coupled-pendulums",
+                      "wheel-on-moving-beam"]
+    assert TABLES2["spring-coupled-pendulums"]["Rc"] is spring_pendulum_roots  # (by hand)
     assert TABLES2["block-disk-springs"]["roots"] is None  # x = F/k: the closed form R
     assert TABLES2["wheel-on-moving-beam"]["roots"] == ((0.0, None),)  # y free
     # phi = +-pi/2, x = -m1 l / (2 m2) (closed forms), x bounded to [0, l]
@@ -88,6 +91,7 @@ def test_generated_functions_equal_lambdify_to_the_bit(scene):
             if d[part] is not None:
                 assert all(_same(a, b, (n,)) for a, b in zip(d[part](*p), entry[part](*p)))
         assert d["domain"] == entry.get("domain", ())
+        assert d["Rc"] is entry.get("Rc")
 
 
 @pytest.mark.parametrize("scene", SCENES)
@@ -101,15 +105,24 @@ def test_table_roots_are_the_numeric_searchs(scene):
     free = set(lagrange.free_coordinates(system))
     for _ in range(3):
         values = {s.param(n): rng.uniform(0.2, 5.0) for n in TABLES2[scene]["names"]}
+        if TABLES2[scene].get("Rc") is not None:
+            values[s.param("b")] = 0.0  # (what the hand-written roots cover)
         found = lagrange.numeric_equilibria(system, values, list(TABLES2[scene]["angles"]),
                                             [1.0, 1.0])
         got = [tuple(None if i in free else v for i, v in enumerate(p)) for p in found]
         if TABLES2[scene]["roots"] is None:  # the closed forms: the search's, to its tolerance
             plan = PairPlan(TABLES2[scene])
             row = {str(k): np.array([v]) for k, v in values.items()}
-            roots, distinct = plan.root_rows(row, 1)
-            want = [tuple(float(v[0]) for v in root) for root in roots]
-            assert distinct[0] and len(got) == len(want), (got, want)
+            roots, distinct, covered = plan.root_rows(row, 1)
+            want = [tuple(float(v[0]) for v in root) for root in roots
+                    if not math.isnan(root[0][0])]
+            if plan.domain:  # (the hand-written roots give those in the domain only)
+                bounds = {i: (float(lo[0]), float(hi[0]))
+                          for i, (lo, hi) in plan.bound_rows(row, 1).items()}
+                got, want = ([p for p in points if all(lo - 1e-9 <= p[i] <= hi + 1e-9
+                                                      for i, (lo, hi) in bounds.items())]
+                             for points in (got, want))
+            assert distinct[0] and covered[0] and len(got) == len(want), (got, want)
             for g, w in zip(got, want):  # (the same order: the search's)
                 assert g == pytest.approx(w, rel=1e-9, abs=1e-12)
             continue

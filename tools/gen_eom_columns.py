@@ -174,7 +174,7 @@ def _dims(name, words, wanted, mixed=()):
 
 def _pair_scene(name: str):
     """``(functions source, table entry source)`` of one two-coordinate scene, or ``None``."""
-    from dyncalc.commands.eom_pairs import derive_pair
+    from dyncalc.commands.eom_pairs import HAND_ROOTS, derive_pair
     from dyncalc.scenes.energies import energies
 
     d = derive_pair(name)
@@ -187,6 +187,11 @@ def _pair_scene(name: str):
     parts = ["M", "K", "detM", "detK", "a"] + [part for part in ("R", "B")
                                                 if d[part] is not None]
     sources = [function_source(d[part], f"_{key}_{part}", rename) for part in parts]
+    if d["Rc"] is not None:  # (written by hand: imported, see eom_pairs.HAND_ROOTS)
+        module, function = HAND_ROOTS[name]
+        relative = ".." + module.removeprefix("dyncalc.")
+        sources.append(f"from {relative} import {function} as _{key}_Rc")
+        parts.append("Rc")
 
     def words(value):
         state = [f"{c}=0.0" for c in d["coords"]] + [f"{c}_dot=0.0" for c in d["coords"]]
@@ -223,7 +228,10 @@ def _module(header: str, table: str, scene, doc: str) -> str:
             functions.append(made[0])
             entries.append(made[1])
     numpy = "from ..lazy import numpy as np\n" if "np." in "".join(functions) else ""
-    header = header.replace("NUMPY\n", numpy)
+    imports = [line for f in functions for line in f.split("\n") if line.startswith("from ")]
+    functions = [text for f in functions if (text := "\n".join(
+        line for line in f.split("\n") if not line.startswith("from ")).strip("\n"))]
+    header = header.replace("NUMPY\n", numpy + "".join(line + "\n" for line in imports))
     return (header + "\n\n" + "\n\n\n".join(functions) + "\n\n\n"
             + f"#: {doc}\n{table}: dict[str, dict] = {{\n" + "\n".join(entries) + "\n}\n")
 

@@ -13,13 +13,22 @@ coordinates and rates) or absent, no ``--about``; the other rows run the one-off
 """
 from __future__ import annotations
 
+import importlib
 import json
 import math
 
 from ..lazy import numpy as np
 from ..physics.columns import text_column
 
-__all__ = ["pair_entry", "derive_pair", "pair_roots", "pair_root_forms", "pair_columns"]
+__all__ = ["pair_entry", "derive_pair", "pair_roots", "pair_root_forms", "pair_columns",
+           "HAND_ROOTS"]
+
+#: Scenes whose equilibria sympy gives only as a quartic's roots -> (module, function) of a
+#: root function written by hand (``Rc(*p)``: the forms and the rows they cover), which the
+#: generated table imports.
+HAND_ROOTS = {
+    "spring-coupled-pendulums": ("dyncalc.physics.pendulum_pair_roots", "spring_pendulum_roots"),
+}
 
 
 def pair_entry(scene: str | None) -> dict | None:
@@ -148,7 +157,8 @@ def derive_pair(scene: str):
     angles = [c in inputs.angles for c in inputs.coords]
     roots = pair_roots(system, angles)
     forms = None if roots is not None else pair_root_forms(system, angles, params)
-    if roots is None and forms is None:
+    hand = HAND_ROOTS.get(scene) if roots is None and forms is None else None
+    if roots is None and forms is None and hand is None:
         return None
     at = [*s.q, *params]
 
@@ -165,6 +175,7 @@ def derive_pair(scene: str):
         "roots": roots,
         "R": None if forms is None else sympy.lambdify(params, [v for root in forms
                                                                 for v in root], "numpy"),
+        "Rc": None if hand is None else getattr(importlib.import_module(hand[0]), hand[1]),
         "domain": domain,
         "B": None if not domain else sympy.lambdify(params, bounds, "numpy"),
         "texts": tuple(f"{c}'' = {text_of(a)}" for c, a in zip(inputs.coords,
@@ -212,8 +223,8 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     moved = entry["roots"] is None  # (the equilibria of each row, their closed forms)
     with np.errstate(all="ignore"):
         if moved:
-            rows, distinct = plan.root_rows(values, n)
-            exact &= distinct
+            rows, distinct, covered = plan.root_rows(values, n)
+            exact &= distinct & covered
         else:
             rows = [[np.full(n, 0.0 if v is None else v) for v in root]
                     for root in entry["roots"]]
@@ -223,7 +234,8 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
         inside = [within(q, bounds) for q in rows]
         stable, at = [], []
         for q, there in zip(rows, inside):
-            exact &= np.isfinite(q[0]) & np.isfinite(q[1])
+            missing = np.isnan(q[0]) & np.isnan(q[1])  # (a row without this one)
+            exact &= missing | (np.isfinite(q[0]) & np.isfinite(q[1]))
             if not (there & exact).any():  # (off the domain: never linearised)
                 stable.append(np.zeros(n, dtype=bool))
                 at.append(None)
@@ -298,19 +310,27 @@ def _moved_texts(coords, roots, marks, chosen: int, entry):
     """``(texts, extras)`` of the equilibria each row has in the domain (``roots``: each
     one's two columns, ``marks`` their stabilities, ``chosen`` the one linearised about):
     the equilibria text one format call a row, and the JSON ``extra`` (made for JSON only,
-    for the rows kept)."""
+    for the rows kept). A coordinate the same on every row (``pi/2``) is written once into
+    the template, not formatted a row at a time."""
     names = list(coords)
+    columns = [col for root in roots for col in root]
+    same = [bool((col.view(np.int64) == col.view(np.int64)[0]).all()) for col in columns]
     words = ["stable" if m else "unstable" for m in marks]
-    template = "; ".join(", ".join(f"{c}={{:.6g}}" for c in names) + f" ({w})" for w in words)
-    flat = [col.tolist() for root in roots for col in root]
-    texts = np.empty(len(roots[0][0]), dtype=object)
-    texts[:] = list(map(template.format, *flat))
+    template = "; ".join(", ".join(
+        f"{c}={columns[2 * k + i][0]:.6g}" if same[2 * k + i] else f"{c}={{:.6g}}"
+        for i, c in enumerate(names)) + f" ({w})" for k, w in enumerate(words))
+    varying = [col.tolist() for col, fixed in zip(columns, same) if not fixed]
+    n = len(columns[0])
+    texts = text_column(n, template) if not varying else np.empty(n, dtype=object)
+    if varying:
+        texts[:] = list(map(template.format, *varying))
     tail = json.dumps(_units_extra(entry))[1:-1]
     tail = "}" if not tail else ", " + tail + "}"
     first, second = json.dumps(names[0]), json.dumps(names[1])
 
     def extras(keep):
-        cols = [[repr(v) for v in col[keep].tolist()] for root in roots for col in root]
+        cols = [repr(float(col[0])) if fixed else [repr(v) for v in col[keep].tolist()]
+                for col, fixed in zip(columns, same)]
         parts: list = ['{"equilibria": [']
         for k, mark in enumerate(marks):
             parts += [("" if k == 0 else ", ") + f"{{{first}: ", cols[2 * k],

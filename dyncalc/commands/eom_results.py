@@ -304,6 +304,8 @@ def _pair_plan(inputs):
     with np.errstate(all="ignore"):
         roots = [[0.0 if v is None else float(v) for v in r] for r in entry["roots"]] \
             if entry["roots"] is not None else _form_roots(plan, row)
+        if roots is None:
+            return None  # (values the forms do not cover: the numeric search)
         bounds = plan.bound_rows(row, 1)
         for root in roots:
             if not all(map(math.isfinite, root)):
@@ -314,13 +316,19 @@ def _pair_plan(inputs):
     return plan
 
 
-def _form_roots(plan, row: dict) -> list[list[float]]:
+def _form_roots(plan, row: dict) -> list[list[float]] | None:
     """The equilibria of one row from the table's closed forms
     (:meth:`~dyncalc.physics.eom_pairs.PairPlan.root_rows`, the batch's too), in its order,
-    each that coincides with an earlier one left out (as the numeric search merges them)."""
+    each missing (NaN) or coinciding with an earlier one left out (as the numeric search
+    merges them); ``None`` where the forms are not all of them (the search answers)."""
+    roots, _distinct, covered = plan.root_rows(row, 1)
+    if not covered[0]:
+        return None
     found: list[list[float]] = []
-    for root in plan.root_rows(row, 1)[0]:
+    for root in roots:
         point = [float(q[0]) for q in root]
+        if all(map(math.isnan, point)):
+            continue
         if not any(all(abs(a - b) <= 1e-7 * max(1.0, abs(a)) for a, b in zip(other, point))
                    for other in found):
             found.append(point)

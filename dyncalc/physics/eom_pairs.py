@@ -43,15 +43,18 @@ class PairPlan:
     entries, row by row), ``detM`` and ``detK`` (the same arguments), ``a(q1, q2, q1',
     q2', t, *p)`` (the two accelerations), ``roots`` (the equilibria, ``None`` for a free
     coordinate) or, where the values move them, ``root_forms`` (``R(*p)``: the two
-    coordinates of each equilibrium in turn), and ``domain`` (the indices of the coordinates
-    the scene bounds) with ``bound_forms`` (``B(*p)``: each one's lowest and highest)."""
+    coordinates of each equilibrium in turn; or a hand-written ``Rc(*p)`` giving them and
+    the rows where they are all, ``covered``), and ``domain`` (the indices of the
+    coordinates the scene bounds) with ``bound_forms`` (``B(*p)``: each one's lowest and
+    highest)."""
 
     __slots__ = ("names", "mass", "stiffness", "det_mass", "det_stiffness", "acceleration",
-                 "roots", "root_forms", "domain", "bound_forms")
+                 "roots", "root_forms", "covers", "domain", "bound_forms")
 
     def __init__(self, entry: dict):
         self.names, self.roots = list(entry["names"]), entry["roots"]
-        self.root_forms = entry.get("R")
+        self.covers = entry.get("Rc") is not None
+        self.root_forms = entry.get("Rc") if self.covers else entry.get("R")
         self.domain, self.bound_forms = entry.get("domain", ()), entry.get("B")
         self.mass, self.stiffness = entry["M"], entry["K"]
         self.det_mass, self.det_stiffness = entry["detM"], entry["detK"]
@@ -62,27 +65,34 @@ class PairPlan:
 
     def matrices(self, q1, q2, params: dict):
         """``(M, K, detM, detK)`` at ``(q1, q2)`` (arrays of ``n``): ``(n, 2, 2)`` matrices
-        and ``(n,)`` determinants."""
+        and ``(n,)`` determinants. A coordinate the same on every row (an equilibrium at
+        ``pi/2``) is passed as one element, so its sines and cosines are taken once (the
+        same ufunc loop on the same element as every row's: the same bits)."""
         args = self._args(params)
         n = np.shape(q1)
+        q1, q2 = (q[:1] if _constant(q) else q for q in (q1, q2))
         M = np.stack([_array(v, n) for v in self.mass(q1, q2, *args)], axis=-1)
         K = np.stack([_array(v, n) for v in self.stiffness(q1, q2, *args)], axis=-1)
         return (M.reshape(n + (2, 2)), K.reshape(n + (2, 2)),
                 _array(self.det_mass(q1, q2, *args), n),
                 _array(self.det_stiffness(q1, q2, *args), n))
 
-    def root_rows(self, params: dict, n: int) -> tuple[list, "np.ndarray"]:
-        """``(roots, distinct)``: the equilibria of each row where the values move them
-        (``roots`` is ``None``), a list of ``[q1, q2]`` (arrays of ``n``, ``|q| < 1e-12``
-        made 0) ordered in each row as the numeric search orders them (by ``|q1| + |q2|``,
-        then the larger ``q1``, then the larger ``q2``); ``distinct`` (``(n,)``) False where
-        two of a row's coincide (within ``1e-7 max(1, |q|)``: the search would list one)."""
-        flat = [np.where(np.abs(q) < 1e-12, 0.0, q) for q in
-                (_array(v, (n,)) for v in self.root_forms(*self._args(params)))]
+    def root_rows(self, params: dict, n: int) -> tuple[list, "np.ndarray", "np.ndarray"]:
+        """``(roots, distinct, covered)``: the equilibria of each row where the values move
+        them (``roots`` is ``None``), a list of ``[q1, q2]`` (arrays of ``n``, ``|q| <
+        1e-12`` made 0, both NaN where a row lacks that one) ordered in each row as the
+        numeric search orders them (by ``|q1| + |q2|``, then the larger ``q1``, then the
+        larger ``q2``; the missing last); ``distinct`` (``(n,)``) False where two of a row's
+        coincide (within ``1e-7 max(1, |q|)``: the search would list one); ``covered`` False
+        where the forms are not all of the row's equilibria (the one-off searches)."""
+        made = self.root_forms(*self._args(params))
+        made, covered = made if self.covers else (made, np.ones(n, dtype=bool))
+        covered = _array(covered, (n,)).astype(bool)
+        flat = [np.where(np.abs(q) < 1e-12, 0.0, q) for q in (_array(v, (n,)) for v in made)]
         roots = [flat[i:i + 2] for i in range(0, len(flat), 2)]
         distinct = np.ones(n, dtype=bool)
         if len(roots) == 1:
-            return roots, distinct
+            return roots, distinct, covered
         q1 = np.stack([r[0] for r in roots], axis=1)
         q2 = np.stack([r[1] for r in roots], axis=1)
         with np.errstate(all="ignore"):
@@ -91,7 +101,7 @@ class PairPlan:
             for i in range(len(roots)):
                 for j in range(i + 1, len(roots)):
                     distinct &= ~(_near(q1[:, i], q1[:, j]) & _near(q2[:, i], q2[:, j]))
-        return [[q1[:, k], q2[:, k]] for k in range(len(roots))], distinct
+        return [[q1[:, k], q2[:, k]] for k in range(len(roots))], distinct, covered
 
     def bound_rows(self, params: dict, n: int) -> dict:
         """``{coordinate index: (lowest, highest)}`` of each row (arrays of ``n``): the
@@ -117,6 +127,16 @@ def within(q, bounds: dict):
     return mask
 
 
+def _constant(q) -> bool:
+    """Whether a float64 column of more than one row holds one value, bit for bit (``-0.0``
+    and ``0.0`` differ: their sines do)."""
+    q = np.asarray(q)
+    if q.ndim != 1 or len(q) < 2 or q.dtype != np.float64:
+        return False
+    bits = q.view(np.int64)
+    return bool((bits == bits[0]).all())
+
+
 def _near(a, b):
     """Where two equilibria's coordinates agree as the numeric search merges them."""
     return np.abs(a - b) <= 1e-7 * np.maximum(1.0, np.abs(a))
@@ -124,7 +144,7 @@ def _near(a, b):
 
 def _array(value, shape):
     out = np.asarray(value, dtype=float)
-    return out if out.shape == shape else np.full(shape, float(out))
+    return out if out.shape == shape else np.broadcast_to(out, shape).copy()
 
 
 def two_frequencies(M, K, det_m, det_k):

@@ -15,6 +15,7 @@ batch path; dyncalc.physics.eom_pairs). Do not edit; regenerate with
 from __future__ import annotations
 
 from ..lazy import numpy as np
+from ..physics.pendulum_pair_roots import spring_pendulum_roots as _spring_coupled_pendulums_Rc
 from ..units import Dim
 
 __all__ = ["TABLES2"]
@@ -82,6 +83,30 @@ def _block_disk_springs_a(x, phi, x_dot, phi_dot, t, F, M, k, m, r):
 
 def _block_disk_springs_R(F, M, k, m, r):
     return [F/k, 0]
+
+
+def _spring_coupled_pendulums_M(phi1, phi2, b, g, k, l, m):
+    return [2*l**2*m, 0, 0, 2*l**2*m]
+
+
+def _spring_coupled_pendulums_K(phi1, phi2, b, g, k, l, m):
+    return [2*g*l*m*np.cos(phi1)*np.cos(phi2), -2*g*l*m*np.sin(phi1)*np.sin(phi2), -2*g*l*m*np.sin(phi1)*np.sin(phi2), 2*g*l*m*np.cos(phi1)*np.cos(phi2) + 4*k*l**2*np.cos(phi2)**2 - 2*k*l*(-b + 2*l*np.sin(phi2))*np.sin(phi2)]
+
+
+def _spring_coupled_pendulums_detM(phi1, phi2, b, g, k, l, m):
+    return 4*l**4*m**2
+
+
+def _spring_coupled_pendulums_detK(phi1, phi2, b, g, k, l, m):
+    return 4*g*l**2*m*(b*k*np.sin(phi2)*np.cos(phi1)*np.cos(phi2) + g*m*np.cos(phi1)**2 + g*m*np.cos(phi2)**2 - g*m + 4*k*l*np.cos(phi1)*np.cos(phi2)**3 - 2*k*l*np.cos(phi1)*np.cos(phi2))
+
+
+def _spring_coupled_pendulums_a(phi1, phi2, phi1_dot, phi2_dot, t, b, g, k, l, m):
+    return [-g*np.sin(phi1)*np.cos(phi2)/l, (-g*m*np.sin(phi2)*np.cos(phi1) + k*(b - 2*l*np.sin(phi2))*np.cos(phi2))/(l*m)]
+
+
+def _spring_coupled_pendulums_B(b, g, k, l, m):
+    return [0, (1/2)*np.pi]
 
 
 def _disk_on_swinging_bar_M(phi, x, J2, g, l, m1, m2):
@@ -188,6 +213,25 @@ TABLES2: dict[str, dict] = {
             'phi_ddot': Dim(name='angular acceleration', display='[angle]/[time]^2', check='1/[time]**2', si='rad/s^2', kind='angular-rate', angles=(1,)),
         },
         'matrix_units': {'mass_matrix': (('kg', 'kg*m'), ('kg*m', 'kg*m^2')), 'stiffness_matrix': (('N/m', 'N/rad'), ('N/rad', 'N*m/rad'))},
+    },
+    'spring-coupled-pendulums': {
+        'coords': ('phi1', 'phi2'), 'angles': (True, True),
+        'names': ('b', 'g', 'k', 'l', 'm'),
+        'M': _spring_coupled_pendulums_M, 'K': _spring_coupled_pendulums_K, 'detM': _spring_coupled_pendulums_detM, 'detK': _spring_coupled_pendulums_detK, 'a': _spring_coupled_pendulums_a, 'B': _spring_coupled_pendulums_B, 'Rc': _spring_coupled_pendulums_Rc,
+        'roots': None,
+        'domain': (1,),
+        'texts': ("phi1'' = -g*sin(phi1)*cos(phi2)/l", "phi2'' = (-g*m*sin(phi2)*cos(phi1) + k*(b - 2*l*sin(phi2))*cos(phi2))/(l*m)"),
+        'warnings': (),
+        'dims': {
+            'mass_matrix': Dim(name='linearised mass matrix', display='kg*m^2', check='', si='kg*m^2', kind='plain', angles=(0,)),
+            'stiffness_matrix': Dim(name='linearised stiffness matrix', display='N*m/rad', check='', si='N*m/rad', kind='plain', angles=(0,)),
+            'omega_1': Dim(name='angular rate', display='[angle]/[time]', check='1/[time]', si='rad/s', kind='angular-rate', angles=(1,)),
+            'omega_2': Dim(name='angular rate', display='[angle]/[time]', check='1/[time]', si='rad/s', kind='angular-rate', angles=(1,)),
+            'f_1': Dim(name='frequency', display='[cycles]/[time]', check='1/[time]', si='Hz', kind='cycle-rate', angles=(0,)),
+            'f_2': Dim(name='frequency', display='[cycles]/[time]', check='1/[time]', si='Hz', kind='cycle-rate', angles=(0,)),
+            'phi1_ddot': Dim(name='angular acceleration', display='[angle]/[time]^2', check='1/[time]**2', si='rad/s^2', kind='angular-rate', angles=(1,)),
+            'phi2_ddot': Dim(name='angular acceleration', display='[angle]/[time]^2', check='1/[time]**2', si='rad/s^2', kind='angular-rate', angles=(1,)),
+        },
     },
     'disk-on-swinging-bar': {
         'coords': ('phi', 'x'), 'angles': (True, False),
