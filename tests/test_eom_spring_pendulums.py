@@ -93,7 +93,7 @@ def _file(tmp_path, rng, count, state):
         cells = [value(0.1, 10), value(0.1, 3), value(100, 1000)]
         b = 0.0 if i % 4 else rng.uniform(0.01, 0.5)
         moderate += b == 0 and 0.1 <= cells[0] <= 10 and 0.1 <= cells[1] <= 3 \
-            and 100 <= cells[2] <= 1000 and G * cells[0] / (2 * cells[2] * cells[1]) <= 1
+            and 100 <= cells[2] <= 1000
         cells.append(b)
         if state:
             cells += [rng.uniform(-2, 2) for _ in range(4)]
@@ -115,9 +115,8 @@ def test_batch_rows_are_the_one_offs_byte_for_byte(tmp_path, as_json, state):
     calls: list = []
     fast = eom_batch(path, SCENE, as_json, True, calls)
     assert fast == eom_batch(path, SCENE, as_json, False)
-    # b = 0 with m in [0.1, 10] kg, l in [0.1, 3] m, k in [100, 1000] N/m and r <= 1 (one
-    # pattern of equilibria) on columns; the rest (b > 0, extremes, r > 1) and the odd rows
-    # the one-off's
+    # b = 0 with m in [0.1, 10] kg, l in [0.1, 3] m, k in [100, 1000] N/m on columns (r
+    # <= 1 and r > 1 two groups); the rest (b > 0, extremes) and the odd rows the one-off's
     assert fast[0] == 2 and len(calls) <= 80 + 4 - moderate, (len(calls), moderate)
     assert moderate >= 15
     errors = fast[2].splitlines()
@@ -144,3 +143,25 @@ def test_batch_on_columns_without_sympy(tmp_path):
              - k * 2 * l * math.sin(phi2) * math.cos(phi2)) / (l * m)
     assert float(rows[0]["phi1_ddot [rad/s^2]"]) == pytest.approx(want1, rel=1e-14)
     assert float(rows[0]["phi2_ddot [rad/s^2]"]) == pytest.approx(want2, rel=1e-14)
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_rows_with_four_and_five_equilibria_on_columns_together(tmp_path, as_json):
+    """r = g m / (2 k l) on both sides of 1 in one file: two patterns of equilibria, each a
+    group of its own, every row on columns, byte for byte the one-off's."""
+    rng = random.Random(9)
+    lines = ["m,l,k"]
+    for i in range(120):
+        m, l = rng.uniform(0.5, 5), rng.uniform(0.2, 2)
+        r = rng.uniform(0.2, 0.9) if i % 3 else rng.uniform(1.1, 3)
+        lines.append(f"{m!r},{l!r},{G * m / (2 * r * l)!r}")
+    path = tmp_path / "mixed.csv"
+    path.write_text("\n".join(lines) + "\n")
+    calls: list = []
+    fast = eom_batch(path, SCENE, as_json, True, calls)
+    assert fast == eom_batch(path, SCENE, as_json, False)
+    assert fast[0] == 0 and not calls
+    four = "phi1=-1.5708, phi2=1.5708 (unstable)"
+    texts = fast[1].splitlines()[0 if as_json else 1:]
+    assert sum(t.count(four + ";") for t in texts) == 80  # (a fifth follows: r <= 1)
+    assert sum(t.count(four + '"') for t in texts) == 40  # (the text ends: r > 1)

@@ -5,11 +5,11 @@ symbolic derivation at build time (tools/gen_eom_columns.py), the frequencies
 :func:`~dyncalc.physics.eom_pairs.two_frequencies`; the one-off evaluates the same, so both
 agree bit for bit by construction and the batch never imports sympy.
 
-Taken here: every parameter with a value, every row whose equilibria in the scene's domain
-and their stabilities are the first such row's (one with a stable equilibrium, or one with
-none in the domain: ``disk-on-swinging-bar``'s ``no equilibrium``), the state complete (both
-coordinates and rates) or absent, no ``--about``; the other rows run the one-off
-(:func:`pair_columns` leaves them).
+Taken here: every parameter with a value, the rows with a stable equilibrium in the scene's
+domain (grouped by which equilibria lie there and which are stable) or, where no row has
+one, those with none there (``disk-on-swinging-bar``'s ``no equilibrium``), the state
+complete (both coordinates and rates) or absent, no ``--about``; the other rows run the
+one-off (:func:`pair_columns` leaves them).
 """
 from __future__ import annotations
 
@@ -204,16 +204,17 @@ def _domain_forms(inputs, s) -> tuple[tuple, list]:
 
 def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact, n: int):
     """The :class:`~dyncalc.physics.columns.Columns` of a two-coordinate scene of the table
-    (``values``: every parameter's SI column; ``exact`` updated in place), or ``None``: the
-    first row has equilibria in the scene's domain but no stable one, or the state is
-    incomplete (the one-off answers).
+    (``values``: every parameter's SI column; ``exact`` updated in place), or ``None``: no
+    row has a stable equilibrium in the scene's domain or none there at all, or the state
+    is incomplete (the one-off answers).
 
-    A row's pattern is which equilibria lie in the domain and which of those are stable;
-    the rows of the first row's pattern are taken (that first row one with a stable
-    equilibrium, else one with none in the domain: the one-off's ``no equilibrium``)."""
+    A row's pattern is which equilibria lie in the domain and which of those are stable.
+    Where some rows have a stable one, those rows are taken, each pattern a group of its own
+    (``Columns.groups``: its own equilibria text, JSON ``extra`` and probe); else the rows
+    with none in the domain (the one-off's ``no equilibrium``). Rows whose equilibria there
+    are all unstable run the one-off."""
     from ..physics.columns import Columns
     from ..physics.eom_pairs import PairPlan, frequency_rows, within
-    from .eom_results import _equilibria_text
 
     plan, coords = PairPlan(entry), entry["coords"]
     state = [k for k in arrays if k not in values]
@@ -246,40 +247,24 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
             exact &= ~there | finite  # (elsewhere the one-off goes symbolic)
             at.append((M, K, omega))
         settled = np.logical_or.reduce([i & s for i, s in zip(inside, stable)])
-        candidates = exact & (settled | ~np.logical_or.reduce(inside))
-        if not candidates.any():
-            return None  # the one-off linearises about an unstable one: warnings, no omega
-        first = int(np.argmax(exact & settled)) if (exact & settled).any() \
-            else int(np.argmax(candidates))
-        kept = [bool(i[first]) for i in inside]
-        pattern = [bool(s[first]) for s in stable]
-        for i, s, want_in, want in zip(inside, stable, kept, pattern):
-            exact &= (i == want_in) & (~i | (s == want))
-        kept_roots = [k for k, want_in in enumerate(kept) if want_in]
         out = {f"eom_{i}": text_column(n, t)
                for i, t in enumerate(entry["texts"], start=1)}
-        if not kept_roots:
+        groups = None
+        if not (exact & settled).any():
+            if not (exact & ~np.logical_or.reduce(inside)).any():
+                return None  # the one-off linearises about an unstable one: no omega
+            exact &= ~np.logical_or.reduce(inside)
             out["equilibria"] = text_column(n, "none")
             warnings = ("no equilibrium: the system is never at rest at these values",)
             method = "symbolic"
             extras = lambda _keep: ['{"equilibria": []}']  # noqa: E731
         else:
-            k = next(k for k in kept_roots if pattern[k])
-            M, K, omega = at[k]
+            exact &= settled
+            codes = _pattern_codes(inside, stable)
+            made = _settled_groups(coords, entry, rows, inside, stable, at, codes, exact, n)
+            out["equilibria"], M, K, omega, extras, several = made
             exact &= np.isfinite(omega).all(axis=1)
-            marks = [pattern[k] for k in kept_roots]
-            if moved:
-                out["equilibria"], extras = _moved_texts(
-                    coords, [rows[j] for j in kept_roots], marks, kept_roots.index(k), entry)
-            else:
-                points = [list(entry["roots"][j]) for j in kept_roots]
-                out["equilibria"] = text_column(n, _equilibria_text(list(coords), points,
-                                                                    marks, True, {}))
-                extra = {"equilibria": [{**dict(zip(coords, r)), "stable": m}
-                                        for r, m in zip(points, marks)],
-                         "about": dict(zip(coords, entry["roots"][k]))}
-                extra.update(_units_extra(entry))
-                extras = lambda _keep, line=json.dumps(extra): [line]  # noqa: E731
+            groups = codes if several else None
             out["mass_matrix"], out["stiffness_matrix"] = M, K
             out["omega_1"], out["omega_2"] = omega[:, 0], omega[:, 1]
             out["f_1"], out["f_2"] = omega[:, 0] / (2 * math.pi), omega[:, 1] / (2 * math.pi)
@@ -295,7 +280,55 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
     if any(name not in entry["dims"] for name in out if not name.startswith(("eom_", "equi"))):
         return None  # (results the table has no units for: the one-off's)
     return Columns(out, exact, model="lagrange", method=method, warnings=warnings,
-                   warned=np.ones(n, dtype=bool) if warnings else None, extras=extras)
+                   warned=np.ones(n, dtype=bool) if warnings else None, extras=extras,
+                   groups=groups)
+
+
+def _pattern_codes(inside, stable):
+    """Each row's pattern as an integer: bit ``2 k`` whether equilibrium ``k`` lies in the
+    domain, bit ``2 k + 1`` whether it is there and stable."""
+    codes = np.zeros(len(inside[0]), dtype=np.int64)
+    for k, (there, steady) in enumerate(zip(inside, stable)):
+        codes |= there.astype(np.int64) << (2 * k)
+        codes |= (there & steady).astype(np.int64) << (2 * k + 1)
+    return codes
+
+
+def _settled_groups(coords, entry, rows, inside, stable, at, codes, exact, n):
+    """``(texts, M, K, omega, extras, several)`` of the rows with a stable equilibrium in
+    the domain, each pattern of equilibria (``codes``) on its own: linearised about its
+    first stable one, its equilibria text and JSON ``extra`` (``extras(keep)``: ``keep``
+    rows of one pattern, as the block's ``groups`` split them); ``several``: more than one
+    pattern among the ``exact`` rows."""
+    from .eom_results import _equilibria_text
+
+    texts = np.empty(n, dtype=object)
+    M, K = np.full((n, 2, 2), np.nan), np.full((n, 2, 2), np.nan)
+    omega = np.full((n, 2), np.nan)
+    extras_of: dict = {}
+    present = np.unique(codes[exact]).tolist()
+    for code in present:
+        mask = exact & (codes == code)
+        kept = [j for j in range(len(rows)) if code >> (2 * j) & 1]
+        marks = [bool(code >> (2 * j + 1) & 1) for j in kept]
+        k = kept[marks.index(True)]
+        Mk, Kk, wk = at[k]
+        M[mask], K[mask], omega[mask] = Mk[mask], Kk[mask], wk[mask]
+        if entry["roots"] is None:
+            texts[mask], extras_of[code] = _moved_texts(
+                coords, [rows[j] for j in kept], marks, kept.index(k), entry, mask)
+            continue
+        points = [list(entry["roots"][j]) for j in kept]
+        texts[mask] = _equilibria_text(list(coords), points, marks, True, {})
+        extra = {"equilibria": [{**dict(zip(coords, r)), "stable": m}
+                                for r, m in zip(points, marks)],
+                 "about": dict(zip(coords, entry["roots"][k]))}
+        extra.update(_units_extra(entry))
+        extras_of[code] = lambda _keep, line=json.dumps(extra): [line]  # noqa: E731
+
+    def extras(keep):
+        return extras_of[int(codes[keep[0]])](keep)
+    return texts, M, K, omega, extras, len(present) > 1
 
 
 def _units_extra(entry) -> dict:
@@ -306,31 +339,29 @@ def _units_extra(entry) -> dict:
                              for name, units in entry["matrix_units"].items()}}
 
 
-def _moved_texts(coords, roots, marks, chosen: int, entry):
-    """``(texts, extras)`` of the equilibria each row has in the domain (``roots``: each
+def _moved_texts(coords, roots, marks, chosen: int, entry, mask):
+    """``(texts, extras)`` of the ``mask`` rows' equilibria in the domain (``roots``: each
     one's two columns, ``marks`` their stabilities, ``chosen`` the one linearised about):
-    the equilibria text one format call a row, and the JSON ``extra`` (made for JSON only,
-    for the rows kept). A coordinate the same on every row (``pi/2``) is written once into
-    the template, not formatted a row at a time."""
+    the equilibria text one format call a row (those rows only), and the JSON ``extra``
+    (made for JSON only, for the rows kept). A coordinate the same on every such row
+    (``pi/2``) is written once into the template, not formatted a row at a time."""
     names = list(coords)
-    columns = [col for root in roots for col in root]
+    columns = [col[mask] for root in roots for col in root]
     same = [bool((col.view(np.int64) == col.view(np.int64)[0]).all()) for col in columns]
     words = ["stable" if m else "unstable" for m in marks]
     template = "; ".join(", ".join(
         f"{c}={columns[2 * k + i][0]:.6g}" if same[2 * k + i] else f"{c}={{:.6g}}"
         for i, c in enumerate(names)) + f" ({w})" for k, w in enumerate(words))
     varying = [col.tolist() for col, fixed in zip(columns, same) if not fixed]
-    n = len(columns[0])
-    texts = text_column(n, template) if not varying else np.empty(n, dtype=object)
-    if varying:
-        texts[:] = list(map(template.format, *varying))
+    texts = list(map(template.format, *varying)) if varying else template
     tail = json.dumps(_units_extra(entry))[1:-1]
     tail = "}" if not tail else ", " + tail + "}"
     first, second = json.dumps(names[0]), json.dumps(names[1])
+    full = [col for root in roots for col in root]
 
     def extras(keep):
-        cols = [repr(float(col[0])) if fixed else [repr(v) for v in col[keep].tolist()]
-                for col, fixed in zip(columns, same)]
+        cols = [repr(float(columns[i][0])) if fixed else [repr(v) for v in col[keep].tolist()]
+                for i, (col, fixed) in enumerate(zip(full, same))]
         parts: list = ['{"equilibria": [']
         for k, mark in enumerate(marks):
             parts += [("" if k == 0 else ", ") + f"{{{first}: ", cols[2 * k],
