@@ -261,7 +261,7 @@ def pair_columns(arrays: dict, settings: dict, entry: dict, values: dict, exact,
         else:
             exact &= settled
             codes = _pattern_codes(inside, stable)
-            made = _settled_groups(coords, entry, rows, inside, stable, at, codes, exact, n)
+            made = _settled_groups(coords, entry, rows, at, codes, exact, n)
             out["equilibria"], M, K, omega, extras, several = made
             exact &= np.isfinite(omega).all(axis=1)
             groups = codes if several else None
@@ -294,9 +294,10 @@ def _pattern_codes(inside, stable):
     return codes
 
 
-def _settled_groups(coords, entry, rows, inside, stable, at, codes, exact, n):
+def _settled_groups(coords, entry, rows, at, codes, exact, n):
     """``(texts, M, K, omega, extras, several)`` of the rows with a stable equilibrium in
-    the domain, each pattern of equilibria (``codes``) on its own: linearised about its
+    the domain (``rows``: the equilibria's columns; ``at``: each one's ``(M, K, omega)``),
+    each pattern of equilibria (``codes``) on its own: linearised about its
     first stable one, its equilibria text and JSON ``extra`` (``extras(keep)``: ``keep``
     rows of one pattern, as the block's ``groups`` split them); ``several``: more than one
     pattern among the ``exact`` rows."""
