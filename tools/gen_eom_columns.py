@@ -132,7 +132,8 @@ functions of the linearised mass and stiffness matrices ``M(q1, q2, *p)``, ``K(q
 accelerations ``a(q1, q2, q1', q2', t, *p)`` (the parameters ``p`` in the order of ``names``)
 as ``sympy.lambdify`` writes them, the equilibria (``None``: a free coordinate; where the
 values move them, ``roots`` ``None`` and their closed forms ``R(*p)``, the two coordinates of
-each in turn), the scene's domain (``domain``: the coordinates it bounds, ``B(*p)`` their
+each in turn, or ``Rc(*p)``, roots written by hand and imported, with the rows they cover),
+the scene's domain (``domain``: the coordinates it bounds, ``B(*p)`` their
 lowest and highest), the equations and the units of the results (``matrix_units``: a matrix
 whose entries have units of their own; a result the one-off never gives at the values tried
 is left out). ``eom --scene --batch`` and the one-off evaluate these (no sympy on the
