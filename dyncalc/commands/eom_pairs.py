@@ -346,9 +346,11 @@ def _moved_texts(coords, roots, marks, chosen: int, entry, mask):
     the equilibria text one format call a row (those rows only), and the JSON ``extra``
     (made for JSON only, for the rows kept). A coordinate the same on every such row
     (``pi/2``) is written once into the template, not formatted a row at a time."""
+    from ..physics.eom_pairs import constant
+
     names = list(coords)
     columns = [col[mask] for root in roots for col in root]
-    same = [bool((col.view(np.int64) == col.view(np.int64)[0]).all()) for col in columns]
+    same = [constant(col) for col in columns]  # (one row: formatted as a varying one)
     words = ["stable" if m else "unstable" for m in marks]
     template = "; ".join(", ".join(
         f"{c}={columns[2 * k + i][0]:.6g}" if same[2 * k + i] else f"{c}={{:.6g}}"

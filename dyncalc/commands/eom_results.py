@@ -321,6 +321,8 @@ def _form_roots(plan, row: dict) -> list[list[float]] | None:
     (:meth:`~dyncalc.physics.eom_pairs.PairPlan.root_rows`, the batch's too), in its order,
     each missing (NaN) or coinciding with an earlier one left out (as the numeric search
     merges them); ``None`` where the forms are not all of them (the search answers)."""
+    from ..physics.eom_pairs import near
+
     roots, _distinct, covered = plan.root_rows(row, 1)
     if not covered[0]:
         return None
@@ -329,8 +331,7 @@ def _form_roots(plan, row: dict) -> list[list[float]] | None:
         point = [float(q[0]) for q in root]
         if all(map(math.isnan, point)):
             continue
-        if not any(all(abs(a - b) <= 1e-7 * max(1.0, abs(a)) for a, b in zip(other, point))
-                   for other in found):
+        if not any(all(near(a, b) for a, b in zip(other, point)) for other in found):
             found.append(point)
     return found
 

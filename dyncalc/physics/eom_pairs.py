@@ -33,7 +33,8 @@ from __future__ import annotations
 
 from ..lazy import numpy as np
 
-__all__ = ["PairPlan", "two_frequencies", "finite_rows", "frequency_rows", "within"]
+__all__ = ["PairPlan", "two_frequencies", "finite_rows", "frequency_rows", "within",
+           "constant", "near"]
 
 
 class PairPlan:
@@ -70,7 +71,7 @@ class PairPlan:
         same ufunc loop on the same element as every row's: the same bits)."""
         args = self._args(params)
         n = np.shape(q1)
-        q1, q2 = (q[:1] if _constant(q) else q for q in (q1, q2))
+        q1, q2 = (q[:1] if constant(q) else q for q in (q1, q2))
         M = np.stack([_array(v, n) for v in self.mass(q1, q2, *args)], axis=-1)
         K = np.stack([_array(v, n) for v in self.stiffness(q1, q2, *args)], axis=-1)
         return (M.reshape(n + (2, 2)), K.reshape(n + (2, 2)),
@@ -100,7 +101,7 @@ class PairPlan:
             q1, q2 = (np.take_along_axis(q, order, axis=1) for q in (q1, q2))
             for i in range(len(roots)):
                 for j in range(i + 1, len(roots)):
-                    distinct &= ~(_near(q1[:, i], q1[:, j]) & _near(q2[:, i], q2[:, j]))
+                    distinct &= ~(near(q1[:, i], q1[:, j]) & near(q2[:, i], q2[:, j]))
         return [[q1[:, k], q2[:, k]] for k in range(len(roots))], distinct, covered
 
     def bound_rows(self, params: dict, n: int) -> dict:
@@ -127,7 +128,7 @@ def within(q, bounds: dict):
     return mask
 
 
-def _constant(q) -> bool:
+def constant(q) -> bool:
     """Whether a float64 column of more than one row holds one value, bit for bit (``-0.0``
     and ``0.0`` differ: their sines do)."""
     q = np.asarray(q)
@@ -137,8 +138,9 @@ def _constant(q) -> bool:
     return bool((bits == bits[0]).all())
 
 
-def _near(a, b):
-    """Where two equilibria's coordinates agree as the numeric search merges them."""
+def near(a, b):
+    """Where two equilibria's coordinates agree as the numeric search merges them (``a`` the
+    earlier one; floats or arrays)."""
     return np.abs(a - b) <= 1e-7 * np.maximum(1.0, np.abs(a))
 
 
